@@ -1,0 +1,45 @@
+"""Exception types of bearingsim.
+
+Bad input is an exception (:class:`InputError`), naming the field and the fix.
+A solver that does not converge returns a result with ``converged = False``;
+:class:`ConvergenceError` is raised only where a caller asked for a converged
+answer and none could be had.
+"""
+
+from __future__ import annotations
+
+
+class BearingSimError(Exception):
+    """Base class of every error raised on purpose by bearingsim."""
+
+
+class InputError(BearingSimError, ValueError):
+    """Invalid user input.
+
+    Parameters
+    ----------
+    field : str
+        Name of the offending input field (as the user wrote it).
+    problem : str
+        What is wrong with it.
+    fix : str
+        How to correct it.
+    """
+
+    def __init__(self, field: str, problem: str, fix: str = ""):
+        self.field = field
+        self.problem = problem
+        self.fix = fix
+        msg = f"{field}: {problem}"
+        if fix:
+            msg += f" ({fix})"
+        super().__init__(msg)
+
+
+class ConvergenceError(BearingSimError, RuntimeError):
+    """A solver did not converge where a converged answer was required."""
+
+    def __init__(self, message: str, *, residual: float = float("nan"), iterations: int = 0):
+        self.residual = residual
+        self.iterations = iterations
+        super().__init__(f"{message} (residual {residual:.3g} after {iterations} iterations)")

@@ -1,0 +1,178 @@
+"""Reading bearing files (TOML with units) and the built-in catalogue.
+
+Quantities are strings with units (``"11.1 mm"``), parsed once here into SI floats.
+A bearing argument is either a catalogue name (``bearingsim catalog`` lists them) or
+a path to a TOML file.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from importlib import resources
+from pathlib import Path
+
+from .errors import InputError
+from .geometry import BallBearing
+from .materials import Material, get_material
+from .units import parse_quantity
+
+_BEARING_KEYS = {
+    "name", "type", "ball_diameter", "ball_count", "pitch_diameter", "inner_groove_radius",
+    "outer_groove_radius", "inner_conformity", "outer_conformity", "contact_angle",
+    "diametral_clearance", "ball_material", "ring_material", "bore", "outside_diameter", "width",
+    "dynamic_load_rating", "description", "sources",
+}
+
+
+def catalog_names() -> list[str]:
+    """Names of the built-in catalogue entries."""
+    root = resources.files("bearingsim") / "catalog"
+    return sorted(p.name[:-5] for p in root.iterdir() if p.name.endswith(".toml"))
+
+
+def catalog_entries() -> list[dict]:
+    """Name, description and type of every catalogue entry (for ``bearingsim catalog``)."""
+    out = []
+    for name in catalog_names():
+        data = _read_catalog(name)
+        out.append({"name": name, "type": data.get("type", ""), "description": data.get("description", "")})
+    return out
+
+
+def _read_catalog(name: str) -> dict:
+    root = resources.files("bearingsim") / "catalog"
+    return tomllib.loads((root / f"{name}.toml").read_text(encoding="utf-8"))
+
+
+def read_toml(path: Path, field: str = "file") -> dict:
+    """Read a TOML file; a missing or malformed file raises :class:`InputError`."""
+    try:
+        text = Path(path).read_text(encoding="utf-8")
+    except OSError as exc:
+        raise InputError(field, f"cannot read {str(path)!r} ({exc.strerror})",
+                         "give an existing TOML file or a catalogue name (bearingsim catalog)") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(field, f"{path} is not valid TOML: {exc}", "fix the TOML syntax at that line") from None
+
+
+def resolve_bearing_data(spec: str | Path) -> dict:
+    """The raw TOML table of a bearing given by catalogue name or path."""
+    spec_s = str(spec)
+    if spec_s in catalog_names():
+        return _read_catalog(spec_s)
+    p = Path(spec_s)
+    if p.suffix.lower() == ".toml" or p.exists():
+        return read_toml(p, "bearing")
+    raise InputError("bearing", f"{spec_s!r} is neither a catalogue name nor a TOML file",
+                     f"use one of {', '.join(catalog_names())} or a path to a .toml file")
+
+
+def load_bearing(spec: str | Path):
+    """Load a bearing from a catalogue name or a TOML path.
+
+    Returns a :class:`~bearingsim.geometry.BallBearing` (or, for arrangement files, the
+    object built by :mod:`bearingsim.statics.arrangements` when available).
+    """
+    data = resolve_bearing_data(spec)
+    return bearing_from_dict(data)
+
+
+def _material(value, field: str) -> Material:
+    if isinstance(value, str):
+        return get_material(value, field)
+    if isinstance(value, dict):
+        unknown = set(value) - {"name", "youngs_modulus", "poisson_ratio", "density", "source"}
+        if unknown:
+            raise InputError(f"{field}.{sorted(unknown)[0]}", "unknown key",
+                             "a material table takes youngs_modulus, poisson_ratio, density, name, source")
+        for key in ("youngs_modulus", "poisson_ratio", "density"):
+            if key not in value:
+                raise InputError(f"{field}.{key}", "missing", f"add {key} to [{field}]")
+        pr = value["poisson_ratio"]
+        if isinstance(pr, bool) or not isinstance(pr, (int, float)):
+            raise InputError(f"{field}.poisson_ratio", f"expected a number, got {pr!r}", "e.g. 0.3")
+        return Material(
+            name=str(value.get("name", field)),
+            youngs_modulus=parse_quantity(value["youngs_modulus"], "pressure", f"{field}.youngs_modulus"),
+            poisson_ratio=float(pr),
+            density=parse_quantity(value["density"], "density", f"{field}.density"),
+            source=str(value.get("source", "user input")),
+        )
+    raise InputError(field, f"expected a material name or table, got {value!r}",
+                     'write ball_material = "silicon_nitride" or a [ball_material] table')
+
+
+def _conformity(data: dict, side: str, ball_diameter: float) -> float:
+    kr, kc = f"{side}_groove_radius", f"{side}_conformity"
+    if kr in data and kc in data:
+        raise InputError(kr, f"both {kr} and {kc} are given", "give only one of them")
+    if kr in data:
+        r = parse_quantity(data[kr], "length", kr)
+        if not r > 0:
+            raise InputError(kr, f"must be positive, got {r!r} m", 'e.g. "5.98 mm"')
+        if r <= 0.5 * ball_diameter:
+            raise InputError(kr, f"groove radius {r * 1e3:.4g} mm is not larger than the ball radius "
+                             f"{0.5 * ball_diameter * 1e3:.4g} mm", "the groove radius must exceed D/2 (f > 0.5)")
+        return r / ball_diameter
+    if kc in data:
+        v = data[kc]
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise InputError(kc, f"expected a number, got {v!r}", "e.g. 0.52")
+        return float(v)
+    raise InputError(kr, "missing", f"give {kr} (with a unit) or {kc} (groove radius / ball diameter)")
+
+
+def bearing_from_dict(data: dict) -> BallBearing:
+    """Build a :class:`BallBearing` from a parsed TOML table (units parsed here)."""
+    if "rows" in data or "arrangement" in data:
+        from .statics import arrangements  # noqa: F401  (issue 3: sets and double-row units)
+
+        return arrangements.arrangement_from_dict(data)
+    unknown = sorted(set(data) - _BEARING_KEYS)
+    if unknown:
+        raise InputError(unknown[0], "unknown key in bearing file",
+                         f"known keys: {', '.join(sorted(_BEARING_KEYS))}")
+    for key in ("ball_diameter", "ball_count", "pitch_diameter", "ball_material", "ring_material"):
+        if key not in data:
+            raise InputError(key, "missing", f"add {key} to the bearing file")
+    kind = data.get("type", "angular_contact")
+    d = parse_quantity(data["ball_diameter"], "length", "ball_diameter")
+    if not d > 0:
+        raise InputError("ball_diameter", f"must be positive, got {data['ball_diameter']!r}", 'e.g. "11.1 mm"')
+    z = data["ball_count"]
+    if isinstance(z, bool) or not isinstance(z, int):
+        raise InputError("ball_count", f"must be an integer, got {z!r}", "e.g. ball_count = 16")
+    dm = parse_quantity(data["pitch_diameter"], "length", "pitch_diameter")
+    fi = _conformity(data, "inner", d)
+    fo = _conformity(data, "outer", d)
+    pd = parse_quantity(data["diametral_clearance"], "length", "diametral_clearance") \
+        if "diametral_clearance" in data else 0.0
+    if "contact_angle" in data:
+        alpha = parse_quantity(data["contact_angle"], "angle", "contact_angle")
+        if kind == "deep_groove":
+            if "diametral_clearance" in data:
+                raise InputError("contact_angle", "a deep-groove bearing takes contact_angle or "
+                                 "diametral_clearance, not both", "remove one of them")
+            pd = 2.0 * (fi + fo - 1.0) * d * (1.0 - math.cos(alpha))
+    elif kind == "angular_contact":
+        raise InputError("contact_angle", "missing for an angular contact bearing", 'add contact_angle = "15 deg"')
+    else:
+        alpha = 0.0
+
+    def opt(key, dim):
+        return parse_quantity(data[key], dim, key) if key in data else 0.0
+
+    notes = dict(data.get("sources", {}))
+    if "description" in data:
+        notes["description"] = data["description"]
+    return BallBearing(
+        name=str(data.get("name", "bearing")), kind=kind, ball_diameter=d, ball_count=z, pitch_diameter=dm,
+        inner_conformity=fi, outer_conformity=fo, contact_angle=alpha,
+        ball_material=_material(data["ball_material"], "ball_material"),
+        ring_material=_material(data["ring_material"], "ring_material"),
+        diametral_clearance=pd, bore=opt("bore", "length"), outside_diameter=opt("outside_diameter", "length"),
+        width=opt("width", "length"), dynamic_load_rating=opt("dynamic_load_rating", "force"), notes=notes,
+    )

@@ -1,0 +1,80 @@
+"""Solid materials of balls and rings, with a small named library.
+
+Every entry cites where its numbers come from.  Values are SI:
+Young's modulus [Pa], Poisson's ratio [-], density [kg/m³].
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from .errors import InputError
+
+
+@dataclass(frozen=True)
+class Material:
+    """An isotropic linear-elastic solid.
+
+    Parameters
+    ----------
+    name : str
+    youngs_modulus : float  [Pa]
+    poisson_ratio : float  [-], in (-1, 0.5)
+    density : float  [kg/m³]
+    source : str
+        Where the numbers come from.
+    """
+
+    name: str
+    youngs_modulus: float
+    poisson_ratio: float
+    density: float
+    source: str = "user input"
+
+    def __post_init__(self):
+        if not (math.isfinite(self.youngs_modulus) and self.youngs_modulus > 0):
+            raise InputError(f"{self.name}.youngs_modulus", f"must be positive, got {self.youngs_modulus!r}",
+                             'e.g. "208 GPa" for bearing steel')
+        if not (-1.0 < self.poisson_ratio < 0.5):
+            raise InputError(f"{self.name}.poisson_ratio", f"must lie in (-1, 0.5), got {self.poisson_ratio!r}",
+                             "e.g. 0.3 for steel, 0.26 for silicon nitride")
+        if not (math.isfinite(self.density) and self.density > 0):
+            raise InputError(f"{self.name}.density", f"must be positive, got {self.density!r}",
+                             'e.g. "7850 kg/m^3"')
+
+    @property
+    def reduced_compliance(self) -> float:
+        """(1 - ν²)/E  [1/Pa], this body's share of the Hertz contact compliance."""
+        return (1.0 - self.poisson_ratio**2) / self.youngs_modulus
+
+
+#: Built-in materials.  SKF values are those SKF gives for its hybrid bearings
+#: ("Hybrid bearings", SKF Rolling bearings catalogue 17000/1 EN, 2018, table
+#: "Comparison of bearing steel and bearing grade silicon nitride properties").
+LIBRARY: dict[str, Material] = {
+    "bearing_steel": Material(
+        "bearing_steel", 208e9, 0.30, 7900.0,
+        "SKF rolling bearings catalogue 17000/1 EN (2018), hybrid bearings, property table: "
+        "bearing steel E = 208 GPa, nu = 0.3, density 7.9 g/cm3"),
+    "silicon_nitride": Material(
+        "silicon_nitride", 310e9, 0.26, 3200.0,
+        "SKF rolling bearings catalogue 17000/1 EN (2018), hybrid bearings, property table: "
+        "bearing grade Si3N4 E = 310 GPa, nu = 0.26, density 3.2 g/cm3"),
+    "harris_steel": Material(
+        "harris_steel", 2.075e11, 0.30, 7800.0,
+        "Harris & Kotzalas, Rolling Bearing Analysis 5th ed. (2007), worked examples for AISI 52100: "
+        "E = 2.075e11 Pa, nu = 0.3; density 7800 kg/m3 is a typical 52100 value (estimate, "
+        "not taken from Harris)"),
+}
+
+
+def get_material(name: str, field: str = "material") -> Material:
+    """Return a library material by name, or raise :class:`InputError` listing the choices."""
+    key = name.strip().lower().replace("-", "_").replace(" ", "_")
+    try:
+        return LIBRARY[key]
+    except KeyError:
+        raise InputError(field, f"unknown material {name!r}",
+                         f"use one of {', '.join(sorted(LIBRARY))} or give a table with "
+                         "youngs_modulus, poisson_ratio and density") from None

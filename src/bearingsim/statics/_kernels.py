@@ -1,0 +1,560 @@
+"""Numba kernels of the Jones–Harris quasi-static model (plain float arrays in, floats out).
+
+Orchestration, checks and packaging live in :mod:`bearingsim.statics.jones_harris`;
+this module holds only the per-ball and per-ring arithmetic.
+
+Model (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3, eqs. 3.22–3.61; seed 000 eqs. 6–16).
+Each row is described by a parameter vector (indices below).  For ball j at azimuth ψ_j,
+in the row's local axial–radial plane (ξ = s (x − x_row), r), the vector from the outer
+groove-curvature centre (fixed) to the inner one is
+
+    A₁ = Δx₀ + e + s u_x,    A₂ = Δr₀ + u_r,
+
+where u is the displacement of the inner groove centre caused by the inner-ring
+displacement q = (δx, δy, δz, γy, γz) (small rotations), e an axial preload offset and
+s = ±1 the row's orientation.  The ball centre sits at (X₁, X₂) from the outer groove
+centre; the two geometric constraints of the seed (eqs. 6, 9)
+
+    (A₁ − X₁)² + (A₂ − X₂)² = (r_i + δ_i)²,   X₁² + X₂² = (r_o + δ_o)²,   r = (f − ½) D,
+
+are eliminated exactly (δ_i, δ_o follow from X), leaving the two force balances of the
+ball (seed eq. 10) in the unknowns (X₁, X₂):
+
+    Q_i sin α_i − Q_o sin α_o − λ_o G cos α_o + λ_i G cos α_i = 0
+    Q_i cos α_i − Q_o cos α_o + λ_o G sin α_o − λ_i G sin α_i + F_c = 0
+
+with Q = K δ^1.5, G = M_g / D, M_g = J ω_R ω_m sin β, F_c = ½ m d_m ω_m² (seed eqs. 11–12)
+and λ_o = 2, λ_i = 0 for outer-raceway control, λ_o = λ_i = 1 for inner control.
+The signs of the gyroscopic terms follow from the free-body diagram of the ball whose
+spin vector (Jones) is ω_R (cos β, −sin β) in (ξ, r) with ω_R < 0: the moment the
+raceways must apply to the ball is dH/dt = J |ω_R| ω_m sin β e_ψ (derivation in
+docs/physics.md).  Ball speeds ω_m, ω_R and pitch angle β are Jones' rolling relations
+(no slip at the contact centres; see :func:`kinematics`) evaluated at the current
+contact angles; their derivatives are carried through the analytic Jacobian.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+# ---- row parameter layout -------------------------------------------------
+P_Z = 0  # number of balls
+P_D = 1  # ball diameter [m]
+P_DM = 2  # pitch diameter [m]
+P_RI = 3  # (f_i - 1/2) D [m]
+P_RO = 4  # (f_o - 1/2) D [m]
+P_KI = 5  # inner contact load-deflection constant [N/m^1.5]
+P_KO = 6  # outer contact constant [N/m^1.5]
+P_DX0 = 7  # axial separation of groove centres in the centred position [m]
+P_DR0 = 8  # radial separation of groove centres in the centred position [m]
+P_RIC = 9  # radius of the inner groove-centre locus [m]
+P_XIC = 10  # local axial position of the inner groove centre from the row plane [m]
+P_XROW = 11  # global axial position of the row plane [m]
+P_SIGN = 12  # +1 or -1: orientation of the row
+P_MASS = 13  # ball mass [kg]
+P_JB = 14  # ball polar moment of inertia [kg m^2]
+P_GRI = 15  # inner groove radius f_i D [m] (arm of the friction moment)
+P_PSI0 = 16  # azimuth of ball 0 [rad]
+P_CPI = 17  # p_max = CPI * Q^(1/3), inner [Pa/N^(1/3)]
+P_CPO = 18  # outer
+P_CAI = 19  # a * E(kappa) = CAI * Q^(1/3), inner [m/N^(1/3)] (raceway control criterion)
+P_CAO = 20  # outer
+P_AXOFF = 21  # axial preload offset e (local) [m]
+NPAR = 22
+
+CONTROL_OUTER = 0
+CONTROL_INNER = 1
+CONTROL_AUTO = 2
+
+
+@njit(cache=True)
+def kinematics(si, ci, so, co, gam):
+    """Jones' ball speeds for outer-raceway control and inner-raceway control.
+
+    Outer ring fixed, inner ring at ω; γ′ = D/d_m.  Returns, per unit ω,
+    (ω_m/ω, ω_R/ω, β) for outer control and then for inner control.
+
+    tan β = sin α_o / (cos α_o + γ′) (outer control), tan β = sin α_i / (cos α_i − γ′)
+    (inner control); ω_R/ω = −1 / {γ′ cos β [C_o/(1 + γ′ cos α_o) + C_i/(1 − γ′ cos α_i)]},
+    ω_m/ω = [C_o/(1 + γ′ cos α_o)] / [C_o/(1 + γ′ cos α_o) + C_i/(1 − γ′ cos α_i)],
+    C = cos α + tan β sin α (Jones 1960, eqs. for the ball speeds with the outer ring
+    fixed; Harris & Kotzalas 2007 vol. 2 ch. 2; re-derived from pure rolling at both
+    contact centres in docs/physics.md).
+    """
+    res = np.empty(6)
+    for k in range(2):
+        if k == 0:
+            t = so / (co + gam)
+        else:
+            t = si / (ci - gam)
+        po = (co + t * so) / (1.0 + gam * co)
+        pi = (ci + t * si) / (1.0 - gam * ci)
+        cb = 1.0 / math.sqrt(1.0 + t * t)
+        res[3 * k] = po / (po + pi)
+        res[3 * k + 1] = -1.0 / (gam * cb * (po + pi))
+        res[3 * k + 2] = math.atan(t)
+    return res
+
+
+@njit(cache=True)
+def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac):
+    """Residual, ring force and analytic derivatives for one ball.
+
+    Parameters
+    ----------
+    x1, x2 : ball centre from the outer groove centre, axial and radial [m]
+    a1, a2 : inner groove centre from the outer groove centre [m]
+    ri, ro : (f − ½)D of inner and outer groove [m]; ki, ko [N/m^1.5]
+    gam : D/d_m [-]; cg = J ω² d_m / D² [N]; cf = ½ m d_m ω² [N]
+    lam_i, lam_o : gyroscopic-moment shares; inner_ctrl : 1 for inner control (sets β)
+    out : float[10]  ← R1, R2, Fx, Fr, Qi, Qo, di, do, G, Fc
+        R = ball residual [N]; (Fx, Fr) = force of the inner ring on the ball [N]
+    jac : float[4, 4] ← rows dR1, dR2, dFx, dFr; columns d/d(x1, x2, a1, a2)
+
+    Returns dG/d(x1, x2, a1, a2) [N/m].
+    """
+    u = x1
+    v = x2
+    p = a1 - x1
+    q = a2 - x2
+    lo = math.sqrt(u * u + v * v)
+    li = math.sqrt(p * p + q * q)
+    so = u / lo
+    co = v / lo
+    si = p / li
+    ci = q / li
+    do = lo - ro
+    di = li - ri
+    if do > 0.0:
+        sq = math.sqrt(do)
+        qo = ko * do * sq
+        dqo = 1.5 * ko * sq
+    else:
+        qo = 0.0
+        dqo = 0.0
+    if di > 0.0:
+        sq = math.sqrt(di)
+        qi = ki * di * sq
+        dqi = 1.5 * ki * sq
+    else:
+        qi = 0.0
+        dqi = 0.0
+    # d(trig)/d(x1, x2, a1, a2)
+    dsi = (-ci * ci / li, si * ci / li, ci * ci / li, -si * ci / li)
+    dci = (si * ci / li, -si * si / li, -si * ci / li, si * si / li)
+    dso = (co * co / lo, -so * co / lo, 0.0, 0.0)
+    dco = (-so * co / lo, so * so / lo, 0.0, 0.0)
+    dQi = (-dqi * si, -dqi * ci, dqi * si, dqi * ci)
+    dQo = (dqo * so, dqo * co, 0.0, 0.0)
+    g = 0.0
+    fc = 0.0
+    dG = np.zeros(4)
+    dFc = np.zeros(4)
+    if cg > 0.0 or cf > 0.0:
+        if inner_ctrl:
+            den = ci - gam
+            t = si / den
+            t_si = 1.0 / den
+            t_ci = -si / (den * den)
+            t_so = 0.0
+            t_co = 0.0
+        else:
+            den = co + gam
+            t = so / den
+            t_si = 0.0
+            t_ci = 0.0
+            t_so = 1.0 / den
+            t_co = -so / (den * den)
+        ao = 1.0 + gam * co
+        ai = 1.0 - gam * ci
+        po = (co + t * so) / ao
+        pi = (ci + t * si) / ai
+        s = po + pi
+        s2 = s * s
+        s3 = s2 * s
+        g = cg * t * po / s2
+        fc = cf * po * po / s2
+        g_t = cg * po / s2
+        g_po = cg * t * (pi - po) / s3
+        g_pi = -2.0 * cg * t * po / s3
+        f_po = 2.0 * cf * po * pi / s3
+        f_pi = -2.0 * cf * po * po / s3
+        # partials with respect to (si, ci, so, co), including those through t
+        po_t = so / ao
+        pi_t = si / ai
+        dpo_si = po_t * t_si
+        dpo_ci = po_t * t_ci
+        dpo_so = t / ao + po_t * t_so
+        dpo_co = (1.0 - gam * t * so) / (ao * ao) + po_t * t_co
+        dpi_si = t / ai + pi_t * t_si
+        dpi_ci = (1.0 + gam * t * si) / (ai * ai) + pi_t * t_ci
+        dpi_so = pi_t * t_so
+        dpi_co = pi_t * t_co
+        g_si = g_t * t_si + g_po * dpo_si + g_pi * dpi_si
+        g_ci = g_t * t_ci + g_po * dpo_ci + g_pi * dpi_ci
+        g_so = g_t * t_so + g_po * dpo_so + g_pi * dpi_so
+        g_co = g_t * t_co + g_po * dpo_co + g_pi * dpi_co
+        f_si = f_po * dpo_si + f_pi * dpi_si
+        f_ci = f_po * dpo_ci + f_pi * dpi_ci
+        f_so = f_po * dpo_so + f_pi * dpi_so
+        f_co = f_po * dpo_co + f_pi * dpi_co
+        for k in range(4):
+            dG[k] = g_si * dsi[k] + g_ci * dci[k] + g_so * dso[k] + g_co * dco[k]
+            dFc[k] = f_si * dsi[k] + f_ci * dci[k] + f_so * dso[k] + f_co * dco[k]
+    fx = qi * si + lam_i * g * ci
+    fr = qi * ci - lam_i * g * si
+    ox = -qo * so - lam_o * g * co
+    orr = -qo * co + lam_o * g * so
+    out[0] = fx + ox
+    out[1] = fr + orr + fc
+    out[2] = fx
+    out[3] = fr
+    out[4] = qi
+    out[5] = qo
+    out[6] = di
+    out[7] = do
+    out[8] = g
+    out[9] = fc
+    for k in range(4):
+        dfx = dQi[k] * si + qi * dsi[k] + lam_i * (dG[k] * ci + g * dci[k])
+        dfr = dQi[k] * ci + qi * dci[k] - lam_i * (dG[k] * si + g * dsi[k])
+        dox = -dQo[k] * so - qo * dso[k] - lam_o * (dG[k] * co + g * dco[k])
+        dor = -dQo[k] * co - qo * dco[k] + lam_o * (dG[k] * so + g * dso[k])
+        jac[0, k] = dfx + dox
+        jac[1, k] = dfr + dor + dFc[k]
+        jac[2, k] = dfx
+        jac[3, k] = dfr
+    return dG
+
+
+@njit(cache=True)
+def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, maxit):
+    """Solve the two force balances of one ball for its centre (X₁, X₂) by Newton–Raphson.
+
+    ``x`` holds the start on entry and the solution on exit.  At zero speed the
+    solution is closed form: the ball lies on the line of the groove centres and
+    shares the approach in the ratio (K_o/K_i)^(2/3).  Returns (converged, iterations).
+    """
+    ri = par[P_RI]
+    ro = par[P_RO]
+    ki = par[P_KI]
+    ko = par[P_KO]
+    gam = par[P_D] / par[P_DM]
+    l = math.sqrt(a1 * a1 + a2 * a2)
+    dn = l - (ri + ro)
+    if cg == 0.0 and cf == 0.0:
+        if dn > 0.0:
+            do = dn / (1.0 + (ko / ki) ** (2.0 / 3.0))
+        else:
+            do = 0.5 * dn
+        x[0] = (ro + do) * a1 / l
+        x[1] = (ro + do) * a2 / l
+        ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+        return True, 0
+    # a start that keeps the outer contact loaded (centrifugal force pushes the ball out)
+    lo = math.sqrt(x[0] * x[0] + x[1] * x[1])
+    if not (lo > ro) or not (abs(x[0]) < l + ro):
+        do_min = (cf / ko) ** (2.0 / 3.0)
+        if dn > 0.0:
+            do = max(dn / (1.0 + (ko / ki) ** (2.0 / 3.0)), do_min)
+        else:
+            do = do_min
+        x[0] = (ro + do) * a1 / l
+        x[1] = (ro + do) * a2 / l
+    scale = cf + 1.0
+    it = 0
+    conv = False
+    ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+    r0 = math.hypot(out[0], out[1])
+    xs0 = 0.0
+    xs1 = 0.0
+    for it in range(1, maxit + 1):
+        det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
+        if det == 0.0 or not math.isfinite(det):
+            break
+        dx0 = -(jac[1, 1] * out[0] - jac[0, 1] * out[1]) / det
+        dx1 = -(-jac[1, 0] * out[0] + jac[0, 0] * out[1]) / det
+        # limit the step to a fraction of the groove-centre distance
+        lim = 0.05 * (ri + ro)
+        st = math.hypot(dx0, dx1)
+        if st > lim:
+            dx0 *= lim / st
+            dx1 *= lim / st
+        xs0 = x[0]
+        xs1 = x[1]
+        lam = 1.0
+        for _ in range(30):
+            x[0] = xs0 + lam * dx0
+            x[1] = xs1 + lam * dx1
+            ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+            r1 = math.hypot(out[0], out[1])
+            if r1 <= (1.0 - 1e-4 * lam) * r0 or r1 <= tol * scale:
+                break
+            lam *= 0.5
+        r0 = r1
+        stepn = lam * math.hypot(dx0, dx1)
+        if r0 <= tol * scale or stepn <= tol * par[P_D]:
+            conv = True
+            break
+    return conv, it
+
+
+@njit(cache=True)
+def ball_total_derivative(jac, dG, dfa):
+    """dF/dA of the ring force at ball equilibrium: ∂F/∂A − ∂F/∂X (∂R/∂X)⁻¹ ∂R/∂A.
+
+    Implicit differentiation of the ball balance (no extra solve).  Fills dfa[3, 2]
+    for (Fx, Fr, G) with respect to (A₁, A₂).
+    """
+    det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
+    # S = (dR/dX)^-1 dR/dA  (2x2)
+    s00 = (jac[1, 1] * jac[0, 2] - jac[0, 1] * jac[1, 2]) / det
+    s01 = (jac[1, 1] * jac[0, 3] - jac[0, 1] * jac[1, 3]) / det
+    s10 = (-jac[1, 0] * jac[0, 2] + jac[0, 0] * jac[1, 2]) / det
+    s11 = (-jac[1, 0] * jac[0, 3] + jac[0, 0] * jac[1, 3]) / det
+    for r in range(2):
+        dfa[r, 0] = jac[2 + r, 2] - (jac[2 + r, 0] * s00 + jac[2 + r, 1] * s10)
+        dfa[r, 1] = jac[2 + r, 3] - (jac[2 + r, 0] * s01 + jac[2 + r, 1] * s11)
+    dfa[2, 0] = dG[2] - (dG[0] * s00 + dG[1] * s10)
+    dfa[2, 1] = dG[3] - (dG[0] * s01 + dG[1] * s11)
+
+
+@njit(cache=True)
+def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, ballout, tol, maxit):
+    """Solve every ball for the ring displacement qv and assemble residual and stiffness.
+
+    Parameters
+    ----------
+    rows : float[nrow, NPAR]; qv : float[5] (δx, δy, δz, γy, γz) [m, rad]
+    omega : inner-ring speed [rad/s]; control : CONTROL_OUTER/INNER/AUTO
+    lam_state : int[nrow, zmax] current control per ball (0 outer, 1 inner), updated for AUTO
+    xb : float[nrow, zmax, 2] ball positions (warm start in, solution out)
+    loads : float[5] external (Fa, Fr_y, Fr_z, M_y, M_z) [N, N·m] on the inner ring
+    res : float[5] ← loads + Σ ball forces on the ring (zero at equilibrium)
+    kmat : float[5, 5] ← stiffness −d(res)/dq
+    ballout : float[nrow, zmax, 12] ← per ball: A1, A2, Qi, Qo, di, do, G, Fc, sin/cos αi, sin/cos αo
+    Returns the worst ball (converged flag, iterations).
+    """
+    nrow = rows.shape[0]
+    for k in range(5):
+        res[k] = loads[k]
+        for m in range(5):
+            kmat[k, m] = 0.0
+    out = np.empty(10)
+    jac = np.empty((4, 4))
+    dfa = np.empty((3, 2))
+    xl = np.empty(2)
+    ta1 = np.empty(5)
+    ta2 = np.empty(5)
+    gw = np.empty(5)
+    allconv = True
+    maxits = 0
+    w2 = omega * omega
+    for r in range(nrow):
+        par = rows[r]
+        z = int(par[P_Z])
+        s = par[P_SIGN]
+        ric = par[P_RIC]
+        xg = par[P_XROW] + s * par[P_XIC]
+        d = par[P_D]
+        dm = par[P_DM]
+        cg = par[P_JB] * w2 * dm / (d * d)
+        cf = 0.5 * par[P_MASS] * dm * w2
+        for j in range(z):
+            psi = par[P_PSI0] + 2.0 * math.pi * j / z
+            cp = math.cos(psi)
+            sp = math.sin(psi)
+            # d(A1)/dq and d(A2)/dq (small rotations about y and z of the groove-centre point)
+            ta1[0] = s
+            ta1[1] = 0.0
+            ta1[2] = 0.0
+            ta1[3] = s * ric * sp
+            ta1[4] = -s * ric * cp
+            ta2[0] = 0.0
+            ta2[1] = cp
+            ta2[2] = sp
+            ta2[3] = -xg * sp
+            ta2[4] = xg * cp
+            gw[0] = 0.0
+            gw[1] = 0.0
+            gw[2] = 0.0
+            gw[3] = s * sp
+            gw[4] = -s * cp
+            a1 = par[P_DX0] + par[P_AXOFF]
+            a2 = par[P_DR0]
+            for k in range(5):
+                a1 += ta1[k] * qv[k]
+                a2 += ta2[k] * qv[k]
+            xl[0] = xb[r, j, 0]
+            xl[1] = xb[r, j, 1]
+            for _pass in range(4):
+                inner_ctrl = lam_state[r, j]
+                if inner_ctrl == 1:
+                    lam_i = 1.0
+                    lam_o = 1.0
+                else:
+                    lam_i = 0.0
+                    lam_o = 2.0
+                conv, its = ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, xl, out, jac, tol, maxit)
+                if control != CONTROL_AUTO or omega == 0.0:
+                    break
+                # raceway control criterion (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 2):
+                # outer control when Q_o a_o E(κ_o) cos(α_i − α_o) > Q_i a_i E(κ_i)
+                qi = out[4]
+                qo = out[5]
+                lo = math.sqrt(xl[0] ** 2 + xl[1] ** 2)
+                li = math.sqrt((a1 - xl[0]) ** 2 + (a2 - xl[1]) ** 2)
+                cdiff = ((a2 - xl[1]) / li) * (xl[1] / lo) + ((a1 - xl[0]) / li) * (xl[0] / lo)
+                lhs = par[P_CAO] * qo ** (4.0 / 3.0) * cdiff
+                rhs = par[P_CAI] * qi ** (4.0 / 3.0)
+                want = 0 if lhs > rhs else 1
+                if want == inner_ctrl:
+                    break
+                lam_state[r, j] = want
+            lam_state[r, j] = inner_ctrl
+            if not conv:
+                allconv = False
+            if its > maxits:
+                maxits = its
+            xb[r, j, 0] = xl[0]
+            xb[r, j, 1] = xl[1]
+            dG = ball_eval(xl[0], xl[1], a1, a2, par[P_RI], par[P_RO], par[P_KI], par[P_KO], d / dm,
+                           cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+            fx = out[2]
+            fr = out[3]
+            g = out[8]
+            mpsi = lam_i * g * par[P_GRI]
+            # generalized force of this ball on the ring: -(Fx dA1/dq + Fr dA2/dq) + Mpsi w
+            for k in range(5):
+                res[k] += -(fx * ta1[k] + fr * ta2[k]) + mpsi * gw[k]
+            if out[4] > 0.0 or out[5] > 0.0:
+                det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
+                if det != 0.0 and math.isfinite(det):
+                    ball_total_derivative(jac, dG, dfa)
+                    for k in range(5):
+                        dfxq = dfa[0, 0] * ta1[k] + dfa[0, 1] * ta2[k]
+                        dfrq = dfa[1, 0] * ta1[k] + dfa[1, 1] * ta2[k]
+                        dgq = dfa[2, 0] * ta1[k] + dfa[2, 1] * ta2[k]
+                        for m in range(5):
+                            kmat[m, k] += ta1[m] * dfxq + ta2[m] * dfrq - lam_i * par[P_GRI] * gw[m] * dgq
+            bo = ballout[r, j]
+            li = math.sqrt((a1 - xl[0]) ** 2 + (a2 - xl[1]) ** 2)
+            lo = math.sqrt(xl[0] ** 2 + xl[1] ** 2)
+            bo[0] = a1
+            bo[1] = a2
+            bo[2] = out[4]
+            bo[3] = out[5]
+            bo[4] = out[6]
+            bo[5] = out[7]
+            bo[6] = g
+            bo[7] = out[9]
+            bo[8] = (a1 - xl[0]) / li
+            bo[9] = (a2 - xl[1]) / li
+            bo[10] = xl[0] / lo
+            bo[11] = xl[1] / lo
+    return allconv, maxits
+
+
+@njit(cache=True)
+def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball, tol_ring,
+               maxit_ball, maxit_ring, load_scale):
+    """Newton–Raphson on the five inner-ring displacements (seed 000 eq. 13).
+
+    The Jacobian is the assembled stiffness (implicit differentiation of every ball's
+    balance), so each Newton step costs one pass over the balls.  A backtracking line
+    search on the scaled residual keeps it safe when balls lose contact.
+
+    Returns (status, iterations, residual_norm, ball_converged):
+    status 0 converged; 1 max iterations; 2 singular stiffness (the load cannot be
+    carried, e.g. a radial load on one angular contact row without axial load).
+    """
+    res = np.empty(5)
+    res_try = np.empty(5)
+    q_try = np.empty(5)
+    k_try = np.empty((5, 5))
+    xb_save = xb.copy()
+    # moments scaled by the pitch radius so that all residual entries are forces
+    dm = rows[0, P_DM]
+    wts = np.array([1.0, 1.0, 1.0, 2.0 / dm, 2.0 / dm])
+    bconv, _ = ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, ballout,
+                             tol_ball, maxit_ball)
+    rn = 0.0
+    for k in range(5):
+        rn = max(rn, abs(res[k] * wts[k]))
+    it = 0
+    status = 1
+    if rn <= tol_ring * load_scale:
+        return 0, 0, rn, bconv
+    # displacement scale for step limiting: a fraction of the groove-centre distance
+    amax = 0.0
+    for r in range(rows.shape[0]):
+        amax = max(amax, rows[r, P_RI] + rows[r, P_RO])
+    for it in range(1, maxit_ring + 1):
+        # Newton step K dq = res  (K = -dres/dq)
+        kk = kmat.copy()
+        # guard: regularise only exactly singular directions
+        ok = True
+        for k in range(5):
+            if not (kk[k, k] > 0.0) or not math.isfinite(kk[k, k]):
+                ok = False
+        if not ok:
+            # fall back to a small stiffness on empty diagonals so the step stays bounded
+            diag_max = 0.0
+            for k in range(5):
+                if math.isfinite(kk[k, k]):
+                    diag_max = max(diag_max, abs(kk[k, k]))
+            if diag_max == 0.0:
+                return 2, it, rn, bconv
+            for k in range(5):
+                if not (kk[k, k] > 0.0):
+                    kk[k, k] = 1e-6 * diag_max * (1.0 if k < 3 else dm * dm / 4.0)
+        dq = np.linalg.solve(kk, res)
+        # step limit: translations ≤ 0.1 A, tilts ≤ 0.1 A / (d_m/2)
+        smax = 0.0
+        for k in range(5):
+            sc = 1.0 if k < 3 else dm / 2.0
+            smax = max(smax, abs(dq[k]) * sc)
+        if smax > 0.1 * amax:
+            for k in range(5):
+                dq[k] *= 0.1 * amax / smax
+        lam = 1.0
+        accepted = False
+        for _ in range(40):
+            for k in range(5):
+                q_try[k] = qv[k] + lam * dq[k]
+            xb[:, :, :] = xb_save
+            bconv, _ = ring_assemble(rows, q_try, omega, control, lam_state, xb, loads, res_try, k_try,
+                                     ballout, tol_ball, maxit_ball)
+            rt = 0.0
+            for k in range(5):
+                rt = max(rt, abs(res_try[k] * wts[k]))
+            if rt < rn or rt <= tol_ring * load_scale:
+                accepted = True
+                break
+            lam *= 0.5
+        if not accepted:
+            xb[:, :, :] = xb_save
+            bconv, _ = ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, ballout,
+                                     tol_ball, maxit_ball)
+            return 1, it, rn, bconv
+        for k in range(5):
+            qv[k] = q_try[k]
+            res[k] = res_try[k]
+            for m in range(5):
+                kmat[k, m] = k_try[k, m]
+        xb_save[:, :, :] = xb
+        step = 0.0
+        for k in range(5):
+            sc = 1.0 if k < 3 else dm / 2.0
+            step = max(step, abs(lam * dq[k]) * sc)
+        rn = rt
+        if rn <= tol_ring * load_scale or (step <= 1e-13 * amax and rn <= 1e3 * tol_ring * load_scale):
+            status = 0
+            break
+    if status == 0:
+        # the stiffness reported is that of the converged state
+        return 0, it, rn, bconv
+    return 1, it, rn, bconv
