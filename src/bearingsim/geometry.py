@@ -168,7 +168,20 @@ class BallBearing:
 
     def row_parameters(self, x_row: float = 0.0, sign: float = 1.0, axial_offset: float = 0.0,
                        first_ball_azimuth: float = 0.0) -> np.ndarray:
-        """Parameter vector of this bearing as a row for the kernels (layout in :mod:`._kernels`)."""
+        """Parameter vector of this bearing as a row for the kernels (layout in :mod:`._kernels`).
+
+        x_row [m] axial position of the row plane; sign ±1 orientation; axial_offset [m]
+        preload offset of the inner groove centres; first_ball_azimuth [rad].
+        """
+        p = self._base_row.copy()
+        p[kn.P_XROW] = x_row
+        p[kn.P_SIGN] = sign
+        p[kn.P_PSI0] = first_ball_azimuth
+        p[kn.P_AXOFF] = axial_offset
+        return p
+
+    @cached_property
+    def _base_row(self) -> np.ndarray:
         d = self.ball_diameter
         a0 = self.free_contact_angle
         big_a = self.total_curvature_distance
@@ -194,17 +207,14 @@ class BallBearing:
             p[kn.P_DR0] = big_a - 0.5 * self.diametral_clearance
             p[kn.P_XIC] = 0.0
         p[kn.P_RIC] = 0.5 * self.pitch_diameter + ri * math.cos(a0)
-        p[kn.P_XROW] = x_row
-        p[kn.P_SIGN] = sign
         p[kn.P_MASS] = self.ball_mass
         p[kn.P_JB] = self.ball_inertia
         p[kn.P_GRI] = self.inner_conformity * d
-        p[kn.P_PSI0] = first_ball_azimuth
         p[kn.P_CPI] = ci.max_pressure
         p[kn.P_CPO] = co.max_pressure
         p[kn.P_CAI] = ci.a * ci.ell_e
         p[kn.P_CAO] = co.a * co.ell_e
-        p[kn.P_AXOFF] = axial_offset
+        p.setflags(write=False)
         return p
 
     def summary(self) -> dict:

@@ -34,11 +34,13 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
 
 @lru_cache(maxsize=1)
 def registry():
-    """The shared pint UnitRegistry (created lazily: importing pint costs ~0.2 s)."""
+    """The shared pint UnitRegistry (created lazily on first use: importing pint costs ~0.3 s)."""
     import pint
 
-    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-    return ureg
+    try:  # parsed definitions cached on disk: 0.02 s instead of 0.5 s per start
+        return pint.UnitRegistry(autoconvert_offset_to_baseunit=True, cache_folder=":auto:")
+    except (OSError, ImportError):  # pragma: no cover - read-only home or no platformdirs
+        return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 
 
 def parse_quantity(value, dimension: str, field: str) -> float:

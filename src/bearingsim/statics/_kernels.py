@@ -112,9 +112,7 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
     lam_i, lam_o : gyroscopic-moment shares; inner_ctrl : 1 for inner control (sets β)
     out : float[10]  ← R1, R2, Fx, Fr, Qi, Qo, di, do, G, Fc
         R = ball residual [N]; (Fx, Fr) = force of the inner ring on the ball [N]
-    jac : float[4, 4] ← rows dR1, dR2, dFx, dFr; columns d/d(x1, x2, a1, a2)
-
-    Returns dG/d(x1, x2, a1, a2) [N/m].
+    jac : float[5, 4] ← rows dR1, dR2, dFx, dFr, dG; columns d/d(x1, x2, a1, a2)
     """
     u = x1
     v = x2
@@ -151,8 +149,8 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
     dQo = (dqo * so, dqo * co, 0.0, 0.0)
     g = 0.0
     fc = 0.0
-    dG = np.zeros(4)
-    dFc = np.zeros(4)
+    g_si = g_ci = g_so = g_co = 0.0
+    f_si = f_ci = f_so = f_co = 0.0
     if cg > 0.0 or cf > 0.0:
         if inner_ctrl:
             den = ci - gam
@@ -201,9 +199,6 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
         f_ci = f_po * dpo_ci + f_pi * dpi_ci
         f_so = f_po * dpo_so + f_pi * dpi_so
         f_co = f_po * dpo_co + f_pi * dpi_co
-        for k in range(4):
-            dG[k] = g_si * dsi[k] + g_ci * dci[k] + g_so * dso[k] + g_co * dco[k]
-            dFc[k] = f_si * dsi[k] + f_ci * dci[k] + f_so * dso[k] + f_co * dco[k]
     fx = qi * si + lam_i * g * ci
     fr = qi * ci - lam_i * g * si
     ox = -qo * so - lam_o * g * co
@@ -219,15 +214,17 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
     out[8] = g
     out[9] = fc
     for k in range(4):
-        dfx = dQi[k] * si + qi * dsi[k] + lam_i * (dG[k] * ci + g * dci[k])
-        dfr = dQi[k] * ci + qi * dci[k] - lam_i * (dG[k] * si + g * dsi[k])
-        dox = -dQo[k] * so - qo * dso[k] - lam_o * (dG[k] * co + g * dco[k])
-        dor = -dQo[k] * co - qo * dco[k] + lam_o * (dG[k] * so + g * dso[k])
+        dgk = g_si * dsi[k] + g_ci * dci[k] + g_so * dso[k] + g_co * dco[k]
+        dfck = f_si * dsi[k] + f_ci * dci[k] + f_so * dso[k] + f_co * dco[k]
+        dfx = dQi[k] * si + qi * dsi[k] + lam_i * (dgk * ci + g * dci[k])
+        dfr = dQi[k] * ci + qi * dci[k] - lam_i * (dgk * si + g * dsi[k])
+        dox = -dQo[k] * so - qo * dso[k] - lam_o * (dgk * co + g * dco[k])
+        dor = -dQo[k] * co - qo * dco[k] + lam_o * (dgk * so + g * dso[k])
         jac[0, k] = dfx + dox
-        jac[1, k] = dfr + dor + dFc[k]
+        jac[1, k] = dfr + dor + dfck
         jac[2, k] = dfx
         jac[3, k] = dfr
-    return dG
+        jac[4, k] = dgk
 
 
 @njit(cache=True)
@@ -303,7 +300,7 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
 
 
 @njit(cache=True)
-def ball_total_derivative(jac, dG, dfa):
+def ball_total_derivative(jac, dfa):
     """dF/dA of the ring force at ball equilibrium: ∂F/∂A − ∂F/∂X (∂R/∂X)⁻¹ ∂R/∂A.
 
     Implicit differentiation of the ball balance (no extra solve).  Fills dfa[3, 2]
@@ -318,8 +315,8 @@ def ball_total_derivative(jac, dG, dfa):
     for r in range(2):
         dfa[r, 0] = jac[2 + r, 2] - (jac[2 + r, 0] * s00 + jac[2 + r, 1] * s10)
         dfa[r, 1] = jac[2 + r, 3] - (jac[2 + r, 0] * s01 + jac[2 + r, 1] * s11)
-    dfa[2, 0] = dG[2] - (dG[0] * s00 + dG[1] * s10)
-    dfa[2, 1] = dG[3] - (dG[0] * s01 + dG[1] * s11)
+    dfa[2, 0] = jac[4, 2] - (jac[4, 0] * s00 + jac[4, 1] * s10)
+    dfa[2, 1] = jac[4, 3] - (jac[4, 0] * s01 + jac[4, 1] * s11)
 
 
 @njit(cache=True)
@@ -344,7 +341,7 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
         for m in range(5):
             kmat[k, m] = 0.0
     out = np.empty(10)
-    jac = np.empty((4, 4))
+    jac = np.empty((5, 4))
     dfa = np.empty((3, 2))
     xl = np.empty(2)
     ta1 = np.empty(5)
@@ -421,8 +418,7 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
                 maxits = its
             xb[r, j, 0] = xl[0]
             xb[r, j, 1] = xl[1]
-            dG = ball_eval(xl[0], xl[1], a1, a2, par[P_RI], par[P_RO], par[P_KI], par[P_KO], d / dm,
-                           cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+            # out and jac hold the evaluation at the solution (last call of ball_solve)
             fx = out[2]
             fr = out[3]
             g = out[8]
@@ -433,7 +429,7 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
             if out[4] > 0.0 or out[5] > 0.0:
                 det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
                 if det != 0.0 and math.isfinite(det):
-                    ball_total_derivative(jac, dG, dfa)
+                    ball_total_derivative(jac, dfa)
                     for k in range(5):
                         dfxq = dfa[0, 0] * ta1[k] + dfa[0, 1] * ta2[k]
                         dfrq = dfa[1, 0] * ta1[k] + dfa[1, 1] * ta2[k]

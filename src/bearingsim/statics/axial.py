@@ -18,8 +18,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from scipy.optimize import brentq
-
 from ..errors import InputError
 
 
@@ -68,6 +66,8 @@ def contact_angle_fixed_point(fa: float, free_angle: float, z: int, kn: float, b
 def contact_angle_bracketed(fa: float, free_angle: float, z: int, kn: float, big_a: float,
                             tol: float = 1e-14) -> tuple[float, int]:
     """Loaded contact angle by Brent's method on [α₀, π/2) (always converges; Fa(α) is monotonic)."""
+    from scipy.optimize import brentq  # imported here: scipy.optimize costs ~0.3 s at start-up
+
     if fa == 0.0:
         return free_angle, 0
     hi = 0.5 * math.pi - 1e-12

@@ -142,7 +142,11 @@ def initial_guess(bearing, loads: Loads) -> np.ndarray:
         fr = math.hypot(loads.fr_y, loads.fr_z)
         mr = math.hypot(loads.m_y, loads.m_z) / (0.5 * bearing.pitch_diameter)
         fa_eq = max(loads.fa, 0.0) + 0.5 * (fr + mr) * math.tan(max(bearing.free_contact_angle, 0.1)) + 1.0
-        q0[0] = solve_thrust(bearing, fa_eq).axial_deflection + 0.5 * bearing.diametral_clearance * \
+        # the seed's fixed point is cheap; Brent's method (imports scipy.optimize) only if it fails
+        th = solve_thrust(bearing, fa_eq, method="fixed_point")
+        if not th.converged:
+            th = solve_thrust(bearing, fa_eq)
+        q0[0] = th.axial_deflection + 0.5 * bearing.diametral_clearance * \
             math.cos(bearing.free_contact_angle) / max(math.sin(bearing.free_contact_angle), 1e-3)
     else:
         # deep groove: take up the clearance in the load direction
@@ -242,3 +246,66 @@ def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.nd
             cols["pitch_angle_rad"].append(beta)
             cols["inner_control"].append(ctrl)
     return {k: np.asarray(v) for k, v in cols.items()}
+
+
+@dataclass
+class BatchResult:
+    """Equilibria of many operating points (arrays over points, SI)."""
+
+    displacement: np.ndarray  #: (n, 5)
+    stiffness: np.ndarray  #: (n, 5, 5)
+    converged: np.ndarray  #: (n,) bool
+    iterations: np.ndarray  #: (n,) int
+    residual: np.ndarray  #: (n,) [N]
+
+
+def solve_many(bearing, loads: np.ndarray, speeds: np.ndarray, control: str = "outer") -> BatchResult:
+    """Solve many operating points, each started from the previous solution (warm start).
+
+    Parameters
+    ----------
+    loads : float[n, 5]  (Fa, Fr_y, Fr_z, M_y, M_z) [N, N·m] per point
+    speeds : float[n]  inner-ring speeds [rad/s]
+    control : raceway control as in :func:`solve`
+
+    Neighbouring points in the order given share their solutions as starting points, so
+    order the points along a path through the grid (e.g. speed fastest) for best speed.
+    A point that fails from the warm start is retried once from the cold start.
+    """
+    loads = np.ascontiguousarray(loads, dtype=float)
+    speeds = np.ascontiguousarray(speeds, dtype=float)
+    if loads.ndim != 2 or loads.shape[1] != 5 or speeds.shape != (loads.shape[0],):
+        raise InputError("loads", f"expected loads (n, 5) and speeds (n,), got {loads.shape} and {speeds.shape}",
+                         "give one (Fa, Fr_y, Fr_z, M_y, M_z) row and one speed per point")
+    if not (np.isfinite(loads).all() and np.isfinite(speeds).all()):
+        raise InputError("loads", "non-finite load or speed", "give finite values")
+    if control not in CONTROLS:
+        raise InputError("control", f"unknown raceway control {control!r}", "use outer, inner or auto")
+    rows = rows_of(bearing)
+    n = loads.shape[0]
+    nrow, zmax = rows.shape[0], int(rows[:, kn.P_Z].max())
+    lam = np.full((nrow, zmax), 1 if control == "inner" else 0, dtype=np.int64)
+    xb = np.zeros((nrow, zmax, 2))
+    ballout = np.zeros((nrow, zmax, 12))
+    out = BatchResult(np.zeros((n, 5)), np.zeros((n, 5, 5)), np.zeros(n, bool), np.zeros(n, np.int64), np.zeros(n))
+    q = None
+    ctrl = CONTROLS[control]
+    dm = rows[0, kn.P_DM]
+    for i in range(n):
+        li = loads[i]
+        scale = max(abs(li[0]), abs(li[1]), abs(li[2]), 2 * abs(li[3]) / dm, 2 * abs(li[4]) / dm, 1.0)
+        for attempt in range(2):
+            if q is None or attempt == 1:
+                q = initial_guess(bearing, Loads(*li))
+                xb[:] = 0.0
+            status, its, rn, bconv = kn.solve_ring(rows, li, abs(speeds[i]), ctrl, q, lam, xb, out.stiffness[i],
+                                                   ballout, TOL_BALL, TOL_RING, MAXIT_BALL, MAXIT_RING, scale)
+            if status == 0 and bconv:
+                break
+        out.displacement[i] = q
+        out.converged[i] = status == 0 and bconv
+        out.iterations[i] = its
+        out.residual[i] = rn
+        if not out.converged[i]:
+            q = None
+    return out

@@ -1,0 +1,168 @@
+"""Command-line interface (typer + rich).  Thin: parse, call the API, print.
+
+Bad input raises :class:`~bearingsim.errors.InputError`; :func:`main` prints it on one
+line and exits with status 2 (never a traceback).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from .errors import BearingSimError, InputError
+
+app = typer.Typer(add_completion=False, no_args_is_help=True,
+                  help="bearingsim: ball bearing statics, stiffness, lubrication and dynamics.")
+reproduce_app = typer.Typer(no_args_is_help=True, help="Reproduce the published studies (seed papers).")
+app.add_typer(reproduce_app, name="reproduce")
+
+
+def _console():
+    from rich.console import Console
+
+    return Console()
+
+
+def parse_loads(fa, fr, fz, moment, my):
+    """CLI load options (strings with units; bare numbers in N and N·m) → Loads."""
+    from .statics.jones_harris import Loads
+    from .units import parse_quantity
+
+    return Loads(
+        fa=parse_quantity(fa, "force", "--fa") if fa is not None else 0.0,
+        fr_y=parse_quantity(fr, "force", "--fr") if fr is not None else 0.0,
+        fr_z=parse_quantity(fz, "force", "--fz") if fz is not None else 0.0,
+        m_y=parse_quantity(my, "moment", "--my") if my is not None else 0.0,
+        m_z=parse_quantity(moment, "moment", "--moment") if moment is not None else 0.0,
+    )
+
+
+@app.command()
+def catalog():
+    """List the built-in bearing catalogue."""
+    from rich.table import Table
+
+    from .io import catalog_entries
+
+    t = Table(title="bearingsim catalogue")
+    t.add_column("name")
+    t.add_column("type")
+    t.add_column("description")
+    for e in catalog_entries():
+        t.add_row(e["name"], e["type"], e["description"])
+    _console().print(t)
+
+
+@app.command()
+def static(
+    bearing: str = typer.Argument(..., help="Catalogue name or TOML file"),
+    fa: Optional[str] = typer.Option(None, "--fa", help='Axial load along +x, e.g. "1000 N"'),
+    fr: Optional[str] = typer.Option(None, "--fr", help="Radial load along +y"),
+    fz: Optional[str] = typer.Option(None, "--fz", help="Radial load along +z"),
+    moment: Optional[str] = typer.Option(None, "--moment", help='Moment about z, e.g. "1 N*m"'),
+    my: Optional[str] = typer.Option(None, "--my", help="Moment about y"),
+    speed: Optional[str] = typer.Option(None, "--speed", help='Inner-ring speed, e.g. "11200 rpm"'),
+    control: str = typer.Option("outer", "--control", help="Raceway control: outer, inner or auto"),
+    as_json: bool = typer.Option(False, "--json", help="Print one JSON object in SI units"),
+):
+    """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment)."""
+    from .io import load_bearing
+    from .statics.jones_harris import solve
+    from .units import parse_quantity
+
+    b = load_bearing(bearing)
+    loads = parse_loads(fa, fr, fz, moment, my)
+    omega = parse_quantity(speed, "speed", "--speed") if speed is not None else 0.0
+    res = solve(b, loads, omega, control)
+    if as_json:
+        typer.echo(json.dumps(res.to_dict()))
+    else:
+        print_static(res)
+    if not res.converged:
+        raise typer.Exit(1)
+
+
+def print_static(res) -> None:
+    """Readable tables of a :class:`StaticResult` (engineering units for display only)."""
+    from rich.table import Table
+
+    con = _console()
+    d = res.displacement
+    con.print(f"[bold]{getattr(res.bearing, 'name', '')}[/]  speed {res.speed * 30 / math.pi:.0f} rpm, "
+              f"control {res.control}: {'converged' if res.converged else '[red]NOT CONVERGED[/]'} "
+              f"({res.status}; {res.iterations} iterations, residual {res.residual:.2e} N)")
+    con.print(f"displacement: δx = {d[0] * 1e6:.4f} µm, δy = {d[1] * 1e6:.4f} µm, δz = {d[2] * 1e6:.4f} µm, "
+              f"γy = {d[3] * 1e3:.5f} mrad, γz = {d[4] * 1e3:.5f} mrad")
+    con.print(f"axial stiffness K_xx = {res.axial_stiffness / 1e6:.2f} N/µm;  cage speed "
+              f"{res.cage_speed * 30 / math.pi:.1f} rpm")
+    k = Table(title="stiffness matrix (N/µm, N/mrad, N·m/µm, N·m/mrad)")
+    k.add_column("")
+    names = ("x", "y", "z", "γy", "γz")
+    for n in names:
+        k.add_column(n, justify="right")
+    for i in range(5):
+        k.add_row(names[i], *[f"{res.stiffness[i, j] * (1e-6 if j < 3 else 1e-3):.4g}" for j in range(5)])
+    con.print(k)
+    t = Table(title="balls")
+    for c in ("row", "ψ deg", "αi deg", "αo deg", "Qi N", "Qo N", "p_i MPa", "p_o MPa", "ωm rpm", "ωR rpm", "ctrl"):
+        t.add_column(c, justify="right")
+    b = res.balls
+    for j in range(len(b["azimuth_rad"])):
+        t.add_row(str(int(b["row"][j])), f"{math.degrees(b['azimuth_rad'][j]):.1f}",
+                  f"{math.degrees(b['inner_contact_angle_rad'][j]):.3f}",
+                  f"{math.degrees(b['outer_contact_angle_rad'][j]):.3f}",
+                  f"{b['inner_load_N'][j]:.1f}", f"{b['outer_load_N'][j]:.1f}",
+                  f"{b['inner_max_pressure_Pa'][j] / 1e6:.0f}", f"{b['outer_max_pressure_Pa'][j] / 1e6:.0f}",
+                  f"{b['orbital_speed_rad_s'][j] * 30 / math.pi:.1f}", f"{b['spin_speed_rad_s'][j] * 30 / math.pi:.1f}",
+                  "inner" if b["inner_control"][j] else "outer")
+    con.print(t)
+
+
+@reproduce_app.command("spindle-axial-stiffness")
+def reproduce_spindle(
+    out: Path = typer.Option(Path("out"), "--out", help="Folder for the CSV and the Fig. 5 plot"),
+    bearing: str = typer.Option("skf-7011-cdga-hc", "--bearing", help="Bearing to use (catalogue or TOML)"),
+):
+    """Seed 000: tables T1–T3 side by side with the paper, Fig. 5 plot and CSV."""
+    from .io import load_bearing
+    from .studies.spindle import run_study
+
+    study = run_study(load_bearing(bearing))
+    study.print_tables(_console())
+    out.mkdir(parents=True, exist_ok=True)
+    csv = study.to_csv(out / "spindle_axial_stiffness.csv")
+    png = study.plot(out / "spindle_axial_stiffness_fig5.png")
+    _console().print(f"wrote {csv} and {png}")
+
+
+def main() -> None:
+    """Entry point of the ``bearingsim`` script: one clear line and exit 2 on bad input."""
+    try:
+        app(standalone_mode=False)
+    except InputError as exc:
+        typer.echo(f"error: {exc}", err=True)
+        sys.exit(2)
+    except BearingSimError as exc:
+        typer.echo(f"error: {exc}", err=True)
+        sys.exit(1)
+    except typer.Exit as exc:
+        sys.exit(exc.exit_code)
+    except (typer.Abort, KeyboardInterrupt):
+        typer.echo("aborted", err=True)
+        sys.exit(130)
+    except Exception as exc:  # click usage errors
+        import click
+
+        if isinstance(exc, click.exceptions.ClickException):
+            exc.show()
+            sys.exit(2)
+        raise
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main()

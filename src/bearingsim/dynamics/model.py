@@ -1,0 +1,377 @@
+"""State layout and bodies of the dynamic bearing model (issue 5; seed 001 Table 3).
+
+Bodies (inertial frame, x the bearing axis, ψ = 0 on +y, outer ring fixed):
+
+* inner ring: translations (x, y, z) and tilts (γy, γz) about y and z, spin about its
+  own axis prescribed, Ω(t) [rad/s]; orientation R = R_y(γy) R_z(γz) (small tilts are
+  those of the statics, :mod:`bearingsim.statics._kernels`, to first order);
+* every ball: centre position (3) and velocity (3) and angular velocity (3) in the
+  inertial frame (a sphere's orientation does not enter the forces);
+* one rigid cage per row: centre position (3), velocity (3), orientation
+  R_y(βy) R_z(βz) R_x(θ) (θ, βy, βz), spin rate θ̇ and tilt rates (β̇y, β̇z).
+  The cage block ends with ``2 n_modes`` slots reserved for modal coordinates of an
+  elastic cage (0 now, see :mod:`.cage`).
+
+State vector y (float64), in this order::
+
+    [0:5]    q   = (δx, δy, δz, γy, γz) of the inner ring [m, rad]
+    [5:10]   q̇                                            [m/s, rad/s]
+    [10 + 9k : 10 + 9k + 9]  ball k: r(3) [m], v(3) [m/s], ω(3) [rad/s]
+    [OC + 12c : OC + 12c + 12] cage c: r(3), v(3), θ, βy, βz, θ̇, β̇y, β̇z
+
+with OC = 10 + 9 n_balls.  Geometry comes from the kernel row parameters of the
+statics (layout P_* in :mod:`bearingsim.statics._kernels`): per row the inner groove
+curvature centres lie on a circle of radius P_RIC at local axial position
+ξ = P_XIC + P_AXOFF in the inner-ring frame, the outer ones on a fixed circle of radius
+P_RIC − P_DR0 at ξ = P_XIC − P_DX0 (global x = P_XROW + P_SIGN ξ).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import InputError
+from ..statics import _kernels as kn
+
+N_RING = 10
+N_BALL = 9
+N_CAGE = 12
+DOF = ("x", "y", "z", "gamma_y", "gamma_z")
+
+# ---- per-row extra constants (rowx) -------------------------------------------------
+X_CAI = 0  # inner contact semi-major axis a = X_CAI Q^(1/3) [m/N^(1/3)]
+X_CBI = 1  # inner semi-minor axis b [m/N^(1/3)]
+X_CAO = 2
+X_CBO = 3
+X_RDI = 4  # radius of the deformed contact surface across the groove, inner [m] (2 f D / (2 f + 1))
+X_RDO = 5
+X_XGI = 6  # global x of the inner groove-centre circle in the ring frame [m]
+X_XGO = 7  # global x of the outer groove-centre circle [m]
+X_RGO = 8  # radius of the outer groove-centre circle [m]
+X_EPI = 9  # E' of ball/inner ring [Pa]
+X_EPO = 10
+X_RXI = 11  # rolling-direction radius R_x at alpha0, inner [m]
+X_RXO = 12
+X_RYI = 13
+X_RYO = 14
+NROWX = 15
+
+# ---- global parameters (gp) ----------------------------------------------------------
+G_MR = 0  # inner ring (hub) mass [kg]
+G_ITR = 1  # inner ring transverse moment of inertia [kg m²]
+G_IPR = 2  # inner ring polar moment of inertia [kg m²]
+G_GX = 3  # gravity vector [m/s²] (3)
+G_ALPHA = 6  # Hunt–Crossley damping constant α [s/m]
+G_TRAC = 7  # traction model: 0 none, 1 regularised Coulomb (test stand-in), 2 sliced kernel
+G_MU0 = 8  # Coulomb coefficient of the stand-in model [-]
+G_S0 = 9  # slide-roll ratio of the regularisation [-]
+G_NSL = 10  # slices per contact ellipse [-]
+G_XL = 11  # axial position of the load point [m]
+G_W0 = 12  # shaft speed at t = 0 [rad/s]
+G_W1 = 13  # shaft speed after the ramp [rad/s]
+G_TRAMP = 14  # ramp duration [s] (0: constant)
+G_RING_FIXED = 15  # 1: inner ring held at its initial position (tests)
+G_VREF = 16  # speed regularising friction directions [m/s]
+G_CAGE_ON = 17  # 1: ball–cage contacts on
+NGP = 18
+
+TRACTION_MODELS = {"none": 0, "coulomb": 1, "slices": 2}
+
+# ---- per-cage parameters (cp) --------------------------------------------------------
+C_MASS = 0
+C_IP = 1  # polar moment of inertia [kg m²]
+C_IT = 2  # transverse moment of inertia [kg m²]
+C_XP = 3  # axial position of the pocket centres (cage frame) [m]
+C_RP = 4  # radius of the pocket centres [m]
+C_CLR = 5  # pocket clearance (pocket radius − ball radius) [m]
+C_KC = 6  # ball–pocket Hertz constant [N/m^1.5]
+C_MU = 7  # ball–pocket friction coefficient [-]
+C_GUIDE = 8  # 0 ball-guided, 1 outer-ring land, 2 inner-ring land
+C_RLAND = 9  # land radius [m]
+C_CLAND = 10  # radial land clearance [m]
+C_KLAND = 11  # land contact constant [N/m^1.5]
+C_MULAND = 12  # land friction coefficient [-]
+C_PSI0 = 13  # azimuth of pocket 0 [rad]
+C_Z = 14  # number of pockets
+C_BALL0 = 15  # index of the first ball of this cage
+C_NMODES = 16  # modal coordinates (0: rigid)
+NCP = 17
+
+GUIDANCE = {"balls": 0, "outer-land": 1, "inner-land": 2}
+
+
+@dataclass
+class Model:
+    """Arrays describing one bearing system for the kernels (all SI)."""
+
+    rows: np.ndarray  #: float[nrow, NPAR] statics row parameters
+    rowx: np.ndarray  #: float[nrow, NROWX]
+    ball_row: np.ndarray  #: int[nb] row of every ball
+    ball_psi: np.ndarray  #: float[nb] nominal azimuth [rad]
+    gp: np.ndarray  #: float[NGP]
+    cp: np.ndarray  #: float[ncage, NCP]
+    pts: np.ndarray  #: float[npt, 3] pocket-surface points in the pocket frame (t, r, x) [m]
+    names: dict = field(default_factory=dict)
+
+    @property
+    def n_balls(self) -> int:
+        return int(self.ball_row.shape[0])
+
+    @property
+    def n_cages(self) -> int:
+        return int(self.cp.shape[0])
+
+    @property
+    def n_state(self) -> int:
+        return N_RING + N_BALL * self.n_balls + N_CAGE * self.n_cages
+
+    @property
+    def cage_offset(self) -> int:
+        return N_RING + N_BALL * self.n_balls
+
+    def ball_slice(self, k: int) -> slice:
+        o = N_RING + N_BALL * k
+        return slice(o, o + N_BALL)
+
+    def cage_slice(self, c: int) -> slice:
+        o = self.cage_offset + N_CAGE * c
+        return slice(o, o + N_CAGE)
+
+
+def pocket_points(ball_diameter: float, clearance: float, n_theta: int = 36, n_height: int = 9,
+                  height_fraction: float = 0.4) -> np.ndarray:
+    """Points on a cylindrical pocket surface in the pocket frame (t, r, x) [m].
+
+    The pocket is a cylinder of radius D/2 + clearance whose axis is the cage's radial
+    direction; points at ``n_theta`` angles around the axis and ``n_height`` heights in
+    ±``height_fraction``·D/2 along it (seed 001 §3.2: the cage surface divided into
+    nodes that interfere geometrically with the ball).
+    """
+    rp = 0.5 * ball_diameter + clearance
+    th = 2.0 * math.pi * np.arange(n_theta) / n_theta
+    hs = np.linspace(-height_fraction, height_fraction, n_height) * 0.5 * ball_diameter if n_height > 1 \
+        else np.zeros(1)
+    pts = np.empty((n_theta * n_height, 3))
+    k = 0
+    for h in hs:
+        for a in th:
+            pts[k] = (rp * math.cos(a), h, rp * math.sin(a))
+            k += 1
+    return pts
+
+
+def row_extras(bearing, rows: np.ndarray) -> np.ndarray:
+    """Per-row contact constants (ellipse size, conformal radius, groove-centre circles)."""
+    bearings = bearing_rows(bearing, rows.shape[0])
+    rx = np.zeros((rows.shape[0], NROWX))
+    for r, b in enumerate(bearings):
+        par = rows[r]
+        ci = b.contact(1.0, True)
+        co = b.contact(1.0, False)
+        d = b.ball_diameter
+        rx[r, X_CAI] = ci.a
+        rx[r, X_CBI] = ci.b
+        rx[r, X_CAO] = co.a
+        rx[r, X_CBO] = co.b
+        fi, fo = b.inner_conformity, b.outer_conformity
+        rx[r, X_RDI] = 2 * fi * d / (2 * fi + 1)
+        rx[r, X_RDO] = 2 * fo * d / (2 * fo + 1)
+        s = par[kn.P_SIGN]
+        rx[r, X_XGI] = par[kn.P_XROW] + s * (par[kn.P_XIC] + par[kn.P_AXOFF])
+        rx[r, X_XGO] = par[kn.P_XROW] + s * (par[kn.P_XIC] - par[kn.P_DX0])
+        rx[r, X_RGO] = par[kn.P_RIC] - par[kn.P_DR0]
+        rx[r, X_EPI] = b.effective_modulus
+        rx[r, X_EPO] = b.effective_modulus
+        rxi, ryi = b.raceway_radii(True)
+        rxo, ryo = b.raceway_radii(False)
+        rx[r, X_RXI], rx[r, X_RYI], rx[r, X_RXO], rx[r, X_RYO] = rxi, ryi, rxo, ryo
+    return rx
+
+
+def bearing_rows(bearing, nrow: int) -> list:
+    """The single-row :class:`BallBearing` of every row of a bearing or bearing system."""
+    for attr in ("row_bearings", "bearings"):
+        v = getattr(bearing, attr, None)
+        if v is not None:
+            v = v() if callable(v) else v
+            v = list(v)
+            if len(v) == nrow:
+                return v
+    rows_attr = getattr(bearing, "rows", None)
+    if rows_attr is not None and not callable(rows_attr):
+        out = []
+        for r in rows_attr:
+            out.append(getattr(r, "bearing", r))
+        if len(out) == nrow and all(hasattr(o, "contact") for o in out):
+            return out
+    if hasattr(bearing, "contact"):
+        return [bearing] * nrow
+    raise InputError("bearing", "cannot find the single-row bearings of this arrangement",
+                     "give a BallBearing or an arrangement exposing its rows")
+
+
+def steel_cage_constant(ball_diameter: float, ball_material, cage_modulus: float = 2.06e11,
+                        cage_poisson: float = 0.3) -> float:
+    """Hertz constant K [N/m^1.5] of a ball on a flat cage surface, Q = K δ^1.5.
+
+    Sphere on a flat (Johnson 1985 eq. 4.22): Q = (4/3) E* R^½ δ^(3/2) with R = D/2 and
+    1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂.  The conformal cylindrical pocket is stiffer; this
+    is a lower bound chosen so that the pocket contact is not the stiffest time scale.
+    """
+    e_star = 1.0 / ((1 - ball_material.poisson_ratio**2) / ball_material.youngs_modulus
+                    + (1 - cage_poisson**2) / cage_modulus)
+    return 4.0 / 3.0 * e_star * math.sqrt(0.5 * ball_diameter)
+
+
+def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, float] | None = None,
+                gravity=(0.0, 0.0, 0.0), damping_alpha: float = 0.0, traction: str = "none",
+                mu0: float = 0.06, s0: float = 0.005, n_slices: int = 8, load_point: float = 0.0,
+                speed: tuple[float, float, float] = (0.0, 0.0, 0.0), ring_fixed: bool = False,
+                cage: bool = True, cage_mass: float | None = None, pocket_clearance: float | None = None,
+                cage_mu: float = 0.06, guidance: str = "balls", land_clearance: float = 2e-4,
+                cage_stiffness: float | None = None, v_ref: float = 1e-3) -> Model:
+    """Build the kernel arrays of a bearing (single row or an arrangement with ``rows_parameters``).
+
+    Parameters (SI): ring_mass [kg]; ring_inertia (transverse, polar) [kg m²] (default:
+    a thin ring of the inner-race radius); gravity [m/s²]; damping_alpha Hunt–Crossley α
+    [s/m]; traction "none" | "coulomb" | "slices"; mu0, s0 of the Coulomb stand-in;
+    load_point axial position of the load point [m]; speed (Ω₀, Ω₁, ramp) [rad/s, s];
+    cage options: mass [kg] (default 10 % of the ball set), pocket clearance [m]
+    (default 2 % of D), friction μ = 0.06 (seed 001 §3.2), guidance "balls",
+    "outer-land" or "inner-land" with a radial land clearance [m].
+    """
+    from ..statics.jones_harris import rows_of
+
+    if traction not in TRACTION_MODELS:
+        raise InputError("traction", f"unknown traction model {traction!r}", "use none, coulomb or slices")
+    if guidance not in GUIDANCE:
+        raise InputError("cage.guidance", f"unknown guidance {guidance!r}", "use balls, outer-land or inner-land")
+    if not ring_mass > 0:
+        raise InputError("inner_ring.mass", f"must be positive, got {ring_mass!r} kg", 'e.g. "3 kg"')
+    rows = np.ascontiguousarray(rows_of(bearing), dtype=float)
+    nrow = rows.shape[0]
+    rowx = row_extras(bearing, rows)
+    brs = bearing_rows(bearing, nrow)
+    ball_row, ball_psi = [], []
+    for r in range(nrow):
+        z = int(rows[r, kn.P_Z])
+        for j in range(z):
+            ball_row.append(r)
+            ball_psi.append(rows[r, kn.P_PSI0] + 2 * math.pi * j / z)
+    ball_row = np.array(ball_row, dtype=np.int64)
+    gp = np.zeros(NGP)
+    gp[G_MR] = ring_mass
+    rin = 0.5 * (rows[0, kn.P_DM] - rows[0, kn.P_D])
+    if ring_inertia is None:
+        it, ip = 0.5 * ring_mass * rin**2, ring_mass * rin**2
+    else:
+        it, ip = ring_inertia
+    if not (it > 0 and ip > 0):
+        raise InputError("inner_ring.inertia", "moments of inertia must be positive", 'e.g. "0.01 kg*m^2"')
+    gp[G_ITR], gp[G_IPR] = it, ip
+    gp[G_GX:G_GX + 3] = gravity
+    gp[G_ALPHA] = damping_alpha
+    gp[G_TRAC] = TRACTION_MODELS[traction]
+    gp[G_MU0], gp[G_S0], gp[G_NSL] = mu0, s0, n_slices
+    gp[G_XL] = load_point
+    gp[G_W0], gp[G_W1], gp[G_TRAMP] = speed
+    gp[G_RING_FIXED] = 1.0 if ring_fixed else 0.0
+    gp[G_VREF] = v_ref
+    gp[G_CAGE_ON] = 1.0 if cage else 0.0
+    cp = np.zeros((nrow, NCP))
+    b0 = 0
+    d0 = brs[0].ball_diameter
+    clr = 0.02 * d0 if pocket_clearance is None else pocket_clearance
+    for r in range(nrow):
+        b = brs[r]
+        par = rows[r]
+        z = int(par[kn.P_Z])
+        d = par[kn.P_D]
+        mball = par[kn.P_MASS]
+        mc = 0.1 * z * mball if cage_mass is None else cage_mass
+        rp = 0.5 * par[kn.P_DM]
+        cp[r, C_MASS] = mc
+        cp[r, C_IP] = mc * rp**2
+        cp[r, C_IT] = 0.5 * mc * rp**2
+        # pocket centres at the axial position of the ball centres in the centred position
+        s = par[kn.P_SIGN]
+        lo = par[kn.P_RO]
+        a0 = math.atan2(par[kn.P_DX0], par[kn.P_DR0]) if (par[kn.P_DX0] != 0 or par[kn.P_DR0] != 0) else 0.0
+        cp[r, C_XP] = rowx[r, X_XGO] + s * lo * math.sin(a0)
+        cp[r, C_RP] = rowx[r, X_RGO] + lo * math.cos(a0)
+        cp[r, C_CLR] = clr
+        cp[r, C_KC] = steel_cage_constant(d, b.ball_material) if cage_stiffness is None else cage_stiffness
+        cp[r, C_MU] = cage_mu
+        cp[r, C_GUIDE] = GUIDANCE[guidance]
+        if guidance == "outer-land":
+            cp[r, C_RLAND] = rp + 0.3 * d
+        elif guidance == "inner-land":
+            cp[r, C_RLAND] = rp - 0.3 * d
+        cp[r, C_CLAND] = land_clearance
+        cp[r, C_KLAND] = cp[r, C_KC]
+        cp[r, C_MULAND] = cage_mu
+        cp[r, C_PSI0] = par[kn.P_PSI0]
+        cp[r, C_Z] = z
+        cp[r, C_BALL0] = b0
+        b0 += z
+    pts = pocket_points(d0, clr)
+    return Model(rows=rows, rowx=rowx, ball_row=ball_row, ball_psi=np.array(ball_psi), gp=gp, cp=cp, pts=pts,
+                 names={"bearing": getattr(bearing, "name", "bearing")})
+
+
+def initial_state(model: Model, static=None, speed: float | None = None) -> np.ndarray:
+    """State vector near steady state from a quasi-static solution.
+
+    ``static`` is a :class:`bearingsim.statics.jones_harris.StaticResult` of the same
+    bearing: ring displacement q, per-ball centres (x1_m, x2_m from the outer groove
+    centre in the ball's axial–radial plane), Jones orbital speed ω_m, spin speed ω_R
+    and pitch angle β.  The ball's absolute angular velocity is ω_m e_x plus the Jones
+    spin ω_R (s cos β e_x − sin β e_r) (Jones 1960; statics kernel docstring: spin
+    vector ω_R (cos β, −sin β) in the local (ξ, r) plane, relative to the cage).  The
+    cage is centred and turns at the mean orbital speed.  Without ``static`` the balls sit
+    on the line of the groove centres of the centred position, at rest.
+    """
+    y = np.zeros(model.n_state)
+    rows = model.rows
+    omega = model.gp[G_W0] if speed is None else speed
+    if static is not None:
+        y[0:5] = static.displacement
+    for k in range(model.n_balls):
+        r = model.ball_row[k]
+        par = rows[r]
+        s = par[kn.P_SIGN]
+        psi = model.ball_psi[k]
+        if static is not None:
+            bt = static.balls
+            x1, x2 = bt["x1_m"][k], bt["x2_m"][k]
+            wm = bt["orbital_speed_rad_s"][k] * (1.0 if omega >= 0 else -1.0)
+            wr = bt["spin_speed_rad_s"][k] * (1.0 if omega >= 0 else -1.0)
+            beta = bt["pitch_angle_rad"][k]
+            psi = bt["azimuth_rad"][k]
+        else:
+            a0 = math.atan2(par[kn.P_DX0], par[kn.P_DR0])
+            x1, x2 = par[kn.P_RO] * math.sin(a0), par[kn.P_RO] * math.cos(a0)
+            wm = wr = beta = 0.0
+        xg = model.rowx[r, X_XGO]
+        rg = model.rowx[r, X_RGO]
+        xb = xg + s * x1
+        rb = rg + x2
+        cps, sps = math.cos(psi), math.sin(psi)
+        o = N_RING + N_BALL * k
+        y[o:o + 3] = (xb, rb * cps, rb * sps)
+        y[o + 3:o + 6] = (0.0, -wm * rb * sps, wm * rb * cps)
+        y[o + 6] = wm + wr * s * math.cos(beta)
+        y[o + 7] = -wr * math.sin(beta) * cps
+        y[o + 8] = -wr * math.sin(beta) * sps
+    for c in range(model.n_cages):
+        o = model.cage_offset + N_CAGE * c
+        cp = model.cp[c]
+        b0, z = int(cp[C_BALL0]), int(cp[C_Z])
+        wm = 0.0
+        if static is not None:
+            wm = float(np.mean(static.balls["orbital_speed_rad_s"][b0:b0 + z])) * (1.0 if omega >= 0 else -1.0)
+        y[o + 9] = wm
+    return y

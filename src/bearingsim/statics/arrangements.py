@@ -1,0 +1,525 @@
+"""Bearing sets and double-row units on a rigid shaft and a rigid housing.
+
+A :class:`BearingSystem` is a list of single-row angular contact (or deep-groove) rows,
+each with its axial position, its orientation and an axial preload offset, sharing one
+inner ring (the shaft) and one outer ring (the housing).  The quasi-static model is the
+Jones–Harris model of :mod:`bearingsim.statics._kernels` applied to every row at once
+(Harris & Kotzalas 2007 vol. 2 ch. 3 "bearing systems"; seed 000 eq. 13 summed over rows):
+
+* row plane of row k at axial position x_k, orientation s_k = ±1 (−1 mirrors the contact
+  angle; in a back-to-back (DB, "O") pair the row at −L/2 has s = +1 and the row at +L/2
+  has s = −1 so that the lines of action diverge outwards; face-to-face (DF, "X") is the
+  opposite; tandem (DT) has both rows s = +1),
+* axial offset e_k of the inner groove centres in the row's local axial direction
+  (positive = interference): a preload applied by clamping the rings of an opposed set
+  is an offset e in every row,
+* loads (Fa, Fr_y, Fr_z, M_y, M_z) [N, N·m] on the inner ring, acting at the system's
+  ``load_point`` (axial position [m] measured from the system centre).  The kernels place
+  the origin at the load point, so the displacements and the 5×5 stiffness of a
+  :class:`~bearingsim.statics.jones_harris.StaticResult` refer to the load point;
+  :func:`row_results` gives the displacements at each row plane.
+
+Preload given as a force F₀ [N] is converted to the offset e by solving, at rest and
+without external load, "axial load carried by the rows of orientation +1 = F₀" (brentq on e;
+for a symmetric pair this is the single-row thrust relation, seed 000 eqs. 3–5).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..errors import InputError
+from ..geometry import BallBearing
+from . import _kernels as kn
+
+ARRANGEMENTS = {
+    # name: orientation of the row at −L/2, orientation of the row at +L/2
+    "DB": (1.0, -1.0),
+    "DF": (-1.0, 1.0),
+    "DT": (1.0, 1.0),
+}
+#: maximum contact pressure [Pa] above which a preload is rejected as unrealistic.  ISO 76
+#: limits the static pressure of ball bearings to 4.2 GPa; 5 GPa is well beyond any preload.
+MAX_PRELOAD_PRESSURE = 5.0e9
+
+
+@dataclass(frozen=True)
+class Row:
+    """One row of a bearing system.
+
+    Parameters
+    ----------
+    bearing : BallBearing  the single-row geometry
+    position : float  [m]  axial position of the row plane from the system centre
+    orientation : float  +1 or −1 (−1 mirrors the contact angle)
+    axial_offset : float  [m]  preload offset e of the inner groove centres (local axial direction)
+    first_ball_azimuth : float  [rad]
+    """
+
+    bearing: BallBearing
+    position: float = 0.0
+    orientation: float = 1.0
+    axial_offset: float = 0.0
+    first_ball_azimuth: float = 0.0
+
+    def __post_init__(self):
+        if not isinstance(self.bearing, BallBearing):
+            raise InputError("rows.bearing", f"expected a single-row bearing, got {type(self.bearing).__name__}",
+                             "give a catalogue name or a single-row TOML file for every row")
+        if self.orientation not in (1.0, -1.0, 1, -1):
+            raise InputError("rows.orientation", f"must be +1 or -1, got {self.orientation!r}",
+                             "+1: contact angle as defined, -1: mirrored")
+        for name in ("position", "axial_offset", "first_ball_azimuth"):
+            v = getattr(self, name)
+            if not math.isfinite(v):
+                raise InputError(f"rows.{name}", f"must be finite, got {v!r}", "give a finite value")
+
+
+@dataclass(frozen=True)
+class BearingSystem:
+    """Rows of balls on one rigid shaft and one rigid housing (a bearing set or a double-row unit).
+
+    Parameters
+    ----------
+    name : str
+    rows : tuple[Row, ...]
+    load_point : float  [m]  axial position where the external loads act, from the system centre
+    arrangement : str  ``"DB"``, ``"DF"``, ``"DT"`` or ``"custom"``
+    preload : float  [N]  preload force per row the offsets were computed for (0 when given as offsets)
+    dynamic_load_rating : float  [N]  basic dynamic load rating C of the whole unit (0 when unknown)
+    notes : dict  source of every number
+    """
+
+    name: str
+    rows: tuple
+    load_point: float = 0.0
+    arrangement: str = "custom"
+    preload: float = 0.0
+    dynamic_load_rating: float = 0.0
+    notes: dict = field(default_factory=dict, compare=False, hash=False)
+
+    kind = "bearing_system"
+
+    def __post_init__(self):
+        rows = tuple(self.rows)
+        object.__setattr__(self, "rows", rows)
+        if len(rows) < 1:
+            raise InputError("rows", "a bearing system needs at least one row", "add [[rows]] tables")
+        if not math.isfinite(self.load_point):
+            raise InputError("load_point", f"must be finite, got {self.load_point!r}", 'e.g. "10.4 mm"')
+        # rows must not overlap: two ball sets closer than the larger ball diameter would intersect
+        for i in range(len(rows)):
+            for j in range(i + 1, len(rows)):
+                gap = abs(rows[i].position - rows[j].position)
+                need = max(rows[i].bearing.ball_diameter, rows[j].bearing.ball_diameter)
+                if gap < need:
+                    raise InputError("rows", f"rows {i} and {j} overlap: their planes are {gap * 1e3:.4g} mm apart, "
+                                     f"less than the ball diameter {need * 1e3:.4g} mm",
+                                     "give row positions (or row_spacing) at least one ball diameter apart")
+        self._check_preload_pressure()
+
+    # ---- attributes shared with BallBearing (used by the CLI and by jones_harris) --------
+    @property
+    def pitch_diameter(self) -> float:
+        return self.rows[0].bearing.pitch_diameter
+
+    @property
+    def ball_diameter(self) -> float:
+        return self.rows[0].bearing.ball_diameter
+
+    @property
+    def ball_count(self) -> int:
+        return int(sum(r.bearing.ball_count for r in self.rows))
+
+    @property
+    def free_contact_angle(self) -> float:
+        return self.rows[0].bearing.free_contact_angle
+
+    def summary(self) -> dict:
+        """Main data in SI, for printing and JSON."""
+        return {
+            "name": self.name, "type": self.kind, "arrangement": self.arrangement,
+            "load_point_m": self.load_point, "preload_N": self.preload,
+            "dynamic_load_rating_N": self.dynamic_load_rating,
+            "rows": [{"bearing": r.bearing.name, "position_m": r.position, "orientation": int(r.orientation),
+                      "axial_offset_m": r.axial_offset, **r.bearing.summary()} for r in self.rows],
+        }
+
+    # ---- kernel interface ----------------------------------------------------------------
+    def rows_parameters(self) -> np.ndarray:
+        """Kernel row parameters (nrow, NPAR); the kernel origin is the load point."""
+        return np.array([r.bearing.row_parameters(r.position - self.load_point, float(r.orientation),
+                                                  r.axial_offset, r.first_ball_azimuth) for r in self.rows])
+
+    @cached_property
+    def _k0(self) -> np.ndarray:
+        """Stiffness at rest without external load (5×5) [SI]."""
+        rows = self.rows_parameters()
+        zmax = int(rows[:, kn.P_Z].max())
+        q = np.zeros(5)
+        res = np.zeros(5)
+        kmat = np.zeros((5, 5))
+        kn.ring_assemble(rows, q, 0.0, kn.CONTROL_OUTER, np.zeros((len(rows), zmax), dtype=np.int64),
+                         np.zeros((len(rows), zmax, 2)), np.zeros(5), res, kmat,
+                         np.zeros((len(rows), zmax, 12)), 1e-12, 60)
+        return kmat
+
+    def initial_guess(self, loads) -> np.ndarray:
+        """Start of the ring Newton [m, rad]: linear estimate with the unloaded stiffness when the set is
+        preloaded, else the thrust-model deflection of the rows that face the axial load."""
+        q = np.zeros(5)
+        k0 = self._k0
+        f = loads.as_array()
+        if np.all(np.isfinite(k0)) and np.linalg.cond(k0) < 1e12 and np.all(np.diag(k0) > 0):
+            q = np.linalg.solve(k0, f)
+            amax = max(r.bearing.total_curvature_distance for r in self.rows)
+            dm = self.pitch_diameter
+            scale = max(np.max(np.abs(q[:3])), np.max(np.abs(q[3:])) * 0.5 * dm)
+            if scale > 0.02 * amax:
+                q *= 0.02 * amax / scale
+            return q
+        from .axial import solve_thrust
+
+        sgn = 1.0 if loads.fa >= 0 else -1.0
+        facing = [r for r in self.rows if r.orientation == sgn] or list(self.rows)
+        b = facing[0].bearing
+        fr = math.hypot(loads.fr_y, loads.fr_z)
+        mr = math.hypot(loads.m_y, loads.m_z) / (0.5 * b.pitch_diameter)
+        fa_eq = (abs(loads.fa) + 0.5 * (fr + mr) * math.tan(max(b.free_contact_angle, 0.1))) / len(facing) + 1.0
+        if b.kind == "angular_contact":
+            q[0] = sgn * (solve_thrust(b, fa_eq).axial_deflection - facing[0].axial_offset)
+        return q
+
+    # ---- preload ---------------------------------------------------------------------------
+    def row_axial_loads(self, q: np.ndarray, speed: float = 0.0) -> np.ndarray:
+        """Axial load carried by each row [N] (positive: compressing the row in its own direction)."""
+        return np.array([rl[0] * r.orientation for rl, r in zip(_row_forces(self, q, speed), self.rows)])
+
+    def rest_preload(self) -> np.ndarray:
+        """Axial load of every row at rest without external load [N] (the preload)."""
+        from .jones_harris import Loads, solve
+
+        res = solve(self, Loads(), 0.0)
+        if not res.converged:
+            return np.full(len(self.rows), np.nan)
+        return self.row_axial_loads(res.displacement)
+
+    def _check_preload_pressure(self):
+        if not any(r.axial_offset > 0 for r in self.rows):
+            return
+        # worst case: an offset taken entirely by one row's balls (q = 0 start of the set)
+        for i, r in enumerate(self.rows):
+            if r.axial_offset <= 0:
+                continue
+            b = r.bearing
+            par = b.row_parameters(0.0, 1.0, r.axial_offset)
+            a1, a2 = par[kn.P_DX0] + par[kn.P_AXOFF], par[kn.P_DR0]
+            dn = math.hypot(a1, a2) - (par[kn.P_RI] + par[kn.P_RO])
+            if dn <= 0:
+                continue
+            ki, ko, kn_ = b.contact_constants
+            qball = kn_ * dn**1.5
+            p = max(par[kn.P_CPI], par[kn.P_CPO]) * qball ** (1.0 / 3.0)
+            if p > MAX_PRELOAD_PRESSURE:
+                raise InputError("preload", f"row {i}: an axial offset of {r.axial_offset * 1e6:.4g} µm makes the "
+                                 f"balls penetrate the raceways by {dn * 1e6:.4g} µm (contact pressure "
+                                 f"{p / 1e9:.3g} GPa, beyond any realistic preload; ISO 76 allows 4.2 GPa static)",
+                                 "give a smaller preload or preload_offset (typically a few µm to tens of µm)")
+
+
+def _row_forces(system, q, speed=0.0, result=None):
+    """Per row: the load the row carries (Fa, Fy, Fz, My, Mz) about the kernel origin [N, N·m]
+    (minus the sum of its ball forces on the inner ring), from one kernel pass over the row's balls at q."""
+    rows = system.rows_parameters() if hasattr(system, "rows_parameters") else system.row_parameters()[None, :]
+    out = []
+    for k in range(rows.shape[0]):
+        par = rows[k:k + 1]
+        z = int(par[0, kn.P_Z])
+        lam = np.zeros((1, z), dtype=np.int64)
+        xb = np.zeros((1, z, 2))
+        if result is not None:
+            sel = result.balls["row"] == k
+            lam[0, :] = result.balls["inner_control"][sel]
+            xb[0, :, 0] = result.balls["x1_m"][sel]
+            xb[0, :, 1] = result.balls["x2_m"][sel]
+        res = np.zeros(5)
+        control = kn.CONTROL_INNER if (result is not None and result.control == "inner") else kn.CONTROL_OUTER
+        if result is not None and result.control == "auto":
+            control = kn.CONTROL_AUTO
+        kn.ring_assemble(par, np.asarray(q, dtype=float), float(abs(speed)), control, lam, xb, np.zeros(5), res,
+                         np.zeros((5, 5)), np.zeros((1, z, 12)), 1e-12, 60)
+        out.append(-res)
+    return out
+
+
+def _preload_offset(bearing_rows, force: float) -> float:
+    """Offset e [m] (equal in every row) giving the preload ``force`` [N] at rest (brentq on e)."""
+    if not (math.isfinite(force) and force > 0):
+        raise InputError("preload", f"must be a positive force, got {force!r} N", 'e.g. preload = "5400 N"')
+    orient = {r.orientation for r in bearing_rows}
+    if len(orient) < 2:
+        raise InputError("preload", "all rows face the same way (tandem): they cannot be preloaded against "
+                         "each other", "preload an opposed set (DB or DF) or give axial offsets per row")
+    from .jones_harris import Loads, solve
+
+    def carried(e):
+        sys_ = BearingSystem("preload", tuple(dataclasses.replace(r, axial_offset=e) for r in bearing_rows))
+        res = solve(sys_, Loads(), 0.0)
+        if not res.converged:
+            raise InputError("preload", f"no equilibrium at rest with an offset of {e * 1e6:.4g} µm",
+                             "check the row geometry and the preload")
+        fa = sys_.row_axial_loads(res.displacement)
+        return float(sum(f for f, r in zip(fa, bearing_rows) if r.orientation > 0))
+
+    # bracket: from contact at the clearance to the offset that reaches MAX_PRELOAD_PRESSURE in one row
+    lo, hi = 0.0, math.inf
+    for r in bearing_rows:
+        lo_r, hi_r = _offset_limits(r.bearing)
+        lo = max(lo, lo_r)
+        hi = min(hi, hi_r)
+    hi *= 1.0 - 1e-9
+    f_hi = carried(hi)
+    if f_hi < force:
+        raise InputError("preload", f"{force:.4g} N is beyond any realistic preload for this row geometry "
+                         f"(it would exceed {MAX_PRELOAD_PRESSURE / 1e9:.3g} GPa contact pressure; "
+                         f"the limit is about {f_hi:.4g} N)", "give a smaller preload")
+    return brentq(lambda e: carried(e) - force, lo, hi, xtol=1e-15, rtol=1e-12)
+
+
+def _offset_limits(b: BallBearing) -> tuple[float, float]:
+    """(offset at first contact, offset reaching MAX_PRELOAD_PRESSURE) of one row at q = 0 [m]."""
+    par = b.row_parameters()
+    rsum = par[kn.P_RI] + par[kn.P_RO]
+    dx0, dr0 = par[kn.P_DX0], par[kn.P_DR0]
+    _, _, kn_ = b.contact_constants
+    qmax = (MAX_PRELOAD_PRESSURE / max(par[kn.P_CPI], par[kn.P_CPO])) ** 3
+    dn = (qmax / kn_) ** (2.0 / 3.0)
+    lo = math.sqrt(max(rsum**2 - dr0**2, 0.0)) - dx0
+    hi = math.sqrt((rsum + dn) ** 2 - dr0**2) - dx0
+    return max(lo, 0.0), hi
+
+
+def make_system(row_bearing: BallBearing, arrangement: str = "DB", row_spacing: float | None = None,
+                preload: float | None = None, preload_offset: float | None = None, load_point: float = 0.0,
+                name: str | None = None, dynamic_load_rating: float | None = None,
+                notes: dict | None = None) -> BearingSystem:
+    """Two identical rows in a DB, DF or DT arrangement (a spindle pair or a double-row unit).
+
+    Parameters
+    ----------
+    row_bearing : BallBearing  geometry of one row
+    arrangement : ``"DB"`` (back-to-back, O), ``"DF"`` (face-to-face, X), ``"DT"`` (tandem)
+    row_spacing : float  [m]  distance between the row planes (default: the bearing width, as for a
+        pair of single bearings mounted side by side)
+    preload : float  [N]  preload force per row at rest, or
+    preload_offset : float  [m]  total axial interference of the set, shared equally by the two rows
+    load_point : float  [m]  axial position of the load from the centre between the rows
+    dynamic_load_rating : float  [N]  of the unit; default 2^0.7 C of one row (ISO 281:2007 eq. for a
+        bearing with i = 2 rows, C = i^0.7 C₁) when the row has a rating
+    """
+    arr = str(arrangement).upper()
+    if arr not in ARRANGEMENTS:
+        raise InputError("arrangement", f"unknown arrangement {arrangement!r}", "use DB, DF or DT (or [[rows]])")
+    if row_spacing is None:
+        row_spacing = row_bearing.width
+    if not (math.isfinite(row_spacing) and row_spacing > 0):
+        raise InputError("row_spacing", f"must be positive, got {row_spacing!r} m",
+                         'e.g. row_spacing = "18.2 mm" (needed when the row has no width)')
+    if preload is not None and preload_offset is not None:
+        raise InputError("preload", "both preload and preload_offset are given", "give only one of them")
+    s1, s2 = ARRANGEMENTS[arr]
+    rows = [Row(row_bearing, -0.5 * row_spacing, s1), Row(row_bearing, 0.5 * row_spacing, s2)]
+    e = 0.0
+    if preload_offset is not None:
+        if not math.isfinite(preload_offset):
+            raise InputError("preload_offset", f"must be finite, got {preload_offset!r}", 'e.g. "10 um"')
+        if arr == "DT" and preload_offset != 0:
+            raise InputError("preload_offset", "a tandem pair cannot be preloaded against itself",
+                             "use DB or DF, or give [[rows]] with axial offsets")
+        e = 0.5 * preload_offset
+    rows = [dataclasses.replace(r, axial_offset=e) for r in rows]
+    pl = 0.0
+    if preload is not None and preload != 0:
+        if arr == "DT":
+            raise InputError("preload", "a tandem pair cannot be preloaded against itself",
+                             "use DB or DF, or give [[rows]] with axial offsets")
+        e = _preload_offset(rows, preload)
+        rows = [dataclasses.replace(r, axial_offset=e) for r in rows]
+        pl = preload
+    if dynamic_load_rating is None:
+        dynamic_load_rating = 2.0**0.7 * row_bearing.dynamic_load_rating
+    return BearingSystem(name=name or f"{row_bearing.name} {arr}", rows=tuple(rows), load_point=load_point,
+                         arrangement=arr, preload=pl, dynamic_load_rating=dynamic_load_rating, notes=notes or {})
+
+
+#: double-row unit: the same object as a set of two rows
+DoubleRow = make_system
+
+
+# ---- results ---------------------------------------------------------------------------------
+def row_results(result) -> list[dict]:
+    """Per-row results of a solved system (SI): loads carried, displacements at the row plane, balls.
+
+    Each dict: ``row``, ``bearing``, ``position_m`` (from the system centre), ``orientation``,
+    ``axial_offset_m``, ``loads`` (fa_N, fr_y_N, fr_z_N, m_y_N_m, m_z_N_m: the load the row carries,
+    moments about the row plane; fa positive along +x), ``axial_load_N`` (positive when the row is
+    compressed in its own direction), ``displacement`` (axial, y, z at the row plane, tilts),
+    ``loaded_balls``, ``lifted_off`` (True when no ball of the row carries load), and ``balls``.
+    """
+    system = result.bearing
+    if isinstance(system, BearingSystem):
+        rows = system.rows
+        x0 = system.load_point
+    else:
+        rows = (Row(system),)
+        x0 = 0.0
+    q = np.asarray(result.displacement, dtype=float)
+    forces = _row_forces(system, q, result.speed, result)
+    out = []
+    b = result.balls
+    for k, (row, f) in enumerate(zip(rows, forces)):
+        xk = row.position - x0  # row plane from the kernel origin (the load point)
+        sel = b["row"] == k
+        balls = [{key: (int(v[j]) if key in ("row", "inner_control") else float(v[j])) for key, v in b.items()}
+                 for j in np.nonzero(sel)[0]]
+        # at speed the outer contacts stay loaded by the centrifugal force: a row lifts off when no
+        # ball touches the inner raceway
+        nloaded = int(np.sum(b["inner_load_N"][sel] > 0))
+        out.append({
+            "row": k,
+            "bearing": row.bearing.name,
+            "position_m": float(row.position),
+            "orientation": int(row.orientation),
+            "axial_offset_m": float(row.axial_offset),
+            "loads": {"fa_N": float(f[0]), "fr_y_N": float(f[1]), "fr_z_N": float(f[2]),
+                      "m_y_N_m": float(f[3] + xk * f[2]), "m_z_N_m": float(f[4] - xk * f[1])},
+            "axial_load_N": float(f[0] * row.orientation),
+            "radial_load_N": float(math.hypot(f[1], f[2])),
+            "displacement": {"axial_m": float(q[0]), "y_m": float(q[1] + q[4] * xk), "z_m": float(q[2] - q[3] * xk),
+                             "gamma_y_rad": float(q[3]), "gamma_z_rad": float(q[4])},
+            "loaded_balls": nloaded,
+            "lifted_off": nloaded == 0,
+            "max_inner_pressure_Pa": float(np.max(b["inner_max_pressure_Pa"][sel])) if sel.any() else 0.0,
+            "max_outer_pressure_Pa": float(np.max(b["outer_max_pressure_Pa"][sel])) if sel.any() else 0.0,
+            "balls": balls,
+        })
+    return out
+
+
+# ---- TOML ------------------------------------------------------------------------------------
+_KEYS = {"name", "description", "type", "arrangement", "row", "bearing", "rows", "row_spacing", "preload",
+         "preload_offset", "load_point", "dynamic_load_rating", "sources", "clearance"}
+_ROW_KEYS = {"bearing", "position", "orientation", "axial_offset", "first_ball_azimuth"}
+
+
+def _row_bearing(spec, field_name: str) -> BallBearing:
+    from .. import io
+
+    if isinstance(spec, dict):
+        b = io.bearing_from_dict(spec)
+    elif isinstance(spec, str):
+        b = io.load_bearing(spec)
+    else:
+        raise InputError(field_name, f"expected a catalogue name, a path or a table, got {spec!r}",
+                         'e.g. row = "hub-seed001-row"')
+    if not isinstance(b, BallBearing):
+        raise InputError(field_name, "a row must be a single-row bearing", "refer to a single-row entry")
+    return b
+
+
+def arrangement_from_dict(data: dict) -> BearingSystem:
+    """Build a :class:`BearingSystem` from a TOML table (units parsed here).
+
+    Two forms::
+
+        arrangement = "DB"            # DB, DF, DT
+        row = "skf-7011-cdga-hc"      # catalogue name, TOML path, or an inline table
+        row_spacing = "18 mm"         # default: the row bearing's width
+        preload = "150 N"             # or preload_offset = "8 um" (total of the set)
+        load_point = "0 mm"
+
+    or explicit rows::
+
+        [[rows]]
+        bearing = "hub-seed001-row"
+        position = "-9.1 mm"
+        orientation = 1
+        axial_offset = "10 um"
+    """
+    from ..units import parse_quantity
+
+    unknown = sorted(set(data) - _KEYS)
+    if unknown:
+        raise InputError(unknown[0], "unknown key in arrangement file", f"known keys: {', '.join(sorted(_KEYS))}")
+    name = str(data.get("name", "bearing system"))
+    notes = dict(data.get("sources", {}))
+    if "description" in data:
+        notes["description"] = data["description"]
+    load_point = parse_quantity(data["load_point"], "length", "load_point") if "load_point" in data else 0.0
+    rating = parse_quantity(data["dynamic_load_rating"], "force", "dynamic_load_rating") \
+        if "dynamic_load_rating" in data else None
+    preload = parse_quantity(data["preload"], "force", "preload") if "preload" in data else None
+    offset = parse_quantity(data["preload_offset"], "length", "preload_offset") if "preload_offset" in data else None
+    clearance_change = None
+    if "clearance" in data:
+        from . import clearance
+
+        clearance_change = clearance.operating_clearance_from_dict(data["clearance"], "clearance")
+    if "rows" in data:
+        if "arrangement" in data and str(data["arrangement"]).lower() != "custom":
+            raise InputError("arrangement", "give either arrangement (with row) or [[rows]], not both",
+                             "remove one of them")
+        rl = data["rows"]
+        if not isinstance(rl, list) or not rl:
+            raise InputError("rows", "expected a list of [[rows]] tables", "add [[rows]] tables")
+        rows = []
+        for i, t in enumerate(rl):
+            f = f"rows[{i}]"
+            if not isinstance(t, dict):
+                raise InputError(f, "expected a table", "write [[rows]] tables")
+            bad = sorted(set(t) - _ROW_KEYS)
+            if bad:
+                raise InputError(f"{f}.{bad[0]}", "unknown key", f"known keys: {', '.join(sorted(_ROW_KEYS))}")
+            if "bearing" not in t:
+                raise InputError(f"{f}.bearing", "missing", "give the row's bearing (catalogue name or path)")
+            if "position" not in t:
+                raise InputError(f"{f}.position", "missing", 'e.g. position = "-9.1 mm"')
+            o = t.get("orientation", 1)
+            if isinstance(o, str):
+                o = o.strip()
+                o = {"+1": 1, "1": 1, "-1": -1}.get(o, o)
+            if o not in (1, -1):
+                raise InputError(f"{f}.orientation", f"must be 1 or -1, got {o!r}", "orientation = 1 or -1")
+            rows.append(Row(_row_bearing(t["bearing"], f"{f}.bearing"),
+                            parse_quantity(t["position"], "length", f"{f}.position"), float(o),
+                            parse_quantity(t["axial_offset"], "length", f"{f}.axial_offset")
+                            if "axial_offset" in t else 0.0,
+                            parse_quantity(t["first_ball_azimuth"], "angle", f"{f}.first_ball_azimuth")
+                            if "first_ball_azimuth" in t else 0.0))
+        if offset is not None:
+            raise InputError("preload_offset", "with [[rows]] give axial_offset per row", "move it into the rows")
+        pl = 0.0
+        if preload is not None:
+            e = _preload_offset(rows, preload)
+            rows = [dataclasses.replace(r, axial_offset=e) for r in rows]
+            pl = preload
+        system = BearingSystem(name, tuple(rows), load_point, "custom", pl,
+                               rating if rating is not None else 0.0, notes)
+    else:
+        if "arrangement" not in data:
+            raise InputError("arrangement", "missing", 'give arrangement = "DB" with row = ..., or [[rows]]')
+        spec = data.get("row", data.get("bearing"))
+        if spec is None:
+            raise InputError("row", "missing", 'give the single-row bearing, e.g. row = "skf-7011-cdga-hc"')
+        b = _row_bearing(spec, "row")
+        spacing = parse_quantity(data["row_spacing"], "length", "row_spacing") if "row_spacing" in data else None
+        system = make_system(b, data["arrangement"], spacing, preload, offset, load_point, name, rating, notes)
+    if clearance_change is not None:
+        system = clearance_change.apply(system)
+    return system
