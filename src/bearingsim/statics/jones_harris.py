@@ -198,8 +198,8 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
                                            kmat, ballout, TOL_BALL, TOL_RING, MAXIT_BALL, MAXIT_RING,
                                            _scale(loads, rows))
     messages = {0: "converged", 1: "no equilibrium found within the iteration limit",
-                2: "singular stiffness: the bearing cannot carry this load (e.g. a radial load on a single "
-                   "angular contact row without enough axial load)"}
+                2: "singular stiffness: no ball carries load in some direction, the bearing cannot carry "
+                   "this load (e.g. an axial load that pulls a single angular contact row apart)"}
     msg = messages[int(status)]
     if status == 0 and not bconv:
         msg = "ring converged but a ball's equilibrium did not"
