@@ -143,7 +143,9 @@ def reproduce_spindle(
 def main() -> None:
     """Entry point of the ``bearingsim`` script: one clear line and exit 2 on bad input."""
     try:
-        app(standalone_mode=False)
+        rc = app(standalone_mode=False)
+        if isinstance(rc, int) and rc != 0:  # typer.Exit(code) comes back as a return value
+            sys.exit(rc)
     except InputError as exc:
         typer.echo(f"error: {exc}", err=True)
         sys.exit(2)

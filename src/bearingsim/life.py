@@ -13,8 +13,8 @@ ISO/TS 16281:2008 (Lundberg–Palmgren theory; Harris & Kotzalas 2007 vol. 2 ch.
   a calibration to the bearing's basic dynamic load rating C (given in the bearing file), so that the
   ISO 281 rating condition — radial load C with the Stribeck distribution of load-zone parameter
   ε = 0.5 — gives exactly 10^6 revolutions.  The Lundberg–Palmgren integrals J_r, J_1, J_2 for that
-  distribution are computed by quadrature (:func:`lp_integrals`; Harris & Kotzalas vol. 2 table 8.? gives
-  J_r(0.5) = 0.2288, J_1(0.5) = 0.5625, J_2(0.5) = 0.5925 for point contact).
+  distribution are computed by quadrature (:func:`lp_integrals`; Harris & Kotzalas 2007 vol. 2 ch. 8
+  tabulate J_r(0.5) = 0.2288 and J_1(0.5) = 0.5625 for point contact).
 * raceway lives L_i = (Q_ci/Q_ei)^3, L_o = (Q_co/Q_eo)^3; row and system lives combine with the
   Weibull exponent e = 10/9:  L = (Σ L_k^(−10/9))^(−9/10)  [10^6 revolutions].
 
