@@ -106,6 +106,15 @@ def _convert(text: str, si: str, field: str, dim: str | None = None, default: st
             mag = q.to("dimensionless").magnitude if hasattr(q, "to") else float(q)
         elif si == "rad" and q.dimensionless:
             mag = q.to("rad").magnitude
+        elif si in ("rad/s", "Hz"):
+            # pint treats the radian as dimensionless, so it cannot tell "50 Hz" (cycles per second)
+            # from "50 rad/s".  A rate written with an angle unit (rpm, rad/s, deg/s) converts as an
+            # angular speed; a bare reciprocal time (Hz, 1/s, 1/min) counts cycles.
+            cycles = all(name.endswith("hertz") or ureg.Quantity(1, name).dimensionality == {"[time]": 1}
+                         for name, _ in q.unit_items())
+            angular = not cycles
+            w = q.to("rad/s").magnitude if angular else 2.0 * math.pi * q.to("Hz").magnitude
+            mag = w if si == "rad/s" else w / (2.0 * math.pi)
         else:
             mag = q.to(si).magnitude
     except pint.errors.DimensionalityError:

@@ -199,3 +199,25 @@ def test_cli_bad_input_exits_2_with_one_line(args):
     assert p.returncode == 2, out
     assert "Traceback" not in out
     assert len(out.splitlines()) == 1, out
+
+
+def test_catalogue_218_matches_issue_2(b218):
+    """Issue 2: harris-218 is D = 22.23 mm, Z = 16, d_m = 125.3 mm, f_i = f_o = 0.5232, α₀ = 40°, steel."""
+    assert b218.ball_diameter == pytest.approx(22.23e-3, rel=1e-12)
+    assert b218.ball_count == 16
+    assert b218.pitch_diameter == pytest.approx(125.3e-3, rel=1e-12)
+    assert b218.inner_conformity == pytest.approx(0.5232) and b218.outer_conformity == pytest.approx(0.5232)
+    assert b218.contact_angle == pytest.approx(math.radians(40.0), rel=1e-12)
+    assert b218.ball_material.youngs_modulus == b218.ring_material.youngs_modulus
+    # Harris's A = B D = (0.5232 + 0.5232 − 1) · 22.23 mm = 1.0314 mm
+    assert b218.total_curvature_distance == pytest.approx(1.0314e-3, rel=1e-4)
+
+
+def test_catalogue_7011_boundary_dimensions_fit(b7011):
+    """SKF 7011: d = 55 mm, D = 90 mm, B = 18 mm, 15°, Si₃N₄ balls; the estimated ball set fits inside."""
+    assert b7011.bore == pytest.approx(55e-3) and b7011.outside_diameter == pytest.approx(90e-3)
+    assert b7011.contact_angle == pytest.approx(math.radians(15.0), rel=1e-12)
+    assert b7011.bore < b7011.pitch_diameter - b7011.ball_diameter
+    assert b7011.pitch_diameter + b7011.ball_diameter < b7011.outside_diameter
+    assert b7011.ball_material.youngs_modulus > b7011.ring_material.youngs_modulus  # ceramic balls
+    assert any("ESTIMATE" in str(v) for v in b7011.notes.values()), "the estimate must say it is one"

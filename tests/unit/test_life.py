@@ -7,22 +7,29 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
+from scipy.special import gamma
+
 from bearingsim import life
 from bearingsim.io import load_bearing
 from bearingsim.statics import arrangements as ar
 from bearingsim.statics import jones_harris as jh
 
 
+def _wallis(n):
+    """int_0^(pi/2) cos^n = (sqrt(pi)/2) Gamma((n+1)/2) / Gamma(n/2 + 1)."""
+    return math.sqrt(math.pi) / 2 * gamma((n + 1) / 2) / gamma(n / 2 + 1)
+
+
 def test_lp_integrals_closed_forms():
     jr, j1, j2 = life.lp_integrals(0.5)
-    # eps = 0.5: Q/Qmax = cos^3(psi/2); J_r = (1/2pi) int cos^3(psi/2) cos psi = 16/(21 pi) (closed form)
-    np.testing.assert_allclose(jr, 16.0 / (21.0 * math.pi), rtol=1e-10)
-    # J_1^3 = (1/2pi) int cos^9(psi/2) dpsi = (2/pi) * (8!!/9!!) = (2/pi)(128/315)
-    np.testing.assert_allclose(j1**3, 2.0 / math.pi * 128.0 / 315.0, rtol=1e-10)
+    # eps = 0.5: Q/Qmax = cos^1.5(psi) on |psi| < pi/2 (Stribeck); Wallis integrals
+    np.testing.assert_allclose(jr, _wallis(2.5) / math.pi, rtol=1e-9)
+    np.testing.assert_allclose(j1**3, _wallis(4.5) / math.pi, rtol=1e-9)
+    np.testing.assert_allclose(j2 ** (10 / 3), _wallis(5.0) / math.pi, rtol=1e-9)
     np.testing.assert_allclose([jr, j1], [0.2288, 0.5625], atol=6e-5,
                                err_msg="Harris & Kotzalas 2007 vol. 2 ch. 8, Lundberg-Palmgren integrals, eps = 0.5")
-    # J_2^(10/3) = (1/2pi) int cos^10(psi/2) = 2 * (1/pi) int_0^(pi/2) cos^10 = (9!!/10!!)
-    np.testing.assert_allclose(j2 ** (10 / 3), 945.0 / 3840.0, rtol=1e-10)
+    # eps = 1: Q/Qmax = cos^3(psi/2) over the full circle
+    np.testing.assert_allclose(life.lp_integrals(1.0)[0], 0.8 / math.pi, rtol=1e-9)
 
 
 def _stribeck_result(bearing, c, scale=1.0, z_rows=1):
@@ -31,7 +38,7 @@ def _stribeck_result(bearing, c, scale=1.0, z_rows=1):
     jr = life.lp_integrals(0.5)[0]
     qmax = scale * c / (z * jr * math.cos(bearing.free_contact_angle))
     psi = 2 * math.pi * np.arange(z) / z
-    q = qmax * np.maximum(0.5 * (1 + np.cos(psi)), 0.0) ** 1.5
+    q = qmax * np.maximum(np.cos(psi), 0.0) ** 1.5
     balls = {"row": np.repeat(np.arange(z_rows), z), "inner_load_N": np.tile(q, z_rows),
              "outer_load_N": np.tile(q, z_rows)}
     return balls

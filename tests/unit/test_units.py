@@ -98,3 +98,25 @@ def test_wrong_dimension_message_names_expected_unit():
         parse_quantity("5 kg", "length", "ball_diameter")
     # the fix suggests a unit of the right dimension
     assert "m" in info.value.fix
+
+
+def test_turns_per_second_speed():
+    assert parse_quantity("1 turn/s", "speed", "speed") == pytest.approx(2 * math.pi, rel=1e-12)
+
+
+def test_hertz_as_a_shaft_speed_is_revolutions_per_second():
+    try:
+        v = parse_quantity("50 Hz", "speed", "speed")
+    except InputError as exc:  # rejecting the ambiguous unit is an acceptable fix
+        assert exc.field == "speed" and exc.fix
+        return
+    assert v == pytest.approx(2 * math.pi * 50, rel=1e-12)
+
+
+def test_rpm_as_a_frequency_is_revolutions_per_second():
+    try:
+        v = parse_quantity("600 rpm", "frequency", "frequency")
+    except InputError as exc:
+        assert exc.field == "frequency" and exc.fix
+        return
+    assert v == pytest.approx(10.0, rel=1e-12)

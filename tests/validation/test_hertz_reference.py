@@ -130,7 +130,7 @@ def test_hamrock_brewe_contacts_of_catalogue_bearings(b7011, b218, bhub):
     for b in (b7011, b218, bhub):
         for inner in (True, False):
             rx, ry = b.raceway_radii(inner)
-            assert 3.0 <= ry / rx <= 35.0
+            assert 3.0 <= ry / rx <= 35.0, "Hamrock & Brewe 1983 fit range (1 <= kappa <= 10)"
             ce = hertz.point_contact_exact(500.0, rx, ry, b.effective_modulus)
             ch = hertz.point_contact_hamrock_brewe(500.0, rx, ry, b.effective_modulus)
             assert_allclose([ch.a, ch.b, ch.approach, ch.max_pressure, ch.stiffness_constant],

@@ -37,9 +37,17 @@ One function per published model:
   regimes; Hamrock, *Fundamentals of Fluid Film Lubrication*, NASA RP-1255 (1991)
   ch. 22).  These formulae are written from those books as recalled: a search did
   not return their text, so they are NOT confirmed here.  The boundaries of the map
-  are where the formulae of adjacent regimes give the same film: a contact is
-  elastic when ĥ_IE ≥ ĥ_IR; an elastic contact is piezoviscous when ĥ_PE ≥ ĥ_IE; a
-  rigid one when ĥ_PR ≥ ĥ_IR.
+  are lines where the formulae of two adjacent regimes give the same film.  Our
+  selection rule (not confirmed): IR when ĥ_IR ≥ ĥ_PR and ĥ_IR ≥ ĥ_IE; otherwise, when
+  ĥ_IE ≥ ĥ_IR (elasticity matters), PE if ĥ_PE ≥ ĥ_IE else IE; otherwise (rigid,
+  piezoviscous), PE if ĥ_PE ≤ ĥ_PR (elastic flattening thins the rigid-piezoviscous film)
+  else PR.  It puts steel ball bearings with mineral oil in PE and soft contacts in IE,
+  as the literature does, but its PR region is small and the IR/IE/PE boundaries are
+  equal-film lines only where they do not cross between the two branches.  CAVEAT: a
+  plain "largest ĥ" rule would put steel ball bearings in PR with these formulae, so a
+  coefficient recalled here or the rule may differ from Hamrock & Dowson's.  The film
+  thickness we report always uses the Hamrock–Dowson (1977) formulae; the regime only
+  selects the rolling-resistance formula (IR closed form vs Zhou & Hoeprich's PE fit).
 
 All inputs SI; lengths [m], speeds [m/s], loads [N], pressures [Pa], viscosity [Pa·s].
 """
@@ -57,13 +65,13 @@ IR, PR, IE, PE = 0, 1, 2, 3
 REGIME_NAMES = ("IR", "PR", "IE", "PE")
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ellipticity_hd(rx, ry):
     """k = 1.03 (R_y/R_x)^0.64  [-]  (Hamrock & Dowson 1977)."""
     return 1.03 * (ry / rx) ** 0.64
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def hamrock_dowson_central(u, q, eta0, alpha, e_eff, rx, ry):
     """Isothermal central film thickness h_c [m] (Hamrock & Dowson 1977).
 
@@ -79,7 +87,7 @@ def hamrock_dowson_central(u, q, eta0, alpha, e_eff, rx, ry):
     return rx * 2.69 * U**0.67 * G**0.53 * W ** (-0.067) * (1.0 - 0.61 * math.exp(-0.73 * k))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def hamrock_dowson_minimum(u, q, eta0, alpha, e_eff, rx, ry):
     """Isothermal minimum film thickness h_min [m] (Hamrock & Dowson 1977). Same arguments."""
     if u <= 0.0 or q <= 0.0:
@@ -91,7 +99,7 @@ def hamrock_dowson_minimum(u, q, eta0, alpha, e_eff, rx, ry):
     return rx * 3.63 * U**0.68 * G**0.49 * W ** (-0.073) * (1.0 - math.exp(-0.68 * k))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def zhu_cheng_thermal_factor(p_hertz, e_eff, beta_eta, u, k_oil, slide_roll):
     """Inlet-shear thermal reduction factor φ_T [-] (Zhou & Hoeprich 1991, eq. 21).
 
@@ -113,7 +121,7 @@ def zhu_cheng_thermal_factor(p_hertz, e_eff, beta_eta, u, k_oil, slide_roll):
     return phi
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def regime_films(U, G, W, rx, ry):
     """ĥ of the four regimes (IR, PR, IE, PE) and (g_V, g_E); see the module docstring."""
     k = ellipticity_hd(rx, ry)
@@ -128,15 +136,17 @@ def regime_films(U, G, W, rx, ry):
     return h_ir, h_pr, h_ie, h_pe, gv, ge
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def regime_code(U, G, W, rx, ry):
     """Regime code IR=0, PR=1, IE=2, PE=3 on the Hamrock–Dowson map (module docstring)."""
     if U <= 0.0:
         return PE
     h_ir, h_pr, h_ie, h_pe, gv, ge = regime_films(U, G, W, rx, ry)
+    if h_ir >= h_pr and h_ir >= h_ie:
+        return IR
     if h_ie >= h_ir:
         return PE if h_pe >= h_ie else IE
-    return PR if h_pr >= h_ir else IR
+    return PE if h_pe <= h_pr else PR
 
 
 # --------------------------------------------------------------------------- Python API

@@ -115,6 +115,14 @@ class Model:
     cp: np.ndarray  #: float[ncage, NCP]
     pts: np.ndarray  #: float[npt, 3] pocket-surface points in the pocket frame (t, r, x) [m]
     names: dict = field(default_factory=dict)
+    lubs: np.ndarray | None = None  #: float[2 nrow, L_SIZE] lubrication parameters (inner, outer per row)
+
+    def lub_array(self) -> np.ndarray:
+        if self.lubs is None:
+            from ..contact import slices
+
+            self.lubs = np.zeros((2 * self.rows.shape[0], slices.L_SIZE))
+        return self.lubs
 
     @property
     def n_balls(self) -> int:
@@ -141,26 +149,32 @@ class Model:
         return slice(o, o + N_CAGE)
 
 
-def pocket_points(ball_diameter: float, clearance: float, n_theta: int = 36, n_height: int = 9,
-                  height_fraction: float = 0.4) -> np.ndarray:
-    """Points on a cylindrical pocket surface in the pocket frame (t, r, x) [m].
+def pocket_points(ball_diameter: float, clearance: float, shape: str = "sphere", n_around: int = 24,
+                  n_levels: int = 13, opening_deg: float = 20.0) -> np.ndarray:
+    """Points on the pocket surface in the pocket frame (t, r, x) [m].
 
-    The pocket is a cylinder of radius D/2 + clearance whose axis is the cage's radial
-    direction; points at ``n_theta`` angles around the axis and ``n_height`` heights in
-    ±``height_fraction``·D/2 along it (seed 001 §3.2: the cage surface divided into
-    nodes that interfere geometrically with the ball).
+    seed 001 §3.2: the cage surface is divided into nodes that interfere geometrically
+    with the ball.  ``shape="sphere"`` (default): a spherical pocket of radius
+    D/2 + clearance, points on ``n_levels`` circles of polar angle from ``opening_deg``
+    to 180° − ``opening_deg`` about the cage's radial axis (the pocket is open toward the
+    raceways), ``n_around`` points per circle; it locates a ball-guided cage radially and
+    axially.  ``shape="cylinder"``: a cylindrical pocket with a radial axis (points at
+    ±0.4 D/2 along the axis); it does not locate the cage radially (use land guidance).
     """
     rp = 0.5 * ball_diameter + clearance
-    th = 2.0 * math.pi * np.arange(n_theta) / n_theta
-    hs = np.linspace(-height_fraction, height_fraction, n_height) * 0.5 * ball_diameter if n_height > 1 \
-        else np.zeros(1)
-    pts = np.empty((n_theta * n_height, 3))
-    k = 0
-    for h in hs:
-        for a in th:
-            pts[k] = (rp * math.cos(a), h, rp * math.sin(a))
-            k += 1
-    return pts
+    th = 2.0 * math.pi * np.arange(n_around) / n_around
+    pts = []
+    if shape == "sphere":
+        for pol in np.radians(np.linspace(opening_deg, 180.0 - opening_deg, n_levels)):
+            for a in th:
+                pts.append((rp * math.sin(pol) * math.cos(a), rp * math.cos(pol), rp * math.sin(pol) * math.sin(a)))
+    elif shape == "cylinder":
+        for h in np.linspace(-0.4, 0.4, n_levels) * 0.5 * ball_diameter:
+            for a in th:
+                pts.append((rp * math.cos(a), h, rp * math.sin(a)))
+    else:
+        raise InputError("cage.pocket_shape", f"unknown pocket shape {shape!r}", "use sphere or cylinder")
+    return np.array(pts)
 
 
 def row_extras(bearing, rows: np.ndarray) -> np.ndarray:
@@ -232,13 +246,16 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
                 speed: tuple[float, float, float] = (0.0, 0.0, 0.0), ring_fixed: bool = False,
                 cage: bool = True, cage_mass: float | None = None, pocket_clearance: float | None = None,
                 cage_mu: float = 0.06, guidance: str = "balls", land_clearance: float = 2e-4,
-                cage_stiffness: float | None = None, v_ref: float = 1e-3) -> Model:
+                cage_stiffness: float | None = None, v_ref: float = 1e-3, pocket_shape: str = "sphere",
+                lubricant=None, temperature: float = 333.15, lubrication: dict | None = None) -> Model:
     """Build the kernel arrays of a bearing (single row or an arrangement with ``rows_parameters``).
 
     Parameters (SI): ring_mass [kg]; ring_inertia (transverse, polar) [kg m²] (default:
     a thin ring of the inner-race radius); gravity [m/s²]; damping_alpha Hunt–Crossley α
     [s/m]; traction "none" | "coulomb" | "slices"; mu0, s0 of the Coulomb stand-in;
-    load_point axial position of the load point [m]; speed (Ω₀, Ω₁, ramp) [rad/s, s];
+    lubricant (library name, path or Lubricant) and temperature [K] with ``lubrication``
+    keyword options of :func:`bearingsim.contact.slices.pack_lubrication_parameters`
+    for traction "slices"; load_point axial position of the load point [m]; speed (Ω₀, Ω₁, ramp) [rad/s, s];
     cage options: mass [kg] (default 10 % of the ball set), pocket clearance [m]
     (default 2 % of D), friction μ = 0.06 (seed 001 §3.2), guidance "balls",
     "outer-land" or "inner-land" with a radial land clearance [m].
@@ -317,9 +334,21 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
         cp[r, C_Z] = z
         cp[r, C_BALL0] = b0
         b0 += z
-    pts = pocket_points(d0, clr)
+    pts = pocket_points(d0, clr, pocket_shape)
+    lubs = None
+    if traction == "slices":
+        from ..contact import slices
+
+        if lubricant is None:
+            raise InputError("lubricant", "the sliced-ellipse traction needs a lubricant", 'e.g. lubricant = "iso-vg-68"')
+        lubs = np.zeros((2 * nrow, slices.L_SIZE))
+        for r in range(nrow):
+            lubs[2 * r] = slices.pack_lubrication_parameters(lubricant, temperature, rowx[r, X_EPI], rowx[r, X_RXI],
+                                                             rowx[r, X_RYI], **(lubrication or {}))
+            lubs[2 * r + 1] = slices.pack_lubrication_parameters(lubricant, temperature, rowx[r, X_EPO],
+                                                                 rowx[r, X_RXO], rowx[r, X_RYO], **(lubrication or {}))
     return Model(rows=rows, rowx=rowx, ball_row=ball_row, ball_psi=np.array(ball_psi), gp=gp, cp=cp, pts=pts,
-                 names={"bearing": getattr(bearing, "name", "bearing")})
+                 names={"bearing": getattr(bearing, "name", "bearing")}, lubs=lubs)
 
 
 def initial_state(model: Model, static=None, speed: float | None = None) -> np.ndarray:
@@ -375,3 +404,53 @@ def initial_state(model: Model, static=None, speed: float | None = None) -> np.n
             wm = float(np.mean(static.balls["orbital_speed_rad_s"][b0:b0 + z])) * (1.0 if omega >= 0 else -1.0)
         y[o + 9] = wm
     return y
+
+
+def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-3,
+                      speed_scale: float = 1.0, rate_scale: float = 100.0) -> tuple[np.ndarray, np.ndarray]:
+    """Per-component (atol, rtol) of the state for the integrator's error control.
+
+    Positions and angles get an absolute tolerance only (tol × length_scale [m], tol ×
+    length_scale / pitch radius [rad]): contact approaches of ~10 µm sit on ball
+    coordinates of ~30 mm, so a relative tolerance on positions would be meaningless.
+    Velocities get tol × speed_scale [m/s] absolute plus tol relative; angular
+    velocities tol × rate_scale [rad/s] plus tol relative.
+    """
+    n = model.n_state
+    atol = np.empty(n)
+    rtol = np.zeros(n)
+    rpitch = 0.5 * float(model.rows[0, kn.P_DM])
+    alen = tol * length_scale
+    aang = alen / rpitch
+    atol[0:3] = alen
+    atol[3:5] = aang
+    atol[5:8] = tol * speed_scale
+    atol[8:10] = tol * speed_scale / rpitch
+    rtol[5:10] = tol
+    for k in range(model.n_balls):
+        o = N_RING + N_BALL * k
+        atol[o:o + 3] = alen
+        atol[o + 3:o + 6] = tol * speed_scale
+        atol[o + 6:o + 9] = tol * rate_scale
+        rtol[o + 3:o + 9] = tol
+    for c in range(model.n_cages):
+        o = model.cage_offset + N_CAGE * c
+        atol[o:o + 3] = alen
+        atol[o + 3:o + 6] = tol * speed_scale
+        atol[o + 6:o + 9] = aang
+        atol[o + 9:o + 12] = tol * rate_scale
+        rtol[o + 3:o + 6] = tol
+        rtol[o + 9:o + 12] = tol
+    return atol, rtol
+
+
+def describe_component(model: Model, i: int) -> str:
+    """Name of state component i (for error messages: the body involved)."""
+    if i < 10:
+        return f"inner ring {('x', 'y', 'z', 'gamma_y', 'gamma_z')[i % 5]}{' rate' if i >= 5 else ''}"
+    if i < model.cage_offset:
+        k = (i - N_RING) // N_BALL
+        part = ("position", "velocity", "angular velocity")[((i - N_RING) % N_BALL) // 3]
+        return f"ball {k} (row {int(model.ball_row[k])}) {part}: its raceway or pocket contacts"
+    c = (i - model.cage_offset) // N_CAGE
+    return f"cage {c}: its pocket or land contacts"

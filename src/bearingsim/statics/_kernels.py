@@ -465,7 +465,9 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
 
     Returns (status, iterations, residual_norm, ball_converged):
     status 0 converged; 1 max iterations; 2 singular stiffness (the load cannot be
-    carried, e.g. a radial load on one angular contact row without axial load).
+    carried, e.g. an axial load pulling one angular contact row apart); 3 equilibrium
+    found only with a loaded contact past the groove bottom of an angular contact row
+    (:func:`contact_beyond_groove_bottom`), outside the model.
     """
     res = np.empty(5)
     res_try = np.empty(5)
@@ -550,7 +552,23 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
         if rn <= tol_ring * load_scale or (step <= 1e-13 * amax and rn <= 1e3 * tol_ring * load_scale):
             status = 0
             break
-    if status == 0:
-        # the stiffness reported is that of the converged state
-        return 0, it, rn, bconv
-    return 1, it, rn, bconv
+    if status == 0 and contact_beyond_groove_bottom(rows, ballout):
+        return 3, it, rn, bconv
+    return status, it, rn, bconv
+
+
+@njit(cache=True)
+def contact_beyond_groove_bottom(rows, ballout):
+    """True when a loaded ball of an angular contact row has a negative contact angle.
+
+    An angular contact ring has a low shoulder on that side of the groove bottom; the
+    torus model would let the contact run past it, which is outside the model.
+    """
+    for r in range(rows.shape[0]):
+        if rows[r, P_DX0] <= 0.0:  # deep groove: both sides of the groove bottom exist
+            continue
+        for j in range(int(rows[r, P_Z])):
+            bo = ballout[r, j]
+            if (bo[2] > 0.0 and bo[8] < 0.0) or (bo[3] > 0.0 and bo[10] < 0.0):
+                return True
+    return False

@@ -117,13 +117,17 @@ class StaticResult:
 
     @property
     def cage_speed(self) -> float:
-        """Cage speed [rad/s]: mean orbital speed of the loaded balls (Jones)."""
-        q = self.balls["inner_load_N"] + self.balls["outer_load_N"]
+        """Cage speed [rad/s]: the mean of Jones' orbital speeds over the balls in contact.
+
+        With a rigid cage all balls orbit together; under a non-uniform load the quasi-static
+        model gives each ball its own ω_m, and the cage runs at their mean (balls that carry
+        no load are pushed by the cage and do not count).
+        """
         w = self.balls["orbital_speed_rad_s"]
         loaded = self.balls["inner_load_N"] > 0
         if not loaded.any():
             return float(np.mean(w)) if len(w) else 0.0
-        return float(np.sum(w[loaded] * q[loaded]) / np.sum(q[loaded]))
+        return float(np.mean(w[loaded]))
 
 
 def rows_of(bearing) -> np.ndarray:
@@ -199,7 +203,10 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
                                            _scale(loads, rows))
     messages = {0: "converged", 1: "no equilibrium found within the iteration limit",
                 2: "singular stiffness: no ball carries load in some direction, the bearing cannot carry "
-                   "this load (e.g. an axial load that pulls a single angular contact row apart)"}
+                   "this load (e.g. an axial load that pulls a single angular contact row apart)",
+                3: "the only equilibrium puts a loaded contact past the groove bottom of an angular contact "
+                   "row (negative contact angle, where the ring has its low shoulder): add axial load or a "
+                   "second row"}
     msg = messages[int(status)]
     if status == 0 and not bconv:
         msg = "ring converged but a ball's equilibrium did not"

@@ -1,0 +1,63 @@
+"""Benchmark of the sliced-contact kernel bearingsim.contact.slices.contact_traction.
+
+Prints µs per call after warm-up, called from a numba loop (as the dynamics engine does)
+for 10 slices and a few other counts, for the physical fluid model, the four-parameter
+curve and the boundary model.  Run:  python benchmarks/bench_slices.py
+Not a test: figures depend on the machine.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+from numba import njit
+
+from bearingsim.contact import hertz
+from bearingsim.contact import slices as S
+
+
+@njit(cache=True)
+def _loop(n_calls, q, a, b, r_dev, c, n, m, cb, vb, wb, cr, vr, wr, lub, n_slices, out):
+    acc = 0.0
+    for i in range(n_calls):
+        S.contact_traction(q * (1.0 + 1e-9 * i), a, b, r_dev, c, n, m, cb, vb, wb, cr, vr, wr, lub, n_slices, out)
+        acc += out[0]
+    return acc
+
+
+def case(model="mixed", fluid_model="physical"):
+    d, dm, f, alpha = 0.0111, 0.061, 0.52, math.radians(35.0)
+    e = hertz.effective_modulus(208e9, 0.3, 208e9, 0.3)
+    rx, ry = hertz.raceway_radii(d, dm, f, alpha, True)
+    hc = hertz.point_contact_exact(2000.0, rx, ry, e)
+    lub = S.pack_lubrication_parameters("iso-vg-68", 333.15, e, rx, ry, 0.1e-6, model=model,
+                                        fluid_model=fluid_model, fluid_curve=(0.0, 0.06, 0.01, 0.045))
+    n = np.array([0.0, 0.0, 1.0])
+    m = np.array([1.0, 0.0, 0.0])
+    c = np.zeros(3)
+    cb = np.array([0.0, 0.0, d / 2])
+    cr = np.array([0.0, 0.0, -0.025])
+    wr = np.array([100.0, 0.0, 0.0])
+    wb = np.array([-2.5 / (d / 2) * 1.01, 0.0, 30.0])  # 1 % slip and some spin
+    return (2000.0, hc.a, hc.b, S.deformed_surface_radius(d, f * d), c, n, m, cb, np.zeros(3), wb, cr,
+            np.zeros(3), wr, lub)
+
+
+def main():
+    print("contact_traction: µs per call after warm-up (numba loop, 200 000 calls)")
+    for model, fluid in (("mixed", "physical"), ("fluid", "curve"), ("boundary", "physical")):
+        args = case(model, fluid)
+        for n_slices in (1, 5, 10, 20):
+            out = np.zeros(10)
+            _loop(10, *args, n_slices, out)
+            n_calls = 200_000
+            t0 = time.perf_counter()
+            _loop(n_calls, *args, n_slices, out)
+            dt = (time.perf_counter() - t0) / n_calls * 1e6
+            print(f"  model={model:8s} fluid={fluid:8s} n_slices={n_slices:3d}: {dt:6.3f} µs/call")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,241 @@
+"""Traction coefficient and rolling viscous resistance of a lubricated ball–raceway contact.
+
+Models (one function each, numba kernels + Python wrappers that check input):
+
+* :func:`four_parameter` — μ(s) = (A + B s) e^(−C s) + D, the curve used by dynamic
+  bearing codes (Gupta, *Advanced Dynamics of Rolling Elements*, 1984); :func:`fit_four_parameter`
+  finds A, B, C, D from μ₀ = μ(0), the peak μ_max at s_max and μ_∞ = μ(∞) in closed form
+  (D = μ_∞, A = μ₀ − μ_∞, dμ/ds(s_max) = 0 ⇒ B = C A/(1 − C s_max), and one scalar
+  equation A e^(−t)/(1 − t) = μ_max − μ_∞ for t = C s_max, solved by bisection).
+* Boundary lubrication: the same four-parameter form with its own constants, a
+  function of the slide–roll ratio only (seed 001, section 3.1).  The default
+  constants (μ₀ = 0, peak 0.12 at s = 0.01, μ_∞ = 0.10) are typical of boundary
+  lubricated steel and were chosen here, not taken from a source.
+* Fluid film, physically based (:func:`fluid_shear_stress`): Eyring shear thinning
+  τ_v = τ₀ asinh(η γ̇/τ₀) capped smoothly by the limiting shear stress,
+  τ = τ_L tanh(τ_v/τ_L) (the Bair–Winer limiting-shear-stress idea, Zhou & Hoeprich
+  1991 eq. 35, in its steady form), with γ̇ = sliding speed / central film,
+  η(p) from Roelands (1966), and τ_L = r_L [c₁ p /(c₂ + c₃ t) − c₄] — Dyson's formula for
+  the limiting elastic shear modulus with τ_L = 0.25 G_∞ (Zhou & Hoeprich 1991 eqs. 36–37:
+  G_∞ = 1.2 P/(2.52 + 0.024 t) − 10⁸, P [Pa], t [°C]), floored at
+  ``lss_floor`` · p.  Shear heating raises the film temperature by
+  ΔT = τ u_s [h/(12 k) + ½ · (4/(3√π)) √(t_c)/e_s] (mean Couette heating of the film
+  conducted to both walls, plus the mean flash temperature of a half-space under a
+  uniform flux for the transit time t_c = 2b/u, half the heat to each body;
+  Carslaw & Jaeger 1959, §2.9), which lowers η by exp(−β ΔT) and τ_L through t.  The
+  implicit heat balance is solved by two fixed-point steps (documented approximation).
+  μ_f = τ / p̄.
+* Mixed lubrication (seed 001, ref. 8): μ = μ_b + (μ_f − μ_b) w(Λ), w = 0 for Λ ≤ Λ₁,
+  1 for Λ ≥ Λ₂, linear in between (default Λ₁ = 1, Λ₂ = 3; the seed says only
+  "proportionally to the film parameter"; the limits are our choice).
+* Rolling viscous resistance (seed 001 eq. 4): Zhou & Hoeprich (1991), J. Tribol. 113:590,
+  eqs. 17, 21–23 for a line contact of length L (here one slice of the ellipse):
+  F_R = φ_s φ_T 29.2 (R/α) L (G U)^0.648 W^0.246, W = w/(E′R), w = load per unit length.
+  This is their fit of isothermal piezoviscous-elastic (PE) solutions; it is used in PE
+  and, as a stand-in for which no formula was confirmed, in PR and IE.  In IR we use the
+  closed form of the rigid isoviscous (Martin) line contact with Reynolds' exit
+  condition, derived here:  F_R/L = 6 η u √(2R/h₀) · ½[(1 − ξ_e²)(π/2 + atan ξ_e) − ξ_e],
+  ξ_e = 0.475130, h₀ = 4.89497 η u R/w, i.e. F_R/L = 2.0796 √(η u w)  (checked against a
+  numerical Reynolds solution in tests/unit/test_traction.py).
+* Oil-film force (seed 001 eq. 5): the pressure-centre shift gives each body a
+  tangential pressure force P_x,i with P_x,i R_i = 2 F_R R_x (Zhou & Hoeprich 1991, text
+  after eq. 5: N e = P_x R_e = P_x,1 R_1 = P_x,2 R_2 = 2 F_r0 R_e), acting through that
+  body's centre of curvature, in the rolling direction.
+
+Units: stresses and pressures [Pa], speeds [m/s], lengths [m], temperatures [K] (°C only
+inside Dyson's formula), viscosity [Pa·s].
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..errors import InputError
+
+#: Martin rigid-isoviscous line contact constants (Reynolds exit condition)
+MARTIN_XI_EXIT = 0.47512992  # numerical root, tests/unit/test_traction.py
+MARTIN_LOAD = 4.894968  # w = MARTIN_LOAD * eta * u * R / h0, u = mean speed (u1+u2)/2
+
+
+def _martin_rolling_constant() -> float:
+    xe = MARTIN_XI_EXIT
+    integral = 0.5 * ((1.0 - xe * xe) * (0.5 * math.pi + math.atan(xe)) - xe)
+    return 6.0 * integral * math.sqrt(2.0 / MARTIN_LOAD)
+
+
+#: F_R/L = MARTIN_ROLLING * sqrt(eta u w) in the IR regime
+MARTIN_ROLLING = _martin_rolling_constant()
+
+
+@njit(cache=True, error_model="numpy")
+def four_parameter(s, A, B, C, D):
+    """μ(s) = (A + B|s|) e^(−C|s|) + D  [-]  (Gupta 1984 form)."""
+    s = abs(s)
+    return (A + B * s) * math.exp(-C * s) + D
+
+
+@njit(cache=True, error_model="numpy")
+def mixed_weight(lam, lam1, lam2):
+    """Weight of the fluid coefficient, w(Λ) ∈ [0, 1], linear between Λ₁ and Λ₂."""
+    if lam <= lam1:
+        return 0.0
+    if lam >= lam2:
+        return 1.0
+    return (lam - lam1) / (lam2 - lam1)
+
+
+@njit(cache=True, error_model="numpy")
+def roelands_viscosity(p, eta0, ln_eta0_plus, z):
+    """Roelands (1966): η = η₀ exp[(ln η₀ + 9.67)((1 + p/1.96e8)^z − 1)]  [Pa·s].
+
+    ln_eta0_plus = ln η₀ + 9.67 (η₀ in Pa·s), z the Roelands index.
+    """
+    if p <= 0.0:
+        return eta0
+    return eta0 * math.exp(ln_eta0_plus * ((1.0 + p / 1.96e8) ** z - 1.0))
+
+
+@njit(cache=True, error_model="numpy")
+def limiting_shear_stress(p, t_celsius, r_l, c1, c2, c3, c4, floor):
+    """τ_L = max(r_L [c₁ p/(c₂ + c₃ t) − c₄], floor·p)  [Pa]; Dyson via Zhou & Hoeprich eqs. 36–37."""
+    tl = r_l * (c1 * p / (c2 + c3 * t_celsius) - c4)
+    fl = floor * p
+    return tl if tl > fl else fl
+
+
+@njit(cache=True, error_model="numpy")
+def _stress_at(dT, eta_p, gdot, tau0, p, t0c, r_l, c1, c2, c3, c4, floor, beta_v):
+    eta = eta_p * math.exp(-beta_v * dT)
+    tl = limiting_shear_stress(p, t0c + dT, r_l, c1, c2, c3, c4, floor)
+    tv = tau0 * math.asinh(eta * gdot / tau0)
+    return tl * math.tanh(tv / tl)
+
+
+@njit(cache=True, error_model="numpy")
+def fluid_shear_stress(p, u_s, h, theta, eta_p, tau0, t0c, r_l, c1, c2, c3, c4, floor, beta_v):
+    """Mean fluid shear stress τ [Pa] of an EHL film (see module docstring).
+
+    p [Pa] mean pressure; u_s [m/s] sliding speed (≥ 0); h [m] film; theta [K·m²/W] heat
+    balance factor (ΔT = theta τ u_s); eta_p [Pa·s] viscosity at p and the inlet
+    temperature; tau0 [Pa] Eyring stress; t0c [°C] inlet temperature; r_l, c1..c4, floor:
+    limiting shear stress law; beta_v [1/K] temperature–viscosity coefficient.
+    """
+    if u_s <= 0.0 or p <= 0.0 or h <= 0.0:
+        return 0.0
+    gdot = u_s / h
+    tau = _stress_at(0.0, eta_p, gdot, tau0, p, t0c, r_l, c1, c2, c3, c4, floor, beta_v)
+    if theta <= 0.0:
+        return tau
+    dT1 = theta * tau * u_s
+    tau1 = _stress_at(dT1, eta_p, gdot, tau0, p, t0c, r_l, c1, c2, c3, c4, floor, beta_v)
+    dT2 = theta * 0.5 * (tau + tau1) * u_s
+    return _stress_at(dT2, eta_p, gdot, tau0, p, t0c, r_l, c1, c2, c3, c4, floor, beta_v)
+
+
+@njit(cache=True, error_model="numpy")
+def rolling_resistance_zh(U, G, w_dimless, rx, alpha, length):
+    """F_R = 29.2 (R/α) L (G U)^0.648 W^0.246  [N]  (Zhou & Hoeprich 1991 eq. 17/43, isothermal)."""
+    if U <= 0.0 or w_dimless <= 0.0:
+        return 0.0
+    return 29.2 * (rx / alpha) * length * (G * U) ** 0.648 * w_dimless**0.246
+
+
+@njit(cache=True, error_model="numpy")
+def rolling_resistance_ir(eta0, u, w_line, length):
+    """Rigid isoviscous (Martin) line contact rolling resistance F_R = 2.0796 L √(η u w)  [N]."""
+    if u <= 0.0 or w_line <= 0.0:
+        return 0.0
+    return MARTIN_ROLLING * length * math.sqrt(eta0 * u * w_line)
+
+
+# --------------------------------------------------------------------------- Python API
+
+
+def fit_four_parameter(mu0: float, mu_max: float, s_max: float, mu_inf: float) -> tuple[float, float, float, float]:
+    """(A, B, C, D) of μ(s) = (A + B s)e^(−C s) + D through μ(0) = μ₀, a peak μ_max at s_max, μ(∞) = μ_∞.
+
+    Requires 0 ≤ μ₀, μ_∞ < μ_max and s_max > 0 (closed form + a bisection in t = C s_max).
+    """
+    for name, v in (("mu0", mu0), ("mu_max", mu_max), ("s_max", s_max), ("mu_inf", mu_inf)):
+        if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
+            raise InputError(name, f"must be a finite non-negative number, got {v!r}", "")
+    if s_max <= 0:
+        raise InputError("s_max", "must be positive", "give the slide-roll ratio of the peak, e.g. 0.01")
+    if not (mu_max > mu0 and mu_max > mu_inf):
+        raise InputError("mu_max", f"the peak {mu_max} must exceed mu0={mu0} and mu_inf={mu_inf}",
+                         "give a curve with a maximum")
+    D = mu_inf
+    A = mu0 - mu_inf
+    target = mu_max - mu_inf
+    if A == 0.0:
+        C = 1.0 / s_max
+        B = math.e * target / s_max
+        return A, B, C, D
+    f = lambda t: A * math.exp(-t) / (1.0 - t) - target  # noqa: E731
+    if A < 0:  # root in t > 1, f decreasing from +inf to 0- ... (A<0: f = |A| e^-t/(t-1) - target)
+        lo, hi = 1.0 + 1e-15, 2.0
+        while f(hi) > 0:
+            hi *= 2.0
+    else:  # root in [0, 1): f increasing from A - target <= 0 to +inf
+        lo, hi = 0.0, 1.0 - 1e-15
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        fm = f(mid)
+        if (fm > 0) == (f(lo) > 0):
+            lo = mid
+        else:
+            hi = mid
+    t = 0.5 * (lo + hi)
+    C = t / s_max
+    B = C * A / (1.0 - t)
+    return A, B, C, D
+
+
+def traction_curve(s, coefficients) -> np.ndarray:
+    """μ(s) of the four-parameter curve for an array of slide–roll ratios s [-]."""
+    A, B, C, D = coefficients
+    s = np.abs(np.asarray(s, dtype=float))
+    return (A + B * s) * np.exp(-C * s) + D
+
+
+def mixed_coefficient(mu_boundary: float, mu_fluid: float, film_parameter: float,
+                      lambda1: float = 1.0, lambda2: float = 3.0) -> float:
+    """μ = μ_b + (μ_f − μ_b) w(Λ), w linear from 0 at Λ₁ to 1 at Λ₂ (seed 001 §3.1)."""
+    if not (0 <= lambda1 < lambda2):
+        raise InputError("lambda1/lambda2", f"need 0 <= lambda1 < lambda2, got {lambda1}, {lambda2}", "")
+    if math.isnan(film_parameter) or film_parameter < 0:
+        raise InputError("film_parameter", f"must be >= 0, got {film_parameter!r}", "")
+    return mu_boundary + (mu_fluid - mu_boundary) * mixed_weight(film_parameter, lambda1, lambda2)
+
+
+def rolling_resistance(regime_name: str, eta0: float, alpha: float, e_eff: float, rx: float, u: float,
+                       load: float, length: float, thermal_factor: float = 1.0,
+                       starvation_factor: float = 1.0) -> float:
+    """Rolling viscous resistance F_R [N] of a line contact of length `length` [m] carrying `load` [N].
+
+    regime 'PE' | 'PR' | 'IE' use Zhou & Hoeprich (1991) eq. 17 (PR and IE: stand-in, see
+    module docstring); 'IR' the Martin closed form.  Multiplied by φ_T φ_s (eqs. 22–23).
+    """
+    if regime_name not in ("IR", "PR", "IE", "PE"):
+        raise InputError("regime", f"unknown regime {regime_name!r}", "use IR, PR, IE or PE")
+    for name, v in (("viscosity", eta0), ("pressure_viscosity_coefficient", alpha), ("effective_modulus", e_eff),
+                    ("rx", rx), ("length", length)):
+        if not (math.isfinite(v) and v > 0):
+            raise InputError(name, f"must be positive and finite, got {v!r}", "")
+    for name, v in (("rolling_speed", u), ("load", load)):
+        if not (math.isfinite(v) and v >= 0):
+            raise InputError(name, f"must be finite and >= 0, got {v!r}", "")
+    w = load / length
+    if regime_name == "IR":
+        f = rolling_resistance_ir(eta0, u, w, length)
+    else:
+        f = rolling_resistance_zh(eta0 * u / (e_eff * rx), alpha * e_eff, w / (e_eff * rx), rx, alpha, length)
+    return thermal_factor * starvation_factor * f
+
+
+__all__ = ["four_parameter", "fit_four_parameter", "traction_curve", "mixed_weight", "mixed_coefficient",
+           "roelands_viscosity", "limiting_shear_stress", "fluid_shear_stress", "rolling_resistance_zh",
+           "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING"]

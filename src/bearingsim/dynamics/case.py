@@ -1,0 +1,225 @@
+"""Case files of the dynamic engine (TOML with units).
+
+Example (``examples/spindle-7011.toml``)::
+
+    bearing = "skf-7011-cdga-hc"        # catalogue name or path
+    lubricant = "iso-vg-68"             # library name or path
+    temperature = "60 degC"
+    speed = "10000 rpm"                 # or { start = "0 rpm", stop = "10000 rpm", ramp = "5 ms" }
+    duration = "20 ms"
+    output_interval = "0.05 ms"
+    traction = "slices"                 # slices (lubricated kernel), coulomb (test stand-in), none
+    n_slices = 8
+    tolerance = 1e-6                    # integrator tolerance (relative; lengths scaled by 1 mm)
+    contact_damping = 0.05              # Hunt–Crossley alpha [s/m]
+    gravity = ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]   # optional
+    load_point = "0 mm"                 # axial position of the load point (default: the bearing's)
+    chunk = 200                         # samples per netCDF chunk (memory bound)
+    control = "outer"                   # raceway control of the quasi-static start
+
+    [loads]                             # fa, fr (= Fr_y), fz (= Fr_z), my, mz: constant, sine, table, or a list (sum)
+    fa = "3000 N"
+    mz = { offset = "0 N*m", amplitude = "600 N*m", frequency = "50 Hz" }
+
+    [inner_ring]                        # the rotating body carried by the inner ring (hub, shaft)
+    mass = "2 kg"
+    transverse_inertia = "0.002 kg*m^2"
+    polar_inertia = "0.004 kg*m^2"
+
+    [cage]
+    mass = "0.03 kg"
+    pocket_clearance = "0.2 mm"
+    friction = 0.06                     # seed 001 §3.2
+    guidance = "balls"                  # balls, outer-land, inner-land
+    land_clearance = "0.2 mm"
+    pocket_shape = "sphere"
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..errors import InputError
+from ..units import parse_quantity, registry
+from .loads import LoadHistory, SpeedHistory, parse_loads, parse_speed
+
+_KEYS = {"bearing", "lubricant", "temperature", "speed", "duration", "output_interval", "traction", "n_slices",
+         "tolerance", "contact_damping", "gravity", "load_point", "chunk", "control", "loads", "inner_ring", "cage",
+         "lubrication", "name", "description", "checkpoint_every"}
+
+
+@dataclass(frozen=True)
+class Case:
+    """A dynamic simulation case (all SI)."""
+
+    bearing: object
+    loads: LoadHistory
+    speed: SpeedHistory
+    duration: float
+    output_interval: float
+    lubricant: object = None
+    temperature: float = 333.15
+    traction: str = "slices"
+    n_slices: int = 8
+    tolerance: float = 1e-6
+    contact_damping: float = 0.05
+    gravity: tuple = (0.0, 0.0, 0.0)
+    load_point: float = 0.0  #: relative to the origin of the bearing's kernel rows [m]
+    ring_mass: float = 2.0
+    ring_inertia: tuple | None = None
+    cage: dict = field(default_factory=dict)
+    lubrication: dict = field(default_factory=dict)
+    chunk: int = 200
+    control: str = "outer"
+    checkpoint_every: int = 1  #: chunks between checkpoints
+    source: dict = field(default_factory=dict, compare=False)
+
+    def __post_init__(self):
+        if not (math.isfinite(self.duration) and self.duration > 0):
+            raise InputError("duration", f"must be positive, got {self.duration!r} s", 'e.g. "20 ms"')
+        if not (math.isfinite(self.output_interval) and self.output_interval > 0):
+            raise InputError("output_interval", f"must be positive, got {self.output_interval!r} s", 'e.g. "0.05 ms"')
+        if self.output_interval > self.duration:
+            raise InputError("output_interval", "is longer than the duration", "give an interval ≤ duration")
+        if not (0 < self.tolerance < 1e-2):
+            raise InputError("tolerance", f"must lie in (0, 1e-2), got {self.tolerance!r}", "e.g. 1e-6")
+        if self.traction not in ("slices", "coulomb", "none"):
+            raise InputError("traction", f"unknown model {self.traction!r}", "use slices, coulomb or none")
+        if self.traction == "slices" and self.lubricant is None:
+            raise InputError("lubricant", "the sliced-ellipse traction needs a lubricant",
+                             'add lubricant = "iso-vg-68" or set traction = "none"')
+        if not (isinstance(self.n_slices, int) and 1 <= self.n_slices <= 64):
+            raise InputError("n_slices", f"must be an integer in 1..64, got {self.n_slices!r}", "e.g. 8")
+        if not (isinstance(self.chunk, int) and self.chunk >= 1):
+            raise InputError("chunk", f"must be a positive integer, got {self.chunk!r}", "e.g. 200")
+        if self.contact_damping < 0:
+            raise InputError("contact_damping", "must be ≥ 0", "e.g. 0.05 (s/m)")
+        if not self.ring_mass > 0:
+            raise InputError("inner_ring.mass", "must be positive", 'e.g. "2 kg"')
+
+    @property
+    def n_samples(self) -> int:
+        """Output samples after the initial one."""
+        return int(round(self.duration / self.output_interval))
+
+    def fingerprint(self) -> str:
+        """Hash of the inputs that determine the trajectory (a resume must match it)."""
+        return hashlib.sha256(json.dumps(self.source, sort_keys=True, default=str).encode()).hexdigest()[:16]
+
+    def model_options(self) -> dict:
+        c = self.cage
+        return dict(ring_mass=self.ring_mass, ring_inertia=self.ring_inertia, gravity=self.gravity,
+                    damping_alpha=self.contact_damping, traction=self.traction, n_slices=self.n_slices,
+                    load_point=self.load_point, speed=self.speed.as_tuple(), lubricant=self.lubricant,
+                    temperature=self.temperature, lubrication=self.lubrication or None,
+                    cage_mass=c.get("mass"), pocket_clearance=c.get("pocket_clearance"),
+                    cage_mu=c.get("friction", 0.06), guidance=c.get("guidance", "balls"),
+                    land_clearance=c.get("land_clearance", 2e-4), pocket_shape=c.get("pocket_shape", "sphere"),
+                    cage=c.get("enabled", True))
+
+
+def _inertia(value, fname: str) -> float:
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        v = float(value)
+    else:
+        try:
+            v = registry().Quantity(str(value)).to("kg*m**2").magnitude
+        except Exception as exc:  # pint errors
+            raise InputError(fname, f"cannot read {value!r} as a moment of inertia ({exc})", 'e.g. "0.01 kg*m^2"') \
+                from None
+    if not (math.isfinite(v) and v > 0):
+        raise InputError(fname, f"must be positive, got {value!r}", 'e.g. "0.01 kg*m^2"')
+    return v
+
+
+def case_from_dict(data: dict, base: Path | None = None) -> Case:
+    """Build a :class:`Case` from a parsed TOML table (units parsed here)."""
+    from ..io import load_bearing
+
+    unknown = sorted(set(data) - _KEYS)
+    if unknown:
+        raise InputError(unknown[0], "unknown key in the case file", f"known keys: {', '.join(sorted(_KEYS))}")
+    for key in ("bearing", "speed", "duration", "output_interval"):
+        if key not in data:
+            raise InputError(key, "missing", f"add {key} to the case file")
+    bspec = data["bearing"]
+    if base is not None and isinstance(bspec, str) and bspec.endswith(".toml") and not Path(bspec).is_absolute():
+        bspec = str(base / bspec)
+    bearing = load_bearing(bspec)
+    lub = data.get("lubricant")
+    if isinstance(lub, str) and base is not None and lub.endswith(".toml") and not Path(lub).is_absolute():
+        lub = str(base / lub)
+    traction = data.get("traction", "slices" if lub is not None else "none")
+    ring = data.get("inner_ring", {})
+    unknown = set(ring) - {"mass", "transverse_inertia", "polar_inertia"}
+    if unknown:
+        raise InputError(f"inner_ring.{sorted(unknown)[0]}", "unknown key", "use mass, transverse_inertia, polar_inertia")
+    ring_mass = parse_quantity(ring.get("mass", "2 kg"), "mass", "inner_ring.mass")
+    inertia = None
+    if "transverse_inertia" in ring or "polar_inertia" in ring:
+        if not ("transverse_inertia" in ring and "polar_inertia" in ring):
+            raise InputError("inner_ring.polar_inertia", "give both transverse_inertia and polar_inertia", "")
+        inertia = (_inertia(ring["transverse_inertia"], "inner_ring.transverse_inertia"),
+                   _inertia(ring["polar_inertia"], "inner_ring.polar_inertia"))
+    cage_in = data.get("cage", {})
+    unknown = set(cage_in) - {"mass", "pocket_clearance", "friction", "guidance", "land_clearance", "pocket_shape",
+                              "enabled"}
+    if unknown:
+        raise InputError(f"cage.{sorted(unknown)[0]}", "unknown key",
+                         "use mass, pocket_clearance, friction, guidance, land_clearance, pocket_shape, enabled")
+    cage = {}
+    if "mass" in cage_in:
+        cage["mass"] = parse_quantity(cage_in["mass"], "mass", "cage.mass")
+    if "pocket_clearance" in cage_in:
+        cage["pocket_clearance"] = parse_quantity(cage_in["pocket_clearance"], "length", "cage.pocket_clearance")
+        if not cage["pocket_clearance"] > 0:
+            raise InputError("cage.pocket_clearance", "must be positive", 'e.g. "0.2 mm"')
+    if "land_clearance" in cage_in:
+        cage["land_clearance"] = parse_quantity(cage_in["land_clearance"], "length", "cage.land_clearance")
+    if "friction" in cage_in:
+        cage["friction"] = parse_quantity(cage_in["friction"], "dimensionless", "cage.friction")
+    for k in ("guidance", "pocket_shape", "enabled"):
+        if k in cage_in:
+            cage[k] = cage_in[k]
+    grav = data.get("gravity", (0.0, 0.0, 0.0))
+    if not (isinstance(grav, (list, tuple)) and len(grav) == 3):
+        raise InputError("gravity", "expected three components", 'e.g. ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]')
+    gvec = []
+    for i, g in enumerate(grav):
+        if isinstance(g, (int, float)):
+            gvec.append(float(g))
+        else:
+            try:
+                gvec.append(registry().Quantity(str(g)).to("m/s**2").magnitude)
+            except Exception as exc:
+                raise InputError(f"gravity[{i}]", f"cannot read {g!r} ({exc})", 'e.g. "-9.81 m/s^2"') from None
+    sys_lp = getattr(bearing, "load_point", 0.0) if hasattr(bearing, "rows_parameters") else 0.0
+    load_point = 0.0
+    if "load_point" in data:
+        load_point = parse_quantity(data["load_point"], "length", "load_point") - sys_lp
+    temperature = parse_quantity(data.get("temperature", "60 degC"), "temperature", "temperature")
+    tol = data.get("tolerance", 1e-6)
+    damping = data.get("contact_damping", 0.05)
+    for k, v in (("tolerance", tol), ("contact_damping", damping)):
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise InputError(k, f"expected a number, got {v!r}", "e.g. 1e-6")
+    return Case(bearing=bearing, loads=parse_loads(data.get("loads")), speed=parse_speed(data["speed"]),
+                duration=parse_quantity(data["duration"], "time", "duration"),
+                output_interval=parse_quantity(data["output_interval"], "time", "output_interval"),
+                lubricant=lub, temperature=temperature, traction=traction, n_slices=data.get("n_slices", 8),
+                tolerance=float(tol), contact_damping=float(damping), gravity=tuple(gvec), load_point=load_point,
+                ring_mass=ring_mass, ring_inertia=inertia, cage=cage, lubrication=data.get("lubrication", {}),
+                chunk=data.get("chunk", 200), control=data.get("control", "outer"),
+                checkpoint_every=data.get("checkpoint_every", 1), source=data)
+
+
+def load_case(path) -> Case:
+    """Read a case TOML file."""
+    from ..io import read_toml
+
+    p = Path(path)
+    return case_from_dict(read_toml(p, "case"), base=p.parent)

@@ -1,0 +1,798 @@
+"""Contact forces and equations of motion of the dynamic model (numba kernels).
+
+Everything here works on the plain arrays of :class:`bearingsim.dynamics.model.Model`;
+the state layout is documented in :mod:`.model`.
+
+Ball–raceway normal force (seed 001 §3.1; Harris & Kotzalas 2007 vol. 1 eq. 7.4):
+the ball centre b and the groove-curvature centre g of the raceway in the ball's
+meridian plane (the closest point of the groove-centre circle) give the approach
+δ = |b − g| − (f − ½)D; along u = (b − g)/|b − g|
+
+    Q = K δ^1.5 (1 + (3/2) α δ̇),   δ̇ = u·(v_b − v_g),   Q ≥ 0,
+
+the Hunt–Crossley contact law (Hunt & Crossley, J. Appl. Mech. 42 (1975) 440, eq. 12
+with n = 3/2; restitution e ≈ 1 − α v_impact).  It is chosen because the damping force
+vanishes with δ (no jump at first touch, no tensile force at separation, unlike a
+linear dashpot) and the dissipated energy per impact is a fixed fraction of the
+impact energy, as measured for steel impacts.  K is the statics constant K_i or K_o
+(evaluated at the free contact angle, :meth:`BallBearing.contact_constants`), so the
+model reduces exactly to the Jones–Harris statics.  The force acts on the ball as −Q u
+and on the ring as +Q u through g: it has no moment about the ball centre and derives
+from the potential (2/5) K δ^2.5 (energy is conserved without damping and friction).
+
+Ball–cage (seed 001 §3.2, eqs. 6–7): the pocket surface is a set of points in the
+pocket frame; the deepest interference of a point with the ball gives a Hertz-type
+force Q = K_c δ^1.5 along the line from the point to the ball centre and sliding
+friction F = −μ Q v_s/√(|v_s|² + v_ref²) (μ = 0.06 in seed 001; v_ref regularises the
+sign at zero sliding).  Cage guidance by a ring land uses the same law on the radial
+eccentricity of the cage beyond the land clearance.
+
+Tangential ball–raceway forces: model 0 none; model 1 a *regularised Coulomb stand-in
+for tests* (not a lubricant model): on n slices of the contact ellipse along its major
+axis (load share from integrating the Hertz pressure over the slice, seed 001 eq. 1)
+the force opposes the slice's sliding velocity (seed 001 eqs. 2–3),
+μ = μ₀ s/√(s² + s₀²) with s = |v_s|/u_roll the slide-roll ratio; model 2 the
+lubricated sliced-ellipse kernel :func:`bearingsim.contact.slices.contact_traction`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from ..contact import slices as _sl
+from ..statics import _kernels as kn
+from . import model as md
+
+# per-ball diagnostics columns
+D_QI, D_QO, D_AI, D_AO, D_DI, D_DO, D_WM, D_WR, D_SRI, D_SRO, D_PI, D_PO, D_QC, D_PC, D_BETA = range(15)
+NDB = 15
+# global diagnostics
+(GD_FA, GD_FRY, GD_FRZ, GD_MY, GD_MZ, GD_TQI, GD_TQO, GD_PI, GD_PO, GD_PC, GD_PL, GD_W, GD_EPOT) = range(13)
+NDG = 13
+
+
+@njit(cache=True)
+def speed_at(t, gp):
+    """Shaft speed Ω(t) [rad/s]: constant, or a linear ramp from Ω₀ to Ω₁ over t_ramp."""
+    tr = gp[md.G_TRAMP]
+    if tr > 0.0 and t < tr:
+        return gp[md.G_W0] + (gp[md.G_W1] - gp[md.G_W0]) * t / tr
+    if tr > 0.0:
+        return gp[md.G_W1]
+    return gp[md.G_W0]
+
+
+@njit(cache=True)
+def load_channel(t, spec, start):
+    """One load channel at time t: offset + Σ amp sin(2π f t + φ) + piecewise-linear table."""
+    i = start
+    val = spec[i]
+    ns = int(spec[i + 1])
+    i += 2
+    for _ in range(ns):
+        val += spec[i] * math.sin(2.0 * math.pi * spec[i + 1] * t + spec[i + 2])
+        i += 3
+    nt = int(spec[i])
+    i += 1
+    if nt > 0:
+        tt = spec[i:i + nt]
+        vv = spec[i + nt:i + 2 * nt]
+        if t <= tt[0]:
+            val += vv[0]
+        elif t >= tt[nt - 1]:
+            val += vv[nt - 1]
+        else:
+            lo = 0
+            hi = nt - 1
+            while hi - lo > 1:
+                mid = (lo + hi) // 2
+                if tt[mid] <= t:
+                    lo = mid
+                else:
+                    hi = mid
+            w = (t - tt[lo]) / (tt[hi] - tt[lo])
+            val += vv[lo] + w * (vv[hi] - vv[lo])
+    return val
+
+
+@njit(cache=True)
+def loads_at(t, spec, out):
+    """(Fa, Fr_y, Fr_z, M_y, M_z) at time t [N, N·m] from the packed specification."""
+    for k in range(5):
+        out[k] = load_channel(t, spec, int(spec[k]))
+
+
+@njit(cache=True)
+def _cross(a, b, out):
+    out[0] = a[1] * b[2] - a[2] * b[1]
+    out[1] = a[2] * b[0] - a[0] * b[2]
+    out[2] = a[0] * b[1] - a[1] * b[0]
+
+
+@njit(cache=True)
+def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, out):
+    """Regularised Coulomb traction on slices of the contact ellipse (TEST STAND-IN, not a lubricant model).
+
+    Slice k spans η ∈ [η_k, η_{k+1}] of the major axis (length 2a); its load is the
+    integral of the Hertz pressure p₀√(1 − η²/a² − ξ²/b²) over the slice,
+    Q_k = Q (3/4)[(e₂ − e₁) − (e₂³ − e₁³)/3], e = η/a (seed 001 eq. 1).  Slice point
+    p = centre + η major − η²/(2 r_dev) normal (the deformed surface follows the groove).
+    Sliding velocity v_s = (v_b + ω_b × (p − b)) − (v_r + ω_r × (p − c_r)), projected on
+    the tangent plane (seed 001 eq. 3); force on the ball −μ Q_k v_s/|v_s| (eq. 2) with
+    μ = μ₀ s/√(s² + s₀² + (v_ref/u)²), s = |v_s|/u the slide-roll ratio, u the mean
+    rolling speed.
+
+    out[10] ← force on ball (3) [N], moment on ball about b (3) [N·m], moment on the
+    race about c_r (3) [N·m], power loss [W].  Returns the slide-roll ratio at the
+    centre slice.
+    """
+    for k in range(10):
+        out[k] = 0.0
+    if q <= 0.0:
+        return 0.0
+    p = np.empty(3)
+    rb = np.empty(3)
+    rr = np.empty(3)
+    t1 = np.empty(3)
+    t2 = np.empty(3)
+    f = np.empty(3)
+    m = np.empty(3)
+    srr_c = 0.0
+    for k in range(nsl):
+        e1 = -1.0 + 2.0 * k / nsl
+        e2 = -1.0 + 2.0 * (k + 1) / nsl
+        qk = q * 0.75 * ((e2 - e1) - (e2 ** 3 - e1 ** 3) / 3.0)
+        eta = 0.5 * (e1 + e2) * a
+        for i in range(3):
+            p[i] = centre[i] + eta * major[i] - eta * eta / (2.0 * r_dev) * normal[i]
+            rb[i] = p[i] - bc[i]
+            rr[i] = p[i] - rc[i]
+        _cross(wb, rb, t1)
+        _cross(wr, rr, t2)
+        vs0 = 0.0
+        vs1 = 0.0
+        vs2 = 0.0
+        ur0 = 0.0
+        ur1 = 0.0
+        ur2 = 0.0
+        vsb = np.empty(3)
+        vsr = np.empty(3)
+        for i in range(3):
+            vsb[i] = vb[i] + t1[i]
+            vsr[i] = vr[i] + t2[i]
+        nb = vsb[0] * normal[0] + vsb[1] * normal[1] + vsb[2] * normal[2]
+        nr = vsr[0] * normal[0] + vsr[1] * normal[1] + vsr[2] * normal[2]
+        vs0 = (vsb[0] - nb * normal[0]) - (vsr[0] - nr * normal[0])
+        vs1 = (vsb[1] - nb * normal[1]) - (vsr[1] - nr * normal[1])
+        vs2 = (vsb[2] - nb * normal[2]) - (vsr[2] - nr * normal[2])
+        ur0 = 0.5 * ((vsb[0] - nb * normal[0]) + (vsr[0] - nr * normal[0]))
+        ur1 = 0.5 * ((vsb[1] - nb * normal[1]) + (vsr[1] - nr * normal[1]))
+        ur2 = 0.5 * ((vsb[2] - nb * normal[2]) + (vsr[2] - nr * normal[2]))
+        vs = math.sqrt(vs0 * vs0 + vs1 * vs1 + vs2 * vs2)
+        u = math.sqrt(ur0 * ur0 + ur1 * ur1 + ur2 * ur2)
+        den = math.sqrt(vs * vs + (s0 * u) ** 2 + vref * vref)
+        c = -mu0 * qk / den
+        f[0] = c * vs0
+        f[1] = c * vs1
+        f[2] = c * vs2
+        if k == nsl // 2:
+            srr_c = vs / max(u, 1e-12)
+        _cross(rb, f, m)
+        for i in range(3):
+            out[i] += f[i]
+            out[3 + i] += m[i]
+        _cross(rr, f, m)
+        for i in range(3):
+            out[6 + i] -= m[i]
+        out[9] += -(f[0] * vs0 + f[1] * vs1 + f[2] * vs2)
+    return srr_c
+
+
+@njit(cache=True)
+def _rot_yz(gy, gz, rm):
+    """R = R_y(γy) R_z(γz) [-]."""
+    cy = math.cos(gy)
+    sy = math.sin(gy)
+    cz = math.cos(gz)
+    sz = math.sin(gz)
+    rm[0, 0] = cy * cz
+    rm[0, 1] = -cy * sz
+    rm[0, 2] = sy
+    rm[1, 0] = sz
+    rm[1, 1] = cz
+    rm[1, 2] = 0.0
+    rm[2, 0] = -sy * cz
+    rm[2, 1] = sy * sz
+    rm[2, 2] = cy
+
+
+@njit(cache=True)
+def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half_d, alpha, lub, gp, a_c, b_c,
+                 r_dev, tang, fb, mb, fr, mr, res, tbuf):
+    """Normal (Hunt–Crossley Hertz) and tangential force of one ball–raceway contact.
+
+    b, v, w: ball centre, velocity, angular velocity; g: groove-curvature centre;
+    vg_lin: velocity of g as a point of the ring (rigid-body, without spin);
+    worb: ball orbital speed [rad/s]: the traction kernel sees all velocities in the
+    frame turning at ω_m about the bearing axis, where the contact is quasi-stationary
+    (sliding velocities do not depend on the frame; rolling speeds do);
+    rcen, vrace, wrace: ring reference point, its velocity and the ring angular
+    velocity (with spin) for the surface velocity; kc [N/m^1.5]; rgroove = (f − ½)D;
+    a_c, b_c: ellipse semi-axes per N^(1/3); tang: unit tangent of the groove circle
+    (rolling direction).  Accumulates the force/moment on the ball (fb, mb) and on the
+    ring (fr, mr about rcen).  res ← Q, δ, u(3), slide-roll ratio, power loss.
+    """
+    d0 = b[0] - g[0]
+    d1 = b[1] - g[1]
+    d2 = b[2] - g[2]
+    ll = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
+    delta = ll - rgroove
+    res[0] = 0.0
+    res[1] = delta
+    res[2] = d0 / ll
+    res[3] = d1 / ll
+    res[4] = d2 / ll
+    res[5] = 0.0
+    res[6] = 0.0
+    if delta <= 0.0:
+        return
+    u0 = d0 / ll
+    u1 = d1 / ll
+    u2 = d2 / ll
+    ddot = u0 * (v[0] - vg_lin[0]) + u1 * (v[1] - vg_lin[1]) + u2 * (v[2] - vg_lin[2])
+    q = kc * delta * math.sqrt(delta) * (1.0 + 1.5 * alpha * ddot)
+    if q <= 0.0:
+        return
+    res[0] = q
+    fb[0] -= q * u0
+    fb[1] -= q * u1
+    fb[2] -= q * u2
+    fr[0] += q * u0
+    fr[1] += q * u1
+    fr[2] += q * u2
+    gr0 = g[0] - rcen[0]
+    gr1 = g[1] - rcen[1]
+    gr2 = g[2] - rcen[2]
+    mr[0] += gr1 * q * u2 - gr2 * q * u1
+    mr[1] += gr2 * q * u0 - gr0 * q * u2
+    mr[2] += gr0 * q * u1 - gr1 * q * u0
+    mode = int(gp[md.G_TRAC])
+    nrm = tbuf[0:3]
+    cen = tbuf[3:6]
+    maj = tbuf[6:9]
+    out = tbuf[10:20]
+    nrm[0] = u0
+    nrm[1] = u1
+    nrm[2] = u2
+    r_c = half_d - 0.5 * delta
+    for i in range(3):
+        cen[i] = b[i] + r_c * nrm[i]
+    _cross(nrm, tang, maj)
+    # velocities relative to the frame orbiting with the ball at worb about the x axis
+    vb_r = tbuf[20:23]
+    wb_r = tbuf[23:26]
+    vr_r = tbuf[26:29]
+    wr_r = tbuf[29:32]
+    vb_r[0] = v[0]
+    vb_r[1] = v[1] + worb * b[2]
+    vb_r[2] = v[2] - worb * b[1]
+    wb_r[0] = w[0] - worb
+    wb_r[1] = w[1]
+    wb_r[2] = w[2]
+    vr_r[0] = vrace[0]
+    vr_r[1] = vrace[1] + worb * rcen[2]
+    vr_r[2] = vrace[2] - worb * rcen[1]
+    wr_r[0] = wrace[0] - worb
+    wr_r[1] = wrace[1]
+    wr_r[2] = wrace[2]
+    # slide-roll ratio at the contact centre (output): v_s / u in the orbiting frame
+    rbv = tbuf[32:35]
+    rrv = tbuf[35:38]
+    t1 = tbuf[38:41]
+    t2 = tbuf[41:44]
+    for i in range(3):
+        rbv[i] = cen[i] - b[i]
+        rrv[i] = cen[i] - rcen[i]
+    _cross(wb_r, rbv, t1)
+    _cross(wr_r, rrv, t2)
+    vs2 = 0.0
+    uu2 = 0.0
+    for i in range(3):
+        sb = vb_r[i] + t1[i]
+        sr = vr_r[i] + t2[i]
+        vs2 += (sb - sr) ** 2
+        uu2 += (0.5 * (sb + sr)) ** 2
+    res[5] = math.sqrt(vs2) / max(math.sqrt(uu2), 1e-12)
+    res[6] = 0.0
+    if mode == 0:
+        return
+    q13 = q ** (1.0 / 3.0)
+    if mode == 1:
+        coulomb_slices(q, a_c * q13, r_dev, cen, nrm, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[md.G_MU0],
+                       gp[md.G_S0], gp[md.G_VREF], int(gp[md.G_NSL]), out)
+    else:
+        for i in range(3):
+            t1[i] = -nrm[i]
+        _sl.contact_traction(q, a_c * q13, b_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, lub,
+                             int(gp[md.G_NSL]), out)
+    res[6] = out[9]
+    for i in range(3):
+        fb[i] += out[i]
+        mb[i] += out[3 + i]
+        fr[i] -= out[i]
+        mr[i] += out[6 + i]
+
+
+@njit(cache=True)
+def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, pts, lubs, loadspec, diag, gdiag):
+    """Time derivative of the state (equations of motion, inertial frame).
+
+    Inner ring (seed 001 Table 3; Lagrange with constant mass matrix):
+    m c̈ = F + m g;  I_t γ̈y = Q_γy − I_p Ω γ̇z;  I_t γ̈z = Q_γz + I_p Ω γ̇y, with the
+    generalized moments Q_γy = M·e_y and Q_γz = M·R_y e_z of the contact moment M about
+    the ring centre, plus the applied loads (moments about the bearing centre of the
+    forces applied at the load point x_L: M_y − x_L F_z, M_z + x_L F_y).
+    Balls (Newton and Euler; a sphere's inertia is isotropic so Euler's equations in
+    the inertial frame reduce to J ω̇ = M, centrifugal and gyroscopic effects arise
+    from the motion itself): m v̇ = F + m g, J ω̇ = M.
+    Cage: m v̇ = F + m g; I_p θ̈ = M·(R_y R_z e_x); I_t β̈y = M·e_y − I_p θ̇ β̇z;
+    I_t β̈z = M·R_y e_z + I_p θ̇ β̇y.
+
+    lubs (2 n_rows × L_SIZE): lubrication parameters of the inner (2r) and outer (2r+1)
+    contacts of row r for the sliced-ellipse kernel.
+    diag (n_balls × NDB) and gdiag (NDG) receive output quantities when diag has rows.
+    """
+    nb = ball_row.shape[0]
+    want = diag.shape[0] > 0
+    omega = speed_at(t, gp)
+    alpha = gp[md.G_ALPHA]
+    g0 = gp[md.G_GX]
+    g1 = gp[md.G_GX + 1]
+    g2 = gp[md.G_GX + 2]
+    rm = np.empty((3, 3))
+    _rot_yz(y[3], y[4], rm)
+    cy = math.cos(y[3])
+    sy = math.sin(y[3])
+    c = y[0:3]
+    cd = y[5:8]
+    ax = np.empty(3)
+    ax[0] = rm[0, 0]
+    ax[1] = rm[1, 0]
+    ax[2] = rm[2, 0]
+    wtilt = np.empty(3)
+    wtilt[0] = y[9] * sy
+    wtilt[1] = y[8]
+    wtilt[2] = y[9] * cy
+    wring = np.empty(3)
+    for i in range(3):
+        wring[i] = wtilt[i] + omega * ax[i]
+    zero3 = np.zeros(3)
+    ocen = np.zeros(3)
+    fring = np.zeros(3)
+    mring = np.zeros(3)
+    fout = np.zeros(3)
+    mout = np.zeros(3)
+    fb = np.empty(3)
+    mb = np.empty(3)
+    bp = np.empty(3)
+    g = np.empty(3)
+    gr = np.empty(3)
+    vg = np.empty(3)
+    tang = np.empty(3)
+    res = np.empty(8)
+    tbuf = np.empty(44)
+    tmp = np.empty(3)
+    loads = np.empty(5)
+    loads_at(t, loadspec, loads)
+    p_in = 0.0
+    p_out = 0.0
+    p_cage = 0.0
+    p_land = 0.0
+    epot = 0.0
+    for k in range(nb):
+        r = ball_row[k]
+        par = rows[r]
+        o = md.N_RING + md.N_BALL * k
+        b = y[o:o + 3]
+        v = y[o + 3:o + 6]
+        w = y[o + 6:o + 9]
+        half_d = 0.5 * par[kn.P_D]
+        worb = (b[1] * v[2] - b[2] * v[1]) / (b[1] * b[1] + b[2] * b[2])
+        for i in range(3):
+            fb[i] = 0.0
+            mb[i] = 0.0
+        # ---- inner raceway: ball in the ring frame, groove centre in its meridian plane
+        for i in range(3):
+            tmp[i] = b[i] - c[i]
+        for i in range(3):
+            bp[i] = rm[0, i] * tmp[0] + rm[1, i] * tmp[1] + rm[2, i] * tmp[2]
+        rr = math.hypot(bp[1], bp[2])
+        cps = bp[1] / rr
+        sps = bp[2] / rr
+        xgi = rowx[r, md.X_XGI]
+        ric = par[kn.P_RIC]
+        for i in range(3):
+            gr[i] = rm[i, 0] * xgi + rm[i, 1] * ric * cps + rm[i, 2] * ric * sps
+            g[i] = c[i] + gr[i]
+            tang[i] = -rm[i, 1] * sps + rm[i, 2] * cps
+        _cross(wtilt, gr, vg)
+        for i in range(3):
+            vg[i] += cd[i]
+        race_contact(b, v, w, g, vg, worb, c, cd, wring, par[kn.P_KI], par[kn.P_RI], half_d, alpha, lubs[2 * r], gp,
+                     rowx[r, md.X_CAI], rowx[r, md.X_CBI], rowx[r, md.X_RDI], tang, fb, mb, fring, mring, res, tbuf)
+        qi = res[0]
+        di = res[1]
+        if want:
+            s = par[kn.P_SIGN]
+            ua = res[2] * ax[0] + res[3] * ax[1] + res[4] * ax[2]
+            urr = 0.0
+            for i in range(3):
+                urr += res[2 + i] * (rm[i, 1] * cps + rm[i, 2] * sps)
+            diag[k, D_QI] = qi
+            diag[k, D_DI] = di
+            diag[k, D_AI] = math.atan2(-s * ua, -urr)
+            diag[k, D_SRI] = res[5]
+            diag[k, D_PI] = res[6]
+            p_in += res[6]
+            if di > 0.0:
+                epot += 0.4 * par[kn.P_KI] * di ** 2.5
+        # ---- outer raceway (fixed)
+        rr = math.hypot(b[1], b[2])
+        cps = b[1] / rr
+        sps = b[2] / rr
+        rgo = rowx[r, md.X_RGO]
+        g[0] = rowx[r, md.X_XGO]
+        g[1] = rgo * cps
+        g[2] = rgo * sps
+        tang[0] = 0.0
+        tang[1] = -sps
+        tang[2] = cps
+        race_contact(b, v, w, g, zero3, worb, ocen, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha, lubs[2 * r + 1], gp,
+                     rowx[r, md.X_CAO], rowx[r, md.X_CBO], rowx[r, md.X_RDO], tang, fb, mb, fout, mout, res, tbuf)
+        if want:
+            s = par[kn.P_SIGN]
+            diag[k, D_QO] = res[0]
+            diag[k, D_DO] = res[1]
+            diag[k, D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
+            diag[k, D_SRO] = res[5]
+            diag[k, D_PO] = res[6]
+            p_out += res[6]
+            if res[1] > 0.0:
+                epot += 0.4 * par[kn.P_KO] * res[1] ** 2.5
+            # orbital speed and spin relative to the orbiting frame
+            r2 = b[1] * b[1] + b[2] * b[2]
+            wm = (b[1] * v[2] - b[2] * v[1]) / r2
+            diag[k, D_WM] = wm
+            wx = w[0] - wm
+            wrad = w[1] * cps + w[2] * sps
+            wtan = -w[1] * sps + w[2] * cps
+            mag = math.sqrt(wx * wx + wrad * wrad + wtan * wtan)
+            diag[k, D_WR] = mag if s * wx >= 0.0 else -mag
+            diag[k, D_BETA] = math.atan2(-wrad * (1.0 if s * wx >= 0 else -1.0), abs(wx))
+            diag[k, D_QC] = 0.0
+            diag[k, D_PC] = 0.0
+        mass = par[kn.P_MASS]
+        jb = par[kn.P_JB]
+        dy[o] = v[0]
+        dy[o + 1] = v[1]
+        dy[o + 2] = v[2]
+        dy[o + 3] = fb[0] / mass + g0
+        dy[o + 4] = fb[1] / mass + g1
+        dy[o + 5] = fb[2] / mass + g2
+        dy[o + 6] = mb[0] / jb
+        dy[o + 7] = mb[1] / jb
+        dy[o + 8] = mb[2] / jb
+    # ---- cages
+    oc0 = md.N_RING + md.N_BALL * nb
+    ncage = cp.shape[0]
+    rcm = np.empty((3, 3))
+    occ = np.empty(3)
+    wc = np.empty(3)
+    fc = np.empty(3)
+    mc = np.empty(3)
+    pc = np.empty(3)
+    nvec = np.empty(3)
+    pw = np.empty(3)
+    vbp = np.empty(3)
+    vcp = np.empty(3)
+    ff = np.empty(3)
+    ftot = np.empty(3)
+    half = np.empty(3)
+    for ci in range(ncage):
+        o = oc0 + md.N_CAGE * ci
+        cpar = cp[ci]
+        th = y[o + 6]
+        by_ = y[o + 7]
+        bz_ = y[o + 8]
+        thd = y[o + 9]
+        byd = y[o + 10]
+        bzd = y[o + 11]
+        _rot_yz(by_, bz_, rm)
+        ct = math.cos(th)
+        st = math.sin(th)
+        # Rc = R_y R_z R_x(θ)
+        for i in range(3):
+            rcm[i, 0] = rm[i, 0]
+            rcm[i, 1] = rm[i, 1] * ct + rm[i, 2] * st
+            rcm[i, 2] = -rm[i, 1] * st + rm[i, 2] * ct
+        occ[0] = cpar[md.C_XP] + y[o]
+        occ[1] = y[o + 1]
+        occ[2] = y[o + 2]
+        vc = y[o + 3:o + 6]
+        cyb = math.cos(by_)
+        syb = math.sin(by_)
+        wc[0] = bzd * syb + thd * rm[0, 0]
+        wc[1] = byd + thd * rm[1, 0]
+        wc[2] = bzd * cyb + thd * rm[2, 0]
+        for i in range(3):
+            fc[i] = 0.0
+            mc[i] = 0.0
+        z = int(cpar[md.C_Z])
+        b0 = int(cpar[md.C_BALL0])
+        rp = cpar[md.C_RP]
+        clr = cpar[md.C_CLR]
+        kcg = cpar[md.C_KC]
+        mu = cpar[md.C_MU]
+        vref = gp[md.G_VREF]
+        if gp[md.G_CAGE_ON] > 0.0:
+            for j in range(z):
+                k = b0 + j
+                ob = md.N_RING + md.N_BALL * k
+                b = y[ob:ob + 3]
+                v = y[ob + 3:ob + 6]
+                w = y[ob + 6:ob + 9]
+                half_d = 0.5 * rows[ball_row[k], kn.P_D]
+                phi = cpar[md.C_PSI0] + 2.0 * math.pi * j / z
+                cph = math.cos(phi)
+                sph = math.sin(phi)
+                for i in range(3):
+                    tmp[i] = b[i] - occ[i]
+                for i in range(3):
+                    bp[i] = rcm[0, i] * tmp[0] + rcm[1, i] * tmp[1] + rcm[2, i] * tmp[2]
+                # ball centre in the pocket frame (t, r, x)
+                u0 = bp[1] - rp * cph
+                u1 = bp[2] - rp * sph
+                ut = -u0 * sph + u1 * cph
+                ur = u0 * cph + u1 * sph
+                ux = bp[0]
+                # no point of a pocket of radius D/2 + clr can touch a ball this close to the centre
+                if math.sqrt(ut * ut + ux * ux + ur * ur) <= clr:
+                    continue
+                best = 0.0
+                ib = -1
+                for ip in range(pts.shape[0]):
+                    e0 = ut - pts[ip, 0]
+                    e1 = ur - pts[ip, 1]
+                    e2 = ux - pts[ip, 2]
+                    pen = half_d - math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+                    if pen > best:
+                        best = pen
+                        ib = ip
+                if ib < 0:
+                    continue
+                e0 = ut - pts[ib, 0]
+                e1 = ur - pts[ib, 1]
+                e2 = ux - pts[ib, 2]
+                dd = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+                # normal (point → ball centre) and contact point in the cage frame
+                nl0 = e2 / dd
+                nl1 = (e1 * cph - e0 * sph) / dd
+                nl2 = (e1 * sph + e0 * cph) / dd
+                pl0 = pts[ib, 2]
+                pl1 = rp * cph + pts[ib, 1] * cph - pts[ib, 0] * sph
+                pl2 = rp * sph + pts[ib, 1] * sph + pts[ib, 0] * cph
+                for i in range(3):
+                    nvec[i] = rcm[i, 0] * nl0 + rcm[i, 1] * nl1 + rcm[i, 2] * nl2
+                    pc[i] = occ[i] + rcm[i, 0] * pl0 + rcm[i, 1] * pl1 + rcm[i, 2] * pl2
+                    pw[i] = pc[i] - b[i]
+                    half[i] = pc[i] - occ[i]
+                _cross(w, pw, vbp)
+                _cross(wc, half, vcp)
+                for i in range(3):
+                    vbp[i] += v[i]
+                    vcp[i] += vc[i]
+                ddot = -(nvec[0] * (v[0] - vcp[0]) + nvec[1] * (v[1] - vcp[1]) + nvec[2] * (v[2] - vcp[2]))
+                qn = kcg * best * math.sqrt(best) * (1.0 + 1.5 * alpha * ddot)
+                if qn <= 0.0:
+                    continue
+                vn = (vbp[0] - vcp[0]) * nvec[0] + (vbp[1] - vcp[1]) * nvec[1] + (vbp[2] - vcp[2]) * nvec[2]
+                vt2 = 0.0
+                for i in range(3):
+                    ff[i] = (vbp[i] - vcp[i]) - vn * nvec[i]
+                    vt2 += ff[i] * ff[i]
+                cf = -mu * qn / math.sqrt(vt2 + vref * vref)
+                ploss = 0.0
+                for i in range(3):
+                    ploss -= cf * ff[i] * ff[i]
+                    ff[i] *= cf
+                    ftot[i] = qn * nvec[i] + ff[i]
+                dy[ob + 3] += ftot[0] / rows[ball_row[k], kn.P_MASS]
+                dy[ob + 4] += ftot[1] / rows[ball_row[k], kn.P_MASS]
+                dy[ob + 5] += ftot[2] / rows[ball_row[k], kn.P_MASS]
+                _cross(pw, ff, tmp)
+                jb = rows[ball_row[k], kn.P_JB]
+                dy[ob + 6] += tmp[0] / jb
+                dy[ob + 7] += tmp[1] / jb
+                dy[ob + 8] += tmp[2] / jb
+                _cross(half, ftot, tmp)
+                for i in range(3):
+                    fc[i] -= ftot[i]
+                    mc[i] -= tmp[i]
+                if want:
+                    diag[k, D_QC] = qn
+                    diag[k, D_PC] = ploss
+                    p_cage += ploss
+                    epot += 0.4 * kcg * best ** 2.5
+        # ---- land guidance
+        guide = int(cpar[md.C_GUIDE])
+        if guide > 0:
+            if guide == 1:
+                e0 = 0.0
+                e1 = occ[1]
+                e2 = occ[2]
+            else:
+                for i in range(3):
+                    tmp[i] = occ[i] - c[i]
+                pr = tmp[0] * ax[0] + tmp[1] * ax[1] + tmp[2] * ax[2]
+                e0 = tmp[0] - pr * ax[0]
+                e1 = tmp[1] - pr * ax[1]
+                e2 = tmp[2] - pr * ax[2]
+            ecc = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+            pen = ecc - cpar[md.C_CLAND]
+            if pen > 0.0:
+                qn = cpar[md.C_KLAND] * pen * math.sqrt(pen)
+                nvec[0] = e0 / ecc
+                nvec[1] = e1 / ecc
+                nvec[2] = e2 / ecc
+                sgn = 1.0 if guide == 1 else -1.0
+                for i in range(3):
+                    half[i] = sgn * nvec[i] * cpar[md.C_RLAND]
+                _cross(wc, half, vcp)
+                for i in range(3):
+                    vcp[i] += vc[i]
+                if guide == 2:
+                    for i in range(3):
+                        tmp[i] = occ[i] + half[i] - c[i]
+                    _cross(wring, tmp, vbp)
+                    for i in range(3):
+                        vbp[i] += cd[i]
+                else:
+                    for i in range(3):
+                        vbp[i] = 0.0
+                vn = 0.0
+                for i in range(3):
+                    vn += (vcp[i] - vbp[i]) * nvec[i]
+                vt2 = 0.0
+                for i in range(3):
+                    ff[i] = (vcp[i] - vbp[i]) - vn * nvec[i]
+                    vt2 += ff[i] * ff[i]
+                cf = -cpar[md.C_MULAND] * qn / math.sqrt(vt2 + vref * vref)
+                for i in range(3):
+                    p_land -= cf * ff[i] * ff[i]
+                    ftot[i] = -qn * nvec[i] + cf * ff[i]
+                    fc[i] += ftot[i]
+                _cross(half, ftot, tmp)
+                for i in range(3):
+                    mc[i] += tmp[i]
+                if guide == 2:
+                    for i in range(3):
+                        fring[i] -= ftot[i]
+                        tmp[i] = occ[i] + half[i] - c[i]
+                    _cross(tmp, ftot, pw)
+                    for i in range(3):
+                        mring[i] -= pw[i]
+                if want:
+                    epot += 0.4 * cpar[md.C_KLAND] * pen ** 2.5
+        mcg = cpar[md.C_MASS]
+        ip = cpar[md.C_IP]
+        itc = cpar[md.C_IT]
+        dy[o] = y[o + 3]
+        dy[o + 1] = y[o + 4]
+        dy[o + 2] = y[o + 5]
+        dy[o + 3] = fc[0] / mcg + g0
+        dy[o + 4] = fc[1] / mcg + g1
+        dy[o + 5] = fc[2] / mcg + g2
+        dy[o + 6] = thd
+        dy[o + 7] = byd
+        dy[o + 8] = bzd
+        dy[o + 9] = (mc[0] * rm[0, 0] + mc[1] * rm[1, 0] + mc[2] * rm[2, 0]) / ip
+        dy[o + 10] = (mc[1] - ip * thd * bzd) / itc
+        dy[o + 11] = (mc[0] * syb + mc[2] * cyb + ip * thd * byd) / itc
+    # ---- inner ring
+    xl = gp[md.G_XL]
+    if gp[md.G_RING_FIXED] > 0.0:
+        for i in range(10):
+            dy[i] = 0.0
+    else:
+        mr = gp[md.G_MR]
+        itr = gp[md.G_ITR]
+        ipr = gp[md.G_IPR]
+        dy[0] = y[5]
+        dy[1] = y[6]
+        dy[2] = y[7]
+        dy[3] = y[8]
+        dy[4] = y[9]
+        dy[5] = (fring[0] + loads[0]) / mr + g0
+        dy[6] = (fring[1] + loads[1]) / mr + g1
+        dy[7] = (fring[2] + loads[2]) / mr + g2
+        qgy = mring[1] + loads[3] - xl * loads[2]
+        qgz = mring[0] * sy + mring[2] * cy + loads[4] + xl * loads[1]
+        dy[8] = (qgy - ipr * omega * y[9]) / itr
+        dy[9] = (qgz + ipr * omega * y[8]) / itr
+    if want:
+        gdiag[GD_FA] = loads[0]
+        gdiag[GD_FRY] = loads[1]
+        gdiag[GD_FRZ] = loads[2]
+        gdiag[GD_MY] = loads[3]
+        gdiag[GD_MZ] = loads[4]
+        gdiag[GD_TQI] = mring[0] * ax[0] + mring[1] * ax[1] + mring[2] * ax[2]
+        gdiag[GD_TQO] = mout[0]
+        gdiag[GD_PI] = p_in
+        gdiag[GD_PO] = p_out
+        gdiag[GD_PC] = p_cage
+        gdiag[GD_PL] = p_land
+        gdiag[GD_W] = omega
+        gdiag[GD_EPOT] = epot
+
+
+def pack_loads(channels) -> np.ndarray:
+    """Pack five load channels for :func:`loads_at`.
+
+    ``channels``: five dicts with keys offset [N or N·m], sines (list of (amplitude,
+    frequency [Hz], phase [rad])), table (tuple of time [s] and value arrays, or None).
+    """
+    blocks = []
+    for ch in channels:
+        blk = [float(ch.get("offset", 0.0)), float(len(ch.get("sines", ())))]
+        for a, f, ph in ch.get("sines", ()):
+            blk += [float(a), float(f), float(ph)]
+        tab = ch.get("table")
+        if tab is None:
+            blk.append(0.0)
+        else:
+            tt, vv = (np.asarray(tab[0], float), np.asarray(tab[1], float))
+            blk.append(float(len(tt)))
+            blk += list(tt) + list(vv)
+        blocks.append(blk)
+    out = [0.0] * 5
+    pos = 5
+    for k, blk in enumerate(blocks):
+        out[k] = float(pos)
+        pos += len(blk)
+    for blk in blocks:
+        out += blk
+    return np.array(out, dtype=float)
+
+
+def constant_loads(fa=0.0, fr_y=0.0, fr_z=0.0, m_y=0.0, m_z=0.0) -> np.ndarray:
+    """Packed constant loads [N, N·m]."""
+    return pack_loads([{"offset": v} for v in (fa, fr_y, fr_z, m_y, m_z)])
+
+
+def evaluate(model, t, y, loadspec, want_diag=True):
+    """Python helper: (dy, diag, gdiag) at (t, y)."""
+    dy = np.zeros_like(y)
+    diag = np.zeros((model.n_balls if want_diag else 0, NDB))
+    gdiag = np.zeros(NDG)
+    rhs(t, y, dy, model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.pts, model.lub_array(), loadspec,
+        diag, gdiag)
+    return dy, diag, gdiag
+
+
+@njit(cache=True)
+def rhs_args(t, y, dy, a):
+    """:func:`rhs` with its arrays in one tuple (the integrator's calling convention)."""
+    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9])
+
+
+def args_of(model, loadspec, diag=None, gdiag=None):
+    """The argument tuple of :func:`rhs_args` (diagnostics off unless arrays are given)."""
+    if diag is None:
+        diag = np.zeros((0, NDB))
+    if gdiag is None:
+        gdiag = np.zeros(NDG)
+    return (model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.pts, model.lub_array(), loadspec, diag,
+            gdiag)

@@ -1,0 +1,459 @@
+"""Running a dynamic simulation: stepping, outputs, streaming to netCDF, checkpoints.
+
+:class:`Stepper` advances a :class:`~.model.Model` between output times with the
+integrator of :mod:`.integrate` and samples the output quantities.  :func:`simulate`
+runs a case (:mod:`.case`) with a progress bar, streams the samples to a netCDF file in
+chunks (memory bounded by the chunk), writes periodic checkpoints and resumes from them.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import BearingSimError, InputError
+from . import forces as fo
+from . import integrate as ig
+from . import model as md
+
+
+class SimulationError(BearingSimError):
+    """The integration failed (diverging step, separated balls); data so far are saved."""
+
+
+@dataclass
+class Stepper:
+    """State and integrator settings of one run (all SI)."""
+
+    model: md.Model
+    loadspec: np.ndarray
+    y: np.ndarray
+    t: float = 0.0
+    h: float = 1e-7
+    tol: float = 1e-6
+    h_min: float = 1e-13
+    max_steps_per_interval: int = 10_000_000
+    steps: int = 0
+    rejected: int = 0
+    atol: np.ndarray = field(default=None, repr=False)
+    rtol: np.ndarray = field(default=None, repr=False)
+
+    def __post_init__(self):
+        if self.atol is None or self.rtol is None:
+            self.atol, self.rtol = md.tolerance_vectors(self.model, self.tol)
+        self._args = fo.args_of(self.model, self.loadspec)
+        self._info = np.zeros(4)
+
+    def advance(self, t_end: float) -> None:
+        """Integrate to t_end [s]; raises :class:`SimulationError` naming the time and body on failure."""
+        status, t, h = ig.advance(fo.rhs_args, self._args, self.t, float(t_end), self.y, self.h, self.atol,
+                                  self.rtol, self.h_min, self.max_steps_per_interval, self._info)
+        self.steps += int(self._info[0])
+        self.rejected += int(self._info[1])
+        if status != ig.OK:
+            self.t = t
+            comp = md.describe_component(self.model, int(self._info[2]))
+            raise SimulationError(f"integration failed at t = {t * 1e3:.6g} ms: {ig.STATUS_TEXT[status]}; "
+                                  f"largest error in {comp}")
+        self.t = t
+        self.h = h
+
+    def sample(self) -> dict:
+        """Output quantities at the current state (SI)."""
+        dy, diag, gd = fo.evaluate(self.model, self.t, self.y, self.loadspec)
+        return sample_from(self.model, self.t, self.y, diag, gd)
+
+
+def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: np.ndarray) -> dict:
+    """Pack one output sample (dictionary of numpy arrays / floats, SI)."""
+    oc = model.cage_offset
+    nc = model.n_cages
+    cage = np.array([y[oc + md.N_CAGE * c + 9] for c in range(nc)])
+    cage_angle = np.array([y[oc + md.N_CAGE * c + 6] for c in range(nc)])
+    cage_pos = np.array([y[oc + md.N_CAGE * c:oc + md.N_CAGE * c + 3] for c in range(nc)])
+    return {
+        "time": t,
+        "inner_ring_displacement": y[0:5].copy(),
+        "inner_ring_velocity": y[5:10].copy(),
+        "applied_load": gd[fo.GD_FA:fo.GD_MZ + 1].copy(),
+        "shaft_speed": gd[fo.GD_W],
+        "cage_angular_speed": cage,
+        "cage_angle": cage_angle,
+        "cage_position": cage_pos,
+        "ball_orbital_speed": diag[:, fo.D_WM].copy(),
+        "ball_spin_speed": diag[:, fo.D_WR].copy(),
+        "ball_pitch_angle": diag[:, fo.D_BETA].copy(),
+        "inner_contact_load": diag[:, fo.D_QI].copy(),
+        "outer_contact_load": diag[:, fo.D_QO].copy(),
+        "inner_contact_angle": diag[:, fo.D_AI].copy(),
+        "outer_contact_angle": diag[:, fo.D_AO].copy(),
+        "inner_approach": diag[:, fo.D_DI].copy(),
+        "outer_approach": diag[:, fo.D_DO].copy(),
+        "inner_slide_roll_ratio": diag[:, fo.D_SRI].copy(),
+        "outer_slide_roll_ratio": diag[:, fo.D_SRO].copy(),
+        "inner_power_loss": diag[:, fo.D_PI].copy(),
+        "outer_power_loss": diag[:, fo.D_PO].copy(),
+        "cage_contact_load": diag[:, fo.D_QC].copy(),
+        "cage_power_loss": diag[:, fo.D_PC].copy(),
+        "inner_ring_friction_torque": gd[fo.GD_TQI],
+        "outer_ring_friction_torque": gd[fo.GD_TQO],
+        "power_loss_inner": gd[fo.GD_PI],
+        "power_loss_outer": gd[fo.GD_PO],
+        "power_loss_cage": gd[fo.GD_PC],
+        "power_loss_land": gd[fo.GD_PL],
+        "contact_potential_energy": gd[fo.GD_EPOT],
+    }
+
+
+# ---- variable metadata (units in attributes) -------------------------------------------
+VARIABLES = {
+    "inner_ring_displacement": (("time", "dof"), "m or rad", "inner-ring displacement (x, y, z, gamma_y, gamma_z)"),
+    "inner_ring_velocity": (("time", "dof"), "m/s or rad/s", "inner-ring velocity"),
+    "applied_load": (("time", "dof"), "N or N*m", "applied load (Fa, Fr_y, Fr_z, M_y, M_z) at the load point"),
+    "shaft_speed": (("time",), "rad/s", "inner-ring (shaft) speed"),
+    "cage_angular_speed": (("time", "cage"), "rad/s", "cage angular speed about the bearing axis"),
+    "cage_angle": (("time", "cage"), "rad", "cage rotation angle about the bearing axis"),
+    "cage_position": (("time", "cage", "xyz"), "m", "cage centre displacement"),
+    "ball_orbital_speed": (("time", "ball"), "rad/s", "ball orbital (revolution) speed"),
+    "ball_spin_speed": (("time", "ball"), "rad/s", "ball spin speed relative to the orbiting frame (Jones sign)"),
+    "ball_pitch_angle": (("time", "ball"), "rad", "ball spin-axis pitch angle beta"),
+    "inner_contact_load": (("time", "ball"), "N", "ball-inner raceway normal load"),
+    "outer_contact_load": (("time", "ball"), "N", "ball-outer raceway normal load"),
+    "inner_contact_angle": (("time", "ball"), "rad", "inner contact angle"),
+    "outer_contact_angle": (("time", "ball"), "rad", "outer contact angle"),
+    "inner_approach": (("time", "ball"), "m", "inner contact approach (negative: gap)"),
+    "outer_approach": (("time", "ball"), "m", "outer contact approach (negative: gap)"),
+    "inner_slide_roll_ratio": (("time", "ball"), "1", "slide-roll ratio at the inner contact centre"),
+    "outer_slide_roll_ratio": (("time", "ball"), "1", "slide-roll ratio at the outer contact centre"),
+    "inner_power_loss": (("time", "ball"), "W", "power loss of the ball-inner raceway contact"),
+    "outer_power_loss": (("time", "ball"), "W", "power loss of the ball-outer raceway contact"),
+    "cage_contact_load": (("time", "ball"), "N", "ball-pocket normal load"),
+    "cage_power_loss": (("time", "ball"), "W", "power loss of the ball-pocket contact"),
+    "inner_ring_friction_torque": (("time",), "N*m", "moment of the contact forces on the inner ring about its axis"),
+    "outer_ring_friction_torque": (("time",), "N*m", "moment of the contact forces on the outer ring about x"),
+    "power_loss_inner": (("time",), "W", "total power loss at the ball-inner raceway contacts"),
+    "power_loss_outer": (("time",), "W", "total power loss at the ball-outer raceway contacts"),
+    "power_loss_cage": (("time",), "W", "total power loss at the ball-pocket contacts"),
+    "power_loss_land": (("time",), "W", "power loss at the cage guiding land"),
+    "contact_potential_energy": (("time",), "J", "elastic energy stored in all contacts"),
+}
+
+
+def stack_samples(samples: list[dict]) -> dict:
+    """Stack a list of samples along time."""
+    out = {"time": np.array([s["time"] for s in samples])}
+    for k in VARIABLES:
+        out[k] = np.stack([np.asarray(s[k]) for s in samples])
+    return out
+
+
+def to_dataset(data: dict, attrs: dict | None = None):
+    """xarray Dataset of stacked samples with units in the attributes."""
+    import xarray as xr
+
+    coords = {"time": ("time", data["time"], {"units": "s"}), "dof": list(md.DOF)}
+    vars_ = {}
+    for k, (dims, units, desc) in VARIABLES.items():
+        vars_[k] = (dims, data[k], {"units": units, "long_name": desc})
+    ds = xr.Dataset(vars_, coords=coords, attrs=attrs or {})
+    return ds
+
+
+class Results:
+    """Results of :func:`simulate`: the output variables (SI) and the run's summary.
+
+    With an output file the data stay on disk (``to_xarray`` opens it lazily) and
+    ``data`` loads them on first use.
+    """
+
+    def __init__(self, data: dict | None, attrs: dict, path: str | None = None, summary: dict | None = None):
+        if data is None and path is None:
+            raise ValueError("Results need data or a file")
+        self._data = data
+        self.attrs = attrs
+        self.path = path
+        self.summary = summary or {}
+
+    def to_xarray(self):
+        """xarray Dataset with units in the attributes (opened from the file when there is one)."""
+        if self.path is not None and self._data is None:
+            import xarray as xr
+
+            return xr.open_dataset(self.path)
+        return to_dataset(self._data, self.attrs)
+
+    @property
+    def data(self) -> dict:
+        """Stacked output variables (numpy arrays, SI)."""
+        if self._data is None:
+            ds = self.to_xarray()
+            self._data = {"time": ds["time"].values}
+            for k in VARIABLES:
+                self._data[k] = ds[k].values
+            ds.close()
+        return self._data
+
+    def steady_state(self, fraction: float = 0.5) -> dict:
+        """Friction torque and heat by contact type averaged over the last ``fraction`` of the run.
+
+        Power loss per contact type [W] (ball–inner, ball–outer, ball–cage, cage land; the
+        rolling resistance is inside the raceway terms when the traction kernel provides it)
+        and the friction torque on the inner ring [N·m].
+        """
+        t = self.data["time"]
+        sel = t >= t[0] + (1 - fraction) * (t[-1] - t[0])
+        out = {}
+        for k in ("power_loss_inner", "power_loss_outer", "power_loss_cage", "power_loss_land",
+                  "inner_ring_friction_torque", "outer_ring_friction_torque"):
+            out[k] = float(np.mean(self.data[k][sel]))
+        cs = self.data["cage_angular_speed"][sel]
+        out["cage_angular_speed"] = float(np.mean(cs))
+        out["heat_generation_total_W"] = out["power_loss_inner"] + out["power_loss_outer"] + \
+            out["power_loss_cage"] + out["power_loss_land"]
+        return out
+
+    def plot(self, variables=("inner_ring_displacement", "cage_angular_speed"), ax=None):
+        """Plot variables against time (matplotlib); returns the figure."""
+        import matplotlib.pyplot as plt
+
+        fig, axes = plt.subplots(len(variables), 1, sharex=True, figsize=(7, 2.5 * len(variables)))
+        axes = np.atleast_1d(axes)
+        for a, name in zip(axes, variables):
+            v = self.data[name]
+            a.plot(self.data["time"] * 1e3, v.reshape(len(v), -1))
+            a.set_ylabel(f"{name} [{VARIABLES[name][1]}]")
+        axes[-1].set_xlabel("time [ms]")
+        return fig
+
+    def plot_hysteresis(self, dof: int = 4, load: int = 4):
+        """Tilt against moment (seed 001 Fig. 6)."""
+        import matplotlib.pyplot as plt
+
+        fig, a = plt.subplots()
+        a.plot(self.data["applied_load"][:, load], np.degrees(self.data["inner_ring_displacement"][:, dof]))
+        a.set_xlabel(f"{md.DOF[load]} load")
+        a.set_ylabel("inclining angle [deg]")
+        return fig
+
+
+def run_stepper(stepper: Stepper, duration: float, output_interval: float, progress=None) -> Results:
+    """Run in memory (tests and the API without a file): samples at every output interval."""
+    n = int(round(duration / output_interval))
+    samples = [stepper.sample()]
+    t0 = stepper.t
+    for i in range(1, n + 1):
+        stepper.advance(t0 + i * output_interval)
+        samples.append(stepper.sample())
+    return Results(data=stack_samples(samples), attrs={})
+
+
+# ---- the case runner ---------------------------------------------------------------------
+def build(case):
+    """(model, loadspec, initial state) of a case; the start is the quasi-static solution."""
+    from ..statics import jones_harris as jh
+
+    model = md.build_model(case.bearing, **case.model_options())
+    loadspec = case.loads.packed()
+    l0 = case.loads.at(0.0)
+    xl = case.load_point
+    static_loads = jh.Loads(fa=l0[0], fr_y=l0[1], fr_z=l0[2], m_y=l0[3] - xl * l0[2], m_z=l0[4] + xl * l0[1])
+    w0 = case.speed.at(0.0)
+    res = jh.solve(case.bearing, static_loads, abs(w0), control=case.control)
+    if not res.converged:
+        res = jh.solve(case.bearing, static_loads, 0.0, control=case.control)
+    if not res.converged:
+        raise InputError("loads", f"no quasi-static equilibrium for the loads at t = 0 ({res.status})",
+                         "the initial loads must be carried by the bearing (e.g. an axial load on an angular "
+                         "contact row)")
+    y0 = md.initial_state(model, res, w0)
+    return model, loadspec, y0, res
+
+
+class _Writer:
+    """Append samples to a netCDF-3 (64-bit offset) file with an unlimited time dimension.
+
+    netCDF-3 keeps the record count in the header, which the library rewrites only when
+    the file is synced: a process killed while writing a chunk leaves the file with the
+    previous record count, i.e. the last complete chunk stays valid.
+    """
+
+    def __init__(self, path: Path, model: md.Model, attrs: dict, start_index: int | None):
+        import netCDF4
+
+        self.path = path
+        if start_index is None or not path.exists():
+            tmp = path.with_name(path.name + ".tmp")
+            ds = netCDF4.Dataset(tmp, "w", format="NETCDF3_64BIT_OFFSET")
+            ds.createDimension("time", None)
+            ds.createDimension("dof", 5)
+            ds.createDimension("ball", model.n_balls)
+            ds.createDimension("cage", model.n_cages)
+            ds.createDimension("xyz", 3)
+            for k, v in attrs.items():
+                ds.setncattr(k, v)
+            tv = ds.createVariable("time", "f8", ("time",))
+            tv.units = "s"
+            ball = ds.createVariable("ball", "i4", ("ball",))
+            ball[:] = np.arange(model.n_balls)
+            row = ds.createVariable("ball_row", "i4", ("ball",))
+            row[:] = model.ball_row
+            for k, (dims, units, desc) in VARIABLES.items():
+                v = ds.createVariable(k, "f8", dims)
+                v.units = units
+                v.long_name = desc
+            ds.close()
+            os.replace(tmp, path)
+            start_index = 0
+        self.ds = netCDF4.Dataset(path, "a")
+        self.index = start_index
+
+    def write(self, samples: list[dict]) -> None:
+        if not samples:
+            return
+        data = stack_samples(samples)
+        i0, i1 = self.index, self.index + len(samples)
+        for k in VARIABLES:
+            self.ds.variables[k][i0:i1] = data[k]
+        self.ds.variables["time"][i0:i1] = data["time"]
+        self.ds.sync()
+        self.index = i1
+
+    def close(self):
+        self.ds.close()
+
+
+def _checkpoint_path(out: Path) -> Path:
+    return out.with_name(out.name + ".ckpt.npz")
+
+
+def _save_checkpoint(path: Path, stepper: Stepper, index: int, fingerprint: str) -> None:
+    tmp = path.with_name(path.name + ".tmp.npz")
+    np.savez(tmp, t=stepper.t, h=stepper.h, y=stepper.y, index=index, steps=stepper.steps,
+             rejected=stepper.rejected, fingerprint=fingerprint)
+    os.replace(tmp, path)
+
+
+def simulate(case, out: str | Path | None = None, resume: bool = False, progress: bool = False,
+             console=None) -> Results:
+    """Run a dynamic case.
+
+    Parameters
+    ----------
+    case : :class:`~.case.Case` or a path to a case TOML file
+    out : netCDF file for the output (streamed in chunks; a checkpoint ``OUT.ckpt.npz``
+        is written after every ``checkpoint_every`` chunks); None keeps the samples in memory
+    resume : continue from the checkpoint of ``out`` (same case required); the trajectory
+        is bitwise the same as an uninterrupted run (the integrator restarts from the
+        checkpointed t, y and step size, and every output time is hit exactly)
+    progress : show a progress bar (simulated time, rate, ETA)
+
+    Returns :class:`Results`.  On a diverging step or when every ball has separated
+    the data so far are saved and :class:`SimulationError` is raised.
+    """
+    from .case import Case, load_case
+
+    if not isinstance(case, Case):
+        case = load_case(case)
+    model, loadspec, y0, static = build(case)
+    fp = case.fingerprint()
+    stepper = Stepper(model, loadspec, y0, tol=case.tolerance, h=min(1e-7, case.output_interval))
+    attrs = {"title": "bearingsim dynamic simulation", "bearing": model.names.get("bearing", ""),
+             "traction": case.traction, "tolerance": case.tolerance, "case_fingerprint": fp,
+             "conventions": "x bearing axis, outer ring fixed, psi = 0 on +y, SI units",
+             "integrator": "Dormand-Prince 5(4) with error control"}
+    n_total = case.n_samples
+    start = 0
+    writer = None
+    ckpt = None
+    out_path = Path(out) if out is not None else None
+    samples_mem: list[dict] = []
+    if out_path is not None:
+        ckpt = _checkpoint_path(out_path)
+        if resume:
+            if not ckpt.exists() or not out_path.exists():
+                raise InputError("--resume", f"no checkpoint {ckpt.name} next to {out_path.name}",
+                                 "run without --resume first")
+            c = np.load(ckpt)
+            if str(c["fingerprint"]) != fp:
+                raise InputError("--resume", "the checkpoint belongs to a different case", "resume with the same case")
+            stepper.y[:] = c["y"]
+            stepper.t = float(c["t"])
+            stepper.h = float(c["h"])
+            stepper.steps = int(c["steps"])
+            stepper.rejected = int(c["rejected"])
+            start = int(c["index"])
+            writer = _Writer(out_path, model, attrs, start)
+        else:
+            writer = _Writer(out_path, model, attrs, None)
+    buf: list[dict] = []
+    if start == 0:
+        buf.append(stepper.sample())
+    t_wall0 = time.perf_counter()
+    prog = None
+    task = None
+    if progress:
+        from rich.progress import BarColumn, Progress, TextColumn, TimeRemainingColumn
+
+        prog = Progress(TextColumn("[bold]simulate"), BarColumn(),
+                        TextColumn("{task.fields[simt]:.3f} / {task.fields[tot]:.3f} ms"),
+                        TextColumn("{task.fields[rate]:.3g} wall s per sim s"), TimeRemainingColumn(),
+                        console=console, transient=False)
+        prog.start()
+        task = prog.add_task("sim", total=n_total, completed=max(start - 1, 0), simt=stepper.t * 1e3,
+                             tot=case.duration * 1e3, rate=0.0)
+    first = start if start > 0 else 1
+    chunks = 0
+    error = None
+    t_sim0 = stepper.t
+
+    def flush(final=False):
+        nonlocal buf, chunks
+        if writer is not None:
+            writer.write(buf)
+            chunks += 1
+            if final or chunks % max(case.checkpoint_every, 1) == 0:
+                _save_checkpoint(ckpt, stepper, writer.index, fp)
+        else:
+            samples_mem.extend(buf)
+        buf = []
+
+    try:
+        for i in range(first, n_total + 1):
+            try:
+                stepper.advance(i * case.output_interval)
+            except SimulationError as exc:
+                error = exc
+                break
+            s = stepper.sample()
+            buf.append(s)
+            if not np.any(s["inner_contact_load"] > 0) and not np.any(s["outer_contact_load"] > 0):
+                error = SimulationError(f"every ball has separated from the raceways at t = {stepper.t * 1e3:.6g} ms "
+                                        "(the loads lift the inner ring off the balls); data so far saved")
+                break
+            if len(buf) >= case.chunk:
+                flush()
+            if prog is not None:
+                el = time.perf_counter() - t_wall0
+                prog.update(task, completed=i, simt=stepper.t * 1e3,
+                            rate=el / max(stepper.t - t_sim0, 1e-30))
+    finally:
+        flush(final=True)
+        if prog is not None:
+            prog.stop()
+        if writer is not None:
+            writer.close()
+    wall = time.perf_counter() - t_wall0
+    summary = {"wall_seconds": wall, "simulated_seconds": stepper.t - t_sim0, "steps": stepper.steps,
+               "rejected_steps": stepper.rejected,
+               "wall_per_simulated_second": wall / max(stepper.t - t_sim0, 1e-30),
+               "initial_static_converged": bool(static.converged)}
+    res = Results(data=stack_samples(samples_mem) if writer is None else None, attrs=attrs,
+                  path=str(out_path) if out_path else None, summary=summary)
+    if error is not None:
+        raise error
+    return res

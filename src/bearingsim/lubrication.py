@@ -1,0 +1,254 @@
+"""Lubrication report of a loaded bearing, and traction curves.
+
+Orchestration only (models live in :mod:`bearingsim.contact.ehl`,
+:mod:`bearingsim.contact.traction`, :mod:`bearingsim.contact.slices`):
+
+* :func:`lubrication_report` — for each loaded ball of a quasi-static solution
+  (:func:`bearingsim.statics.jones_harris.solve`) and each contact (inner, outer): Hertz
+  contact, entraining speed, R_x, R_y, central/minimum film (Hamrock & Dowson 1977 with the
+  Zhu–Cheng thermal factor), Λ, regime, and the tangential force, traction coefficient
+  |F|/Q and power loss that the sliced-contact kernel gives at Jones' ball kinematics
+  (the ball speeds of the static solution, evaluated in the cage frame).
+* :func:`traction_vs_slide_roll` — μ(s) of one contact from the kernel (a ball rolling on
+  a flat race with a prescribed slide–roll ratio), and :func:`plot_traction_curves` — the
+  figure of μ vs s at several loads and speeds (seed 001 Fig. 4 shape).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+
+import numpy as np
+
+from .contact import ehl, hertz
+from .contact import slices as S
+from .errors import InputError
+from .lubricants import get_lubricant
+
+
+def _effective_modulus(bearing) -> float:
+    e = getattr(bearing, "effective_modulus", None)
+    if isinstance(e, (int, float)):
+        return float(e)
+    # bearing systems: look for a component bearing one level down
+    if dataclasses.is_dataclass(bearing):
+        for f in dataclasses.fields(bearing):
+            v = getattr(bearing, f.name)
+            items = v if isinstance(v, (list, tuple)) else [v]
+            for it in items:
+                cand = getattr(it, "effective_modulus", None)
+                if isinstance(cand, (int, float)):
+                    return float(cand)
+                inner = getattr(it, "bearing", None)
+                cand = getattr(inner, "effective_modulus", None)
+                if isinstance(cand, (int, float)):
+                    return float(cand)
+    raise InputError("bearing", "cannot find the effective modulus of the ball/ring materials",
+                     "pass a BallBearing or a system made of them")
+
+
+def _contact_geometry(d, alpha, inner):
+    """Ball centre at (0, 0, 0) here; returns contact point offset and unit normal (race → ball)."""
+    s, c = math.sin(alpha), math.cos(alpha)
+    if inner:
+        n = np.array([-s, c, 0.0])
+    else:
+        n = np.array([s, -c, 0.0])
+    return -0.5 * d * n, n
+
+
+def contact_at_jones_kinematics(lub, q, a, b, r_dev, d, dm, alpha_i, alpha_o, omega, omega_m, omega_r, beta,
+                                inner, n_slices=10):
+    """Kernel output (out[10]) and (u, s_centre) for one contact at Jones' ball kinematics.
+
+    Cage frame (rotates with ω_m about x): ball centre fixed at (0, d_m/2, 0); inner race
+    spins at ω − ω_m, outer at −ω_m about x; the ball at ω_R about the axis at pitch angle β
+    in the (x, r) plane.  The sign of ω_R and β is the one that makes the sliding at the
+    contact centres smallest (the kinematics are defined by pure rolling there).
+    """
+    cb = np.array([0.0, 0.5 * dm, 0.0])
+    cr = np.zeros(3)
+    wr_i = np.array([omega - omega_m, 0.0, 0.0])
+    wr_o = np.array([-omega_m, 0.0, 0.0])
+    best = None
+    for sw in (1.0, -1.0):
+        for sb in (1.0, -1.0):
+            wb = sw * omega_r * np.array([math.cos(sb * beta), math.sin(sb * beta), 0.0])
+            tot = 0.0
+            for inn, al, wr in ((True, alpha_i, wr_i), (False, alpha_o, wr_o)):
+                off, n = _contact_geometry(d, al, inn)
+                p = cb + off
+                vs = np.cross(wb, p - cb) - np.cross(wr, p - cr)
+                vs -= (vs @ n) * n
+                tot += float(np.linalg.norm(vs))
+            if best is None or tot < best[0]:
+                best = (tot, wb)
+    wb = best[1]
+    alpha = alpha_i if inner else alpha_o
+    off, n = _contact_geometry(d, alpha, inner)
+    centre = cb + off
+    major = np.array([math.cos(alpha), math.sin(alpha), 0.0])
+    if inner:
+        major = -major
+    wr = wr_i if inner else wr_o
+    out = np.zeros(10)
+    S.contact_traction(float(q), float(a), float(b), float(r_dev), centre, n, major, cb, np.zeros(3), wb, cr,
+                       np.zeros(3), wr, lub, int(n_slices), out)
+    ub = np.cross(wb, centre - cb)
+    ur = np.cross(wr, centre - cr)
+    e = 0.5 * (ub + ur)
+    e -= (e @ n) * n
+    s = ub - ur
+    s -= (s @ n) * n
+    return out, float(np.linalg.norm(e)), float(np.linalg.norm(s))
+
+
+def lubrication_report(result, lubricant, temperature: float, roughness: float = 0.1e-6, n_slices: int = 10,
+                       model: str = "mixed", fluid_model: str = "physical", starvation_factor: float = 1.0) -> dict:
+    """Per loaded ball and contact: film, Λ, regime, traction and power at Jones' kinematics (all SI).
+
+    Parameters
+    ----------
+    result : StaticResult from :func:`bearingsim.statics.jones_harris.solve`
+    lubricant : library name, TOML path or Lubricant
+    temperature : float  [K]  oil inlet temperature
+    roughness : float  [m]  composite rms roughness of ball and raceway
+    """
+    lub_obj = get_lubricant(lubricant)
+    lub_obj.check_temperature(temperature)
+    if not (math.isfinite(roughness) and roughness >= 0):
+        raise InputError("roughness", f"must be finite and >= 0, got {roughness!r}", 'e.g. "0.1 um"')
+    if not isinstance(n_slices, int) or n_slices < 1:
+        raise InputError("n_slices", f"must be an integer >= 1, got {n_slices!r}", "e.g. 10")
+    from .statics import _kernels as kn
+
+    rows = result.rows_params
+    e_eff = _effective_modulus(result.bearing)
+    balls = result.balls
+    omega = abs(float(result.speed))
+    out_balls = []
+    packs: dict = {}
+    eta0 = lub_obj.dynamic_viscosity(temperature)
+    beta_eta = lub_obj.viscosity_temperature_coefficient(temperature) * eta0
+    for j in range(len(balls["azimuth_rad"])):
+        r = int(balls["row"][j])
+        par = rows[r]
+        d, dm = par[kn.P_D], par[kn.P_DM]
+        f_i, f_o = par[kn.P_RI] / d + 0.5, par[kn.P_RO] / d + 0.5
+        ai, ao = float(balls["inner_contact_angle_rad"][j]), float(balls["outer_contact_angle_rad"][j])
+        entry = {"index": j, "row": r, "azimuth_rad": float(balls["azimuth_rad"][j])}
+        loaded = False
+        for inner, name in ((True, "inner"), (False, "outer")):
+            q = float(balls[f"{name}_load_N"][j])
+            if not q > 0:
+                entry[name] = None
+                continue
+            loaded = True
+            alpha = ai if inner else ao
+            rx, ry = hertz.raceway_radii(d, dm, f_i if inner else f_o, alpha, inner)
+            hz = hertz.point_contact_exact(q, rx, ry, e_eff)
+            key = (r, inner, round(alpha, 6))
+            lub = S.pack_lubrication_parameters(lub_obj, temperature, e_eff, rx, ry, roughness, model=model,
+                                                fluid_model=fluid_model, starvation_factor=starvation_factor)
+            packs[key] = lub
+            r_dev = S.deformed_surface_radius(d, (f_i if inner else f_o) * d)
+            kout, u, s_c = contact_at_jones_kinematics(
+                lub, q, hz.a, hz.b, r_dev, d, dm, ai, ao, omega, float(balls["orbital_speed_rad_s"][j]),
+                float(balls["spin_speed_rad_s"][j]), float(balls["pitch_angle_rad"][j]), inner, n_slices)
+            phi_t = ehl.zhu_cheng_thermal_factor(hz.max_pressure, e_eff, beta_eta, u, lub_obj.thermal_conductivity,
+                                                 s_c / u if u > 0 else 0.0)
+            hc, hmin = ehl.film_thickness(u, q, eta0, lub_obj.pressure_viscosity_coefficient, e_eff, rx, ry,
+                                          thermal_factor=phi_t, starvation_factor=starvation_factor)
+            fpar = ehl.film_parameter(hmin, roughness)
+            reg = ehl.regime(u, q, eta0, lub_obj.pressure_viscosity_coefficient, e_eff, rx, ry) if u > 0 else None
+            ft = float(np.linalg.norm(kout[0:3]))
+            entry[name] = {
+                "load_N": q, "contact_angle_rad": alpha, "semi_major_m": hz.a, "semi_minor_m": hz.b,
+                "max_pressure_Pa": hz.max_pressure, "entrainment_speed_m_s": u, "centre_sliding_speed_m_s": s_c,
+                "rx_m": rx, "ry_m": ry, "thermal_factor": phi_t, "central_film_m": hc, "minimum_film_m": hmin,
+                "film_parameter": fpar if math.isfinite(fpar) else None, "regime": reg,
+                "tangential_force_N": ft, "traction_coefficient": ft / q,
+                "spin_moment_N_m": float(abs(kout[3:6] @ _contact_geometry(d, alpha, inner)[1])),
+                "power_loss_W": float(kout[9]),
+            }
+        if loaded:
+            out_balls.append(entry)
+    return {
+        "lubricant": lub_obj.name, "temperature_K": float(temperature), "roughness_m": float(roughness),
+        "dynamic_viscosity_Pa_s": eta0, "pressure_viscosity_coefficient_1_Pa": lub_obj.pressure_viscosity_coefficient,
+        "speed_rad_s": float(result.speed), "model": model, "fluid_model": fluid_model, "n_slices": n_slices,
+        "converged": bool(result.converged), "balls": out_balls,
+        "total_power_loss_W": float(sum((b[c] or {}).get("power_loss_W", 0.0) for b in out_balls
+                                        for c in ("inner", "outer"))),
+    }
+
+
+def traction_vs_slide_roll(lubricant, temperature: float, load: float, rx: float, ry: float, e_eff: float,
+                           rolling_speed: float, slide_roll, roughness: float = 0.0, n_slices: int = 10,
+                           **options) -> np.ndarray:
+    """Traction coefficient μ = |F_traction|/Q vs slide–roll ratio s [-] for one contact.
+
+    A ball of radius R_x... modelled as rolling on a flat race (r_dev = ∞) at mean speed
+    ``rolling_speed`` [m/s] with surface speeds u(1 ± s/2); rolling resistance is left out so
+    that μ is the traction coefficient of seed 001 Fig. 4.  ``options`` go to
+    :func:`bearingsim.contact.slices.pack_lubrication_parameters` (default model "fluid").
+    """
+    if not (math.isfinite(load) and load > 0):
+        raise InputError("load", f"must be positive, got {load!r}", "")
+    if not (math.isfinite(rolling_speed) and rolling_speed > 0):
+        raise InputError("rolling_speed", f"must be positive, got {rolling_speed!r}", "")
+    options.setdefault("model", "fluid")
+    options["rolling_resistance"] = False
+    lub = S.pack_lubrication_parameters(lubricant, temperature, e_eff, rx, ry, roughness, **options)
+    hz = hertz.point_contact_exact(load, rx, ry, e_eff)
+    radius = 0.005
+    s_arr = np.atleast_1d(np.asarray(slide_roll, dtype=float))
+    if not np.all(np.isfinite(s_arr)):
+        raise InputError("slide_roll", "must be finite", "")
+    mu = np.empty_like(s_arr)
+    out = np.zeros(10)
+    for i, s in enumerate(s_arr):
+        ub, ur = rolling_speed * (1 + s / 2), rolling_speed * (1 - s / 2)
+        S.contact_traction(load, hz.a, hz.b, math.inf, np.zeros(3), np.array([0.0, 0.0, 1.0]),
+                           np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.0, radius]), np.zeros(3),
+                           np.array([ub / radius, 0.0, 0.0]), np.array([0.0, 0.0, -1.0]),
+                           np.array([0.0, ur, 0.0]), np.zeros(3), lub, n_slices, out)
+        mu[i] = math.hypot(out[0], out[1]) / load
+    return mu
+
+
+def plot_traction_curves(lubricant="hub-grease-base-oil", temperature: float = 333.15, loads=(500.0, 2000.0, 5000.0),
+                         speeds=(1.0, 5.0, 20.0), rx: float = 4.7e-3, ry: float = 0.144, e_eff: float = 2.286e11,
+                         s_max: float = 0.05, ax=None, **options):
+    """Figure of μ vs slide–roll ratio at several loads [N] and rolling speeds [m/s] (seed 001 Fig. 4 style).
+
+    Defaults: the inner contact of the seed-001 hub bearing row (D = 11.1 mm, d_m = 61 mm,
+    α = 35°, f_i ≈ 0.52) with steel (E′ = 228.6 GPa).  Returns the matplotlib Figure.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    s = np.linspace(0.0, s_max, 201)
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(6, 4))
+    else:
+        fig = ax.figure
+    for q in loads:
+        for u in speeds:
+            mu = traction_vs_slide_roll(lubricant, temperature, q, rx, ry, e_eff, u, s, **options)
+            ax.plot(s, mu, label=f"Q = {q:g} N, u = {u:g} m/s")
+    ax.set_xlabel("slide-roll ratio s [-]")
+    ax.set_ylabel("traction coefficient μ [-]")
+    name = getattr(lubricant, "name", lubricant)
+    ax.set_title(f"{name}, {temperature - 273.15:.0f} °C")
+    ax.set_xlim(0, s_max)
+    ax.set_ylim(bottom=0)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    return fig
+
+
+__all__ = ["lubrication_report", "traction_vs_slide_roll", "plot_traction_curves", "contact_at_jones_kinematics"]

@@ -1,0 +1,205 @@
+"""Batch quasi-static solver over many operating points (numba), with warm starts.
+
+The model is the Jones–Harris ring equilibrium of :func:`bearingsim.statics._kernels.solve_ring`
+(equations in that module's docstring).  This module only loops over operating points inside
+one compiled function: each point starts from the previous point's ring displacement, ball
+positions and raceway-control state (a continuation along the grid), and falls back to a cold
+start when the warm one fails.  It returns summaries per point, not per-ball tables.
+
+Summary arrays (n = number of points):
+    q [n, 5]  displacement (δx, δy, δz, γy, γz) [m, rad]
+    k [n, 5, 5]  stiffness [N/m, N/rad, N·m/m, N·m/rad]
+    status [n]  kernel status (0 converged, 1 iteration limit, 2 singular, 3 contact past the groove
+                bottom) or 4 when the ring converged but a ball's own balance did not
+    iterations [n], residual [n] [N]
+    p_inner, p_outer [n]  maximum contact pressure [Pa]
+    alpha_inner_min/max, alpha_outer_min/max [n]  contact angles of the loaded balls [rad]
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from . import _kernels as kn
+
+SUMMARY_FIELDS = ("p_inner", "p_outer", "alpha_inner_min", "alpha_inner_max", "alpha_outer_min", "alpha_outer_max")
+
+
+@njit(cache=True)
+def _scale(loads, dm):
+    s = 1.0
+    for k in range(3):
+        s = max(s, abs(loads[k]))
+    for k in range(3, 5):
+        s = max(s, 2.0 * abs(loads[k]) / dm)
+    return s
+
+
+@njit(cache=True)
+def _summarise(rows, ballout, out):
+    """Max pressures and contact-angle extremes of the loaded balls → out[6]."""
+    pi_max = 0.0
+    po_max = 0.0
+    ai_min = 1e9
+    ai_max = -1e9
+    ao_min = 1e9
+    ao_max = -1e9
+    for r in range(rows.shape[0]):
+        par = rows[r]
+        z = int(par[kn.P_Z])
+        for j in range(z):
+            bo = ballout[r, j]
+            qi = bo[2]
+            qo = bo[3]
+            if qi > 0.0:
+                pi_max = max(pi_max, par[kn.P_CPI] * qi ** (1.0 / 3.0))
+                ai = math.atan2(bo[8], bo[9])
+                ai_min = min(ai_min, ai)
+                ai_max = max(ai_max, ai)
+            if qo > 0.0:
+                po_max = max(po_max, par[kn.P_CPO] * qo ** (1.0 / 3.0))
+                ao = math.atan2(bo[10], bo[11])
+                ao_min = min(ao_min, ao)
+                ao_max = max(ao_max, ao)
+    if ai_min > ai_max:
+        ai_min = math.nan
+        ai_max = math.nan
+    if ao_min > ao_max:
+        ao_min = math.nan
+        ao_max = math.nan
+    out[0] = pi_max
+    out[1] = po_max
+    out[2] = ai_min
+    out[3] = ai_max
+    out[4] = ao_min
+    out[5] = ao_max
+
+
+@njit(cache=True)
+def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters, resid, summ,
+                tol_ball, tol_ring, maxit_ball, maxit_ring):
+    """Solve every operating point i (loads[i], omega[i]) in order, warm-starting from point i−1;
+    a point that hits the iteration limit or a singular stiffness is retried from ``q_cold``.
+
+    rows : float[nrow, NPAR]; loads : float[n, 5] [N, N·m]; omega : float[n] [rad/s]
+    control : kernel control code; q_cold : float[5] cold start [m, rad]
+    Outputs (filled): q_out[n, 5], k_out[n, 5, 5], status[n], iters[n], resid[n], summ[n, 6].
+    """
+    n = loads.shape[0]
+    nrow = rows.shape[0]
+    zmax = 0
+    for r in range(nrow):
+        zmax = max(zmax, int(rows[r, kn.P_Z]))
+    dm = rows[0, kn.P_DM]
+    lam0 = 1 if control == kn.CONTROL_INNER else 0
+    lam = np.full((nrow, zmax), lam0, dtype=np.int64)
+    xb = np.zeros((nrow, zmax, 2))
+    kmat = np.zeros((5, 5))
+    ballout = np.zeros((nrow, zmax, 12))
+    q = q_cold.copy()
+    qtry = np.empty(5)
+    sm = np.empty(6)
+    for i in range(n):
+        ld = loads[i]
+        sc = _scale(ld, dm)
+        for k in range(5):
+            qtry[k] = q[k]
+        st, it, rn, bconv = kn.solve_ring(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
+                                          tol_ball, tol_ring, maxit_ball, maxit_ring, sc)
+        tot = it
+        if st == 1 or st == 2:
+            # cold start
+            for k in range(5):
+                qtry[k] = q_cold[k]
+            lam[:, :] = lam0
+            xb[:, :, :] = 0.0
+            st, it, rn, bconv = kn.solve_ring(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
+                                              tol_ball, tol_ring, maxit_ball, maxit_ring, sc)
+            tot += it
+        if st == 0 and not bconv:
+            st = 4
+        status[i] = st
+        iters[i] = tot
+        resid[i] = rn
+        for k in range(5):
+            q_out[i, k] = qtry[k]
+            for m in range(5):
+                k_out[i, k, m] = kmat[k, m]
+        _summarise(rows, ballout, sm)
+        for k in range(6):
+            summ[i, k] = sm[k]
+        if st == 0 or st == 4:
+            # the ring equilibrium is good (status 4: only an unloaded ball's own balance failed)
+            for k in range(5):
+                q[k] = qtry[k]
+        else:
+            # do not continue from a failed point
+            lam[:, :] = lam0
+            xb[:, :, :] = 0.0
+    return 0
+
+
+def order_points(loads: np.ndarray, omega: np.ndarray, bits: int = 5) -> np.ndarray:
+    """A visiting order of scattered operating points that keeps neighbours close (Morton / Z-order
+    curve over the normalised (loads, speed) space, ``bits`` per axis) → permutation indices."""
+    x = np.column_stack([np.asarray(loads, dtype=float).reshape(-1, 5), np.asarray(omega, dtype=float)])
+    lo = x.min(axis=0)
+    span = x.max(axis=0) - lo
+    z = ((x - lo) / np.where(span > 0, span, 1.0) * (2**bits - 1)).astype(np.int64)
+    code = np.zeros(len(x), dtype=np.int64)
+    for bit in range(bits - 1, -1, -1):
+        for j in range(x.shape[1]):
+            code = (code << 1) | ((z[:, j] >> bit) & 1)
+    return np.argsort(code, kind="stable")
+
+
+def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "outer",
+              q_start: np.ndarray | None = None, reorder: bool = False) -> dict:
+    """Solve many operating points of one bearing (or bearing system) in one compiled loop.
+
+    Parameters
+    ----------
+    bearing : BallBearing or BearingSystem
+    loads : float[n, 5]  (Fa, Fr_y, Fr_z, M_y, M_z) [N, N·m]; order the points so that neighbours are
+        close (grid order) to profit from the warm starts
+    omega : float[n]  inner-ring speed [rad/s]
+    control : ``"outer"``, ``"inner"`` or ``"auto"``
+    q_start : cold start [m, rad] (default: the bearing's initial guess for the first point)
+    reorder : visit scattered points along a Z-order curve (:func:`order_points`); results are
+        returned in the caller's order
+
+    Returns a dict of arrays (see the module docstring).
+    """
+    from .jones_harris import CONTROLS, MAXIT_BALL, MAXIT_RING, TOL_BALL, TOL_RING, Loads, initial_guess, rows_of
+
+    loads = np.ascontiguousarray(np.asarray(loads, dtype=float).reshape(-1, 5))
+    n = loads.shape[0]
+    omega = np.ascontiguousarray(np.abs(np.broadcast_to(np.asarray(omega, dtype=float), (n,))))
+    rows = np.ascontiguousarray(rows_of(bearing))
+    perm = None
+    if reorder and n > 1:
+        perm = order_points(loads, omega)
+        loads = np.ascontiguousarray(loads[perm])
+        omega = np.ascontiguousarray(omega[perm])
+    if q_start is None:
+        q_start = initial_guess(bearing, Loads(*loads[0])) if n else np.zeros(5)
+    out = {
+        "q": np.zeros((n, 5)), "k": np.zeros((n, 5, 5)), "status": np.zeros(n, dtype=np.int64),
+        "iterations": np.zeros(n, dtype=np.int64), "residual": np.zeros(n), "summary": np.zeros((n, 6)),
+    }
+    if n:
+        solve_batch(rows, loads, omega, CONTROLS[control], np.asarray(q_start, dtype=float), out["q"], out["k"],
+                    out["status"], out["iterations"], out["residual"], out["summary"], TOL_BALL, TOL_RING,
+                    MAXIT_BALL, MAXIT_RING)
+    if perm is not None:
+        for key in list(out):
+            v = np.empty_like(out[key])
+            v[perm] = out[key]
+            out[key] = v
+    out["converged"] = out["status"] == 0
+    for j, name in enumerate(SUMMARY_FIELDS):
+        out[name] = out["summary"][:, j]
+    return out

@@ -1,0 +1,449 @@
+"""Design-space maps: the quasi-static solution over a grid of loads, speeds and preloads.
+
+``map_grid(bearing, fa=..., fr=..., moment=..., speed=..., preload=...)`` evaluates every point of
+the grid with the batch kernel (:mod:`bearingsim.statics._batch`: warm starts from the neighbouring
+point, serpentine order inside each block) and returns an :class:`xarray.Dataset` with the
+displacements, the 5×5 stiffness, the contact-angle extremes, the maximum pressures and the
+convergence flags over the grid.
+
+Execution: the grid is cut into rectangular blocks (the last two grid dimensions, split so that a
+block holds at most ``chunk_points`` points).  Each block is solved independently and
+deterministically, so the result does not depend on where the blocks run: in this process
+(``workers=1``), in a local process pool (default, one worker per core), or on a Dask cluster
+(``scheduler="tcp://host:port"`` or a ``distributed.Client``).  With ``out=path`` the blocks are
+streamed into a netCDF file under a temporary name, renamed at the end; an interrupt or an error
+removes the temporary file (never a corrupt map).
+
+Grid axes (SI inside; the CLI parses units):
+    preload [N]   (bearing systems only; each value rebuilds the set's preload offsets)
+    fa [N], fr [N] (radial load along +y), fr_z [N], moment [N·m] (about z, the moment of Fr_y at the
+    load point), m_y [N·m], speed [rad/s]
+A single value is a scalar coordinate; a grid "START:STOP:COUNT" (inclusive) is a dimension.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from .errors import InputError
+
+#: grid axes in storage order (outermost first), with their dimension for units.py and SI unit
+AXES = (("preload", "force", "N"), ("fa", "force", "N"), ("fr", "force", "N"), ("fr_z", "force", "N"),
+        ("m_y", "moment", "N m"), ("moment", "moment", "N m"), ("speed", "speed", "rad/s"))
+_LOAD_INDEX = {"fa": 0, "fr": 1, "fr_z": 2, "m_y": 3, "moment": 4}
+DOF = ("x", "y", "z", "gamma_y", "gamma_z")
+#: maps with fewer points run in this process unless ``workers`` is given
+SERIAL_BELOW = 20000
+
+
+def parse_grid(spec, dimension: str, field: str) -> np.ndarray:
+    """``"START:STOP:COUNT"`` (inclusive, COUNT ≥ 2, STOP > START) or a single value → SI array.
+
+    Python numbers (and lists/arrays of numbers) are taken as SI; strings are parsed with units.
+
+    START and STOP take units as in :func:`bearingsim.units.parse_quantity` (``"1 kN:5 kN:9"``;
+    bare numbers in the default unit of ``dimension``).  A list of values is also accepted.
+    """
+    from .units import parse_quantity
+
+    if isinstance(spec, np.ndarray | list | tuple):
+        # numbers are SI already; strings carry units
+        vals = np.array([float(v) if isinstance(v, int | float | np.number) and not isinstance(v, bool)
+                         else parse_quantity(v, dimension, field) for v in spec], dtype=float)
+        if vals.size == 0:
+            raise InputError(field, "empty list of values", "give at least one value")
+        return vals
+    if isinstance(spec, str) and ":" in spec:
+        parts = spec.split(":")
+        if len(parts) != 3:
+            raise InputError(field, f"grid spec {spec!r} is not START:STOP:COUNT", 'e.g. "1000:5000:9"')
+        start = parse_quantity(parts[0].strip(), dimension, field)
+        stop = parse_quantity(parts[1].strip(), dimension, field)
+        try:
+            count = int(parts[2].strip())
+        except ValueError:
+            raise InputError(field, f"COUNT in {spec!r} must be an integer", 'e.g. "1000:5000:9"') from None
+        if count < 2:
+            raise InputError(field, f"COUNT must be at least 2 in {spec!r}", "use a single value for one point")
+        if not stop > start:
+            raise InputError(field, f"grid {spec!r} has STOP ≤ START", f"write it increasing, e.g. "
+                             f'"{parts[1].strip()}:{parts[0].strip()}:{count}"')
+        return np.linspace(start, stop, count)
+    return np.array([parse_quantity(spec, dimension, field)], dtype=float)
+
+
+# ---- blocks ------------------------------------------------------------------------------------
+def _blocks(shape: tuple, chunk_points: int):
+    """Rectangular blocks of the grid: tuples of slices (outer indices fixed, last two dims split)."""
+    if len(shape) == 0:
+        return [()]
+    nb = shape[-1]
+    na = shape[-2] if len(shape) >= 2 else 1
+    rb = max(1, min(nb, chunk_points))
+    ra = max(1, min(na, chunk_points // rb))
+    outer = shape[:-2] if len(shape) >= 2 else ()
+    out = []
+    for idx in np.ndindex(*outer) if outer else [()]:
+        for a0 in range(0, na, ra):
+            for b0 in range(0, nb, rb):
+                sl = tuple(slice(i, i + 1) for i in idx)
+                if len(shape) >= 2:
+                    sl += (slice(a0, min(a0 + ra, na)),)
+                sl += (slice(b0, min(b0 + rb, nb)),)
+                out.append(sl)
+    return out
+
+
+def _with_preload(bearing, preload: float):
+    from .statics import arrangements as ar
+
+    if not isinstance(bearing, ar.BearingSystem):
+        raise InputError("preload", "a preload grid needs a bearing set or double-row unit",
+                         "use an arrangement (e.g. skf-7011-cdga-hc-db) or drop --preload")
+    if preload == 0:
+        rows = tuple(dataclasses.replace(r, axial_offset=0.0) for r in bearing.rows)
+    else:
+        e = ar._preload_offset(bearing.rows, preload)
+        rows = tuple(dataclasses.replace(r, axial_offset=e) for r in bearing.rows)
+    return dataclasses.replace(bearing, rows=rows, preload=float(preload))
+
+
+def solve_block(bearing, axes: dict, block: tuple, control: str = "outer") -> dict:
+    """Solve one rectangular block of the grid (runs anywhere: local, process pool, Dask worker).
+
+    ``axes`` maps every axis name of :data:`AXES` to its value array (length 1 for scalars);
+    ``block`` holds one slice per grid dimension (the axes with more than one value, in AXES order).
+    Points are visited in serpentine order so that each starts next to the previous one.
+    """
+    from .statics._batch import run_batch
+
+    dims = [name for name, _, _ in AXES if len(axes[name]) > 1]
+    vals = {name: np.asarray(axes[name], dtype=float) for name, _, _ in AXES}
+    sub = {d: vals[d][s] for d, s in zip(dims, block)}
+    for name, _, _ in AXES:
+        if name not in sub:
+            sub[name] = vals[name]
+    shape = tuple(len(sub[d]) for d in dims)
+    # serpentine order over the block (last dim alternates direction)
+    grids = np.meshgrid(*[np.arange(n) for n in shape], indexing="ij") if dims else []
+    flat = [g.ravel() for g in grids]
+    if dims and len(shape) >= 1:
+        nlast = shape[-1]
+        rowid = np.arange(int(np.prod(shape))) // nlast
+        rev = (rowid % 2) == 1
+        flat[-1] = np.where(rev, nlast - 1 - flat[-1], flat[-1])
+    npts = int(np.prod(shape)) if dims else 1
+    pick = {d: sub[d][flat[i]] for i, d in enumerate(dims)}
+    for name, _, _ in AXES:
+        if name not in pick:
+            pick[name] = np.full(npts, sub[name][0])
+    pre = pick["preload"]
+    res = {"q": np.zeros((npts, 5)), "k": np.zeros((npts, 5, 5)), "status": np.zeros(npts, dtype=np.int64),
+           "iterations": np.zeros(npts, dtype=np.int64), "residual": np.zeros(npts), "summary": np.zeros((npts, 6))}
+    # one batch per preload value (the preload changes the bearing)
+    for pv in np.unique(pre) if "preload" in dims or axes.get("_preload_given") else [None]:
+        sel = np.ones(npts, dtype=bool) if pv is None else (pre == pv)
+        brg = bearing if pv is None else _with_preload(bearing, float(pv))
+        loads = np.zeros((int(sel.sum()), 5))
+        for name, j in _LOAD_INDEX.items():
+            loads[:, j] = pick[name][sel]
+        out = run_batch(brg, loads, pick["speed"][sel], control)
+        for key in res:
+            res[key][sel] = out[key]
+    # back to the block's C order
+    order = np.ravel_multi_index(tuple(flat), shape) if dims else np.zeros(1, dtype=np.int64)
+    back = {}
+    for key, v in res.items():
+        w = np.empty_like(v)
+        w[order] = v
+        back[key] = w.reshape(shape + v.shape[1:])
+    return back
+
+
+# ---- output ------------------------------------------------------------------------------------
+_VARS = {
+    # name: (source key, extra dims, dtype, units, long name)
+    "displacement": ("q", ("dof",), "f8", "m | rad", "inner-ring displacement (x, y, z, gamma_y, gamma_z)"),
+    "stiffness": ("k", ("dof", "dof2"), "f8", "N/m | N/rad | N m/m | N m/rad", "5x5 stiffness matrix"),
+    "status": ("status", (), "i4", "1", "0 converged, 1 iteration limit, 2 singular, 3 contact past groove bottom, 4 a ball not converged"),
+    "converged": ("converged", (), "i1", "1", "1 when the point converged"),
+    "iterations": ("iterations", (), "i4", "1", "ring Newton iterations (warm + cold start)"),
+    "residual": ("residual", (), "f8", "N", "max |ring residual|, moments divided by the pitch radius"),
+    "max_pressure_inner": ("p_inner", (), "f8", "Pa", "maximum inner contact pressure"),
+    "max_pressure_outer": ("p_outer", (), "f8", "Pa", "maximum outer contact pressure"),
+    "contact_angle_inner_min": ("alpha_inner_min", (), "f8", "rad", "smallest inner contact angle, loaded balls"),
+    "contact_angle_inner_max": ("alpha_inner_max", (), "f8", "rad", "largest inner contact angle, loaded balls"),
+    "contact_angle_outer_min": ("alpha_outer_min", (), "f8", "rad", "smallest outer contact angle, loaded balls"),
+    "contact_angle_outer_max": ("alpha_outer_max", (), "f8", "rad", "largest outer contact angle, loaded balls"),
+}
+_SUMMARY_INDEX = {"p_inner": 0, "p_outer": 1, "alpha_inner_min": 2, "alpha_inner_max": 3,
+                  "alpha_outer_min": 4, "alpha_outer_max": 5}
+
+
+def _block_var(block_res: dict, key: str):
+    if key == "converged":
+        return (block_res["status"] == 0).astype(np.int8)
+    if key in _SUMMARY_INDEX:
+        return block_res["summary"][..., _SUMMARY_INDEX[key]]
+    return block_res[key]
+
+
+class _MemorySink:
+    def __init__(self, dims, shape):
+        self.dims, self.shape = dims, shape
+        self.data = {}
+        for name, (key, extra, dt, _, _) in _VARS.items():
+            ex = (5,) * len(extra)
+            self.data[name] = np.zeros(shape + ex, dtype=dt)
+
+    def write(self, block, res):
+        for name, (key, _, _, _, _) in _VARS.items():
+            self.data[name][block] = _block_var(res, key)
+
+
+class _NetCDFSink:
+    def __init__(self, path: Path, dims, shape, axes, attrs):
+        import netCDF4
+
+        self.final = Path(path)
+        fd, tmp = tempfile.mkstemp(prefix=self.final.name + ".", suffix=".part", dir=self.final.parent or ".")
+        os.close(fd)
+        self.tmp = Path(tmp)
+        self.nc = netCDF4.Dataset(self.tmp, "w", format="NETCDF4")
+        for d, n in zip(dims, shape):
+            self.nc.createDimension(d, n)
+        self.nc.createDimension("dof", 5)
+        self.nc.createDimension("dof2", 5)
+        units = {name: u for name, _, u in AXES}
+        for name, _, _ in AXES:
+            v = axes[name]
+            if name in dims:
+                var = self.nc.createVariable(name, "f8", (name,))
+                var[:] = v
+            else:
+                var = self.nc.createVariable(name, "f8", ())
+                var.assignValue(float(v[0]))
+            var.units = units[name]
+        self.nc.createVariable("dof", str, ("dof",))[:] = np.array(DOF, dtype=object)
+        self.nc.createVariable("dof2", str, ("dof2",))[:] = np.array(DOF, dtype=object)
+        chunk = tuple(1 for _ in dims[:-2]) + tuple(shape[-2:])
+        for name, (key, extra, dt, u, long) in _VARS.items():
+            var = self.nc.createVariable(name, dt, tuple(dims) + extra, zlib=False,
+                                         chunksizes=(chunk + (5,) * len(extra)) if dims else None)
+            var.units = u
+            var.long_name = long
+        for k, v in attrs.items():
+            setattr(self.nc, k, v)
+
+    def write(self, block, res):
+        for name, (key, _, _, _, _) in _VARS.items():
+            self.nc.variables[name][block] = _block_var(res, key)
+
+    def close(self):
+        self.nc.close()
+        os.replace(self.tmp, self.final)
+
+    def abort(self):
+        try:
+            self.nc.close()
+        except Exception:  # noqa: BLE001  (already closed or broken: remove the file anyway)
+            pass
+        self.tmp.unlink(missing_ok=True)
+
+
+def _dataset_from_memory(sink: _MemorySink, axes: dict, attrs: dict):
+    import xarray as xr
+
+    coords = {}
+    units = {name: u for name, _, u in AXES}
+    for name, _, _ in AXES:
+        v = axes[name]
+        coords[name] = (name, v, {"units": units[name]}) if name in sink.dims else ((), float(v[0]),
+                                                                                     {"units": units[name]})
+    coords["dof"] = ("dof", list(DOF))
+    coords["dof2"] = ("dof2", list(DOF))
+    data = {}
+    for name, (key, extra, dt, u, long) in _VARS.items():
+        data[name] = (tuple(sink.dims) + extra, sink.data[name], {"units": u, "long_name": long})
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+# ---- executors -----------------------------------------------------------------------------------
+def _connect(scheduler, timeout: float):
+    try:
+        from distributed import Client
+    except ImportError:  # pragma: no cover
+        raise InputError("scheduler", "dask.distributed is not installed", "pip install 'dask[distributed]'") from None
+    if not isinstance(scheduler, str):
+        return scheduler, False  # a Client given by the caller
+    try:
+        return Client(scheduler, timeout=f"{timeout}s", set_as_default=False), True
+    except (OSError, TimeoutError, ValueError) as exc:
+        raise InputError("scheduler", f"cannot reach the Dask scheduler at {scheduler!r} ({type(exc).__name__}: "
+                         f"{exc})", "start it (dask scheduler) or check the address, e.g. tcp://127.0.0.1:8786") \
+            from None
+
+
+def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.0, preload=None,
+             control: str = "outer", out: str | Path | None = None, workers: int | None = None,
+             scheduler=None, chunk_points: int = 2000, progress: bool = False, scheduler_timeout: float = 3.0):
+    """Quasi-static map of ``bearing`` over a grid → :class:`xarray.Dataset`.
+
+    Parameters
+    ----------
+    bearing : BallBearing, BearingSystem, or a catalogue name / TOML path
+    fa, fr, fr_z, m_y, moment : value or grid ([N], [N·m]); a string "START:STOP:COUNT" (units allowed)
+        or a list/array of SI values or a single value.  ``fr`` is along +y, ``moment`` about z.
+    speed : inner-ring speed, value or grid (strings: bare number = rpm; Python numbers and arrays: [rad/s])
+    preload : preload force per row [N] (bearing systems), value or grid; None keeps the bearing's own
+    control : raceway control ``"outer"``, ``"inner"``, ``"auto"``
+    out : netCDF path; the map streams to it (temporary name, renamed at the end) and the returned
+        Dataset is opened lazily from it
+    workers : local processes (default: all cores for maps of SERIAL_BELOW points or more, else this
+        process; 1 = in this process)
+    scheduler : Dask scheduler address or a ``distributed.Client`` (overrides ``workers``)
+    chunk_points : maximum points per block
+    progress : show a rich progress bar
+    """
+    if isinstance(bearing, str | Path):
+        from .io import load_bearing
+
+        bearing = load_bearing(bearing)
+    if control not in ("outer", "inner", "auto"):
+        raise InputError("control", f"unknown raceway control {control!r}", "use outer, inner or auto")
+    spec = {"fa": fa, "fr": fr, "fr_z": fr_z, "m_y": m_y, "moment": moment, "speed": speed,
+            "preload": 0.0 if preload is None else preload}
+    axes = {}
+    for name, dim, _ in AXES:
+        v = spec[name]
+        if isinstance(v, int | float | np.floating | np.integer) and not isinstance(v, bool):
+            arr = np.array([float(v)])
+        else:
+            arr = parse_grid(v, dim, name)
+        if not np.all(np.isfinite(arr)):
+            raise InputError(name, "values must be finite", "check the grid")
+        axes[name] = arr
+    if preload is not None:
+        axes["_preload_given"] = True
+        if np.any(axes["preload"] < 0):
+            raise InputError("preload", "must not be negative", "give a preload ≥ 0 N")
+        _with_preload(bearing, float(axes["preload"][0]))  # validate early (raises InputError)
+    if not isinstance(chunk_points, int) or chunk_points < 1:
+        raise InputError("chunk_points", f"must be a positive integer, got {chunk_points!r}", "e.g. 2000")
+    dims = [name for name, _, _ in AXES if len(axes[name]) > 1]
+    shape = tuple(len(axes[d]) for d in dims)
+    blocks = _blocks(shape, chunk_points)
+    npts = int(np.prod(shape)) if shape else 1
+    attrs = {"bearing": getattr(bearing, "name", "bearing"), "control": control, "model": "Jones-Harris quasi-static",
+             "source": "bearingsim.sweep.map_grid", "stiffness_order": "x, y, z, gamma_y, gamma_z",
+             "load_convention": "loads on the inner ring at the load point; fr along +y, moment about z"}
+    client = own_client = None
+    if scheduler is not None:
+        client, own_client = _connect(scheduler, scheduler_timeout)  # before any file is created
+    if workers is not None and (not isinstance(workers, int) or workers < 1):
+        raise InputError("workers", f"must be a positive integer, got {workers!r}", "e.g. --workers 2")
+    if workers is not None:
+        nworkers = workers
+    else:
+        # starting processes costs seconds (interpreter + compiled kernels): small maps run here
+        nworkers = 1 if npts < SERIAL_BELOW else (os.cpu_count() or 1)
+    sink = _NetCDFSink(Path(out), dims, shape, axes, attrs) if out is not None else _MemorySink(dims, shape)
+    bar = None
+    try:
+        if progress:
+            from rich.progress import BarColumn, Progress, TextColumn, TimeRemainingColumn
+
+            bar = Progress(TextColumn("map"), BarColumn(), TextColumn("{task.completed}/{task.total} points"),
+                           TimeRemainingColumn())
+            bar.start()
+            task = bar.add_task("map", total=npts)
+
+        def done(block, res):
+            sink.write(block, res)
+            if bar is not None:
+                bar.advance(task, int(res["status"].size))
+
+        if client is not None:
+            from distributed import as_completed
+
+            futs = {}
+            bfut = client.scatter(bearing, broadcast=True, hash=False)
+            for b in blocks:
+                futs[client.submit(solve_block, bfut, axes, b, control, pure=False)] = b
+            for f in as_completed(list(futs)):
+                done(futs.pop(f), f.result())  # pop: the result is released once written
+                f.release()
+        elif nworkers == 1 or len(blocks) == 1:
+            for b in blocks:
+                done(b, solve_block(bearing, axes, b, control))
+        else:
+            from concurrent.futures import ProcessPoolExecutor, as_completed as cf_completed
+
+            import multiprocessing as mp
+
+            ctx = mp.get_context("spawn")
+            with ProcessPoolExecutor(max_workers=min(nworkers, len(blocks)), mp_context=ctx) as ex:
+                futs = {ex.submit(solve_block, bearing, axes, b, control): b for b in blocks}
+                try:
+                    for f in cf_completed(list(futs)):
+                        done(futs.pop(f), f.result())  # pop: the result is released once written
+                except BaseException:
+                    for f in futs:
+                        f.cancel()
+                    raise
+        if bar is not None:
+            bar.stop()
+            bar = None
+    except BaseException:
+        if bar is not None:
+            bar.stop()
+        if isinstance(sink, _NetCDFSink):
+            sink.abort()
+        if own_client:
+            client.close()
+        raise
+    if own_client:
+        client.close()
+    if isinstance(sink, _NetCDFSink):
+        sink.close()
+        import xarray as xr
+
+        return xr.open_dataset(sink.final)
+    return _dataset_from_memory(sink, axes, attrs)
+
+
+def plot_map(ds, path: str | Path, var: str = "stiffness", i: int = 0, j: int = 0):
+    """Write a stiffness map K[i, j] over the (first two) grid dimensions to ``path`` (matplotlib)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    k = ds[var].isel(dof=i, dof2=j) if var == "stiffness" else ds[var]
+    grid_dims = [d for d in k.dims]
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    label = f"K[{DOF[i]},{DOF[j]}]" if var == "stiffness" else var
+    if len(grid_dims) >= 2:
+        extra = {d: 0 for d in grid_dims[:-2]}
+        kk = k.isel(**extra) if extra else k
+        y, x = grid_dims[-2], grid_dims[-1]
+        m = ax.pcolormesh(ds[x].values, ds[y].values, kk.values, shading="auto")
+        fig.colorbar(m, ax=ax, label=f"{label} [{ds[var].attrs.get('units', '')}]")
+        ax.set_xlabel(f"{x} [{ds[x].attrs.get('units', '')}]")
+        ax.set_ylabel(f"{y} [{ds[y].attrs.get('units', '')}]")
+    elif len(grid_dims) == 1:
+        x = grid_dims[0]
+        ax.plot(ds[x].values, k.values, "o-")
+        ax.set_xlabel(f"{x} [{ds[x].attrs.get('units', '')}]")
+        ax.set_ylabel(label)
+    ax.set_title(f"{ds.attrs.get('bearing', '')}: {label}")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return Path(path)

@@ -1,0 +1,66 @@
+"""The dynamic engine's integrator (DOPRI5) on problems with known solutions.
+
+Order: the harmonic oscillator y'' = −ω² y (solution cos ωt) with constant steps must
+show global error ∝ h⁵ (Hairer, Nørsett & Wanner, Solving ODEs I, §II.5: DOPRI5 is of
+order 5).  Error control: the adaptive run's error must follow the tolerance.
+"""
+
+import math
+
+import numpy as np
+from numba import njit
+
+from bearingsim.dynamics import integrate as ig
+
+
+@njit(cache=True)
+def oscillator(t, y, dy, args):
+    w = args[0]
+    dy[0] = y[1]
+    dy[1] = -w * w * y[0]
+
+
+@njit(cache=True)
+def forced(t, y, dy, args):
+    # y' = -y + sin t, y(0) = 0: y = (sin t − cos t + e^(−t)) / 2
+    dy[0] = -y[0] + math.sin(t)
+
+
+def test_fifth_order_convergence():
+    w = 2.0 * math.pi
+    args = (w,)
+    errs = []
+    for n in (10, 20, 40, 80):
+        y = np.array([1.0, 0.0])
+        ig.fixed_steps(oscillator, args, 0.0, y, 1.0 / n, n)
+        errs.append(abs(y[0] - math.cos(w)))
+    orders = [math.log2(errs[i] / errs[i + 1]) for i in range(len(errs) - 1)]
+    np.testing.assert_allclose(orders[-2:], 5.0, atol=0.15,
+                               err_msg="Hairer, Nørsett & Wanner 1993 §II.5: DOPRI5 is of order 5")
+
+
+def test_error_control_follows_tolerance():
+    errs = []
+    for tol in (1e-5, 1e-7, 1e-9):
+        y = np.zeros(1)
+        info = np.zeros(4)
+        st, t, h = ig.advance(forced, (0.0,), 0.0, 10.0, y, 1e-3, np.full(1, tol), np.zeros(1), 1e-12, 10**6, info)
+        assert st == ig.OK and t == 10.0
+        exact = 0.5 * (math.sin(10.0) - math.cos(10.0) + math.exp(-10.0))
+        errs.append(abs(y[0] - exact))
+    assert errs[0] < 1e-4 and errs[1] < 1e-6 and errs[2] < 1e-8, errs
+    assert errs[2] < errs[1] < errs[0]
+
+
+def test_stops_exactly_and_is_deterministic():
+    a = np.array([1.0, 0.0])
+    b = np.array([1.0, 0.0])
+    info = np.zeros(4)
+    atol = np.full(2, 1e-9)
+    rtol = np.zeros(2)
+    _, t1, h1 = ig.advance(oscillator, (3.0,), 0.0, 0.37, a, 1e-3, atol, rtol, 1e-12, 10**6, info)
+    _, t2, _ = ig.advance(oscillator, (3.0,), t1, 1.0, a, h1, atol, rtol, 1e-12, 10**6, info)
+    _, t3, h3 = ig.advance(oscillator, (3.0,), 0.0, 0.37, b, 1e-3, atol, rtol, 1e-12, 10**6, info)
+    _, t4, _ = ig.advance(oscillator, (3.0,), t3, 1.0, b, h3, atol, rtol, 1e-12, 10**6, info)
+    assert t1 == 0.37 and t2 == 1.0
+    assert np.array_equal(a, b)

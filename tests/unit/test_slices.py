@@ -1,0 +1,224 @@
+"""Unit tests of the sliced contact ellipse kernel (seed 001 eqs. 1-5)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from scipy import integrate
+
+from bearingsim.contact import hertz
+from bearingsim.contact import slices as S
+from bearingsim.errors import InputError
+
+D, DM, F_I = 0.0111, 0.061, 0.52
+E_EFF = hertz.effective_modulus(208e9, 0.3, 208e9, 0.3)
+RX, RY = hertz.raceway_radii(D, DM, F_I, math.radians(35.0), True)
+Q = 2000.0
+HC = hertz.point_contact_exact(Q, RX, RY, E_EFF)
+R_BALL = D / 2
+
+
+def _lub(**kw):
+    kw.setdefault("fluid_curve", (0.0, 0.06, 0.01, 0.045))
+    return S.pack_lubrication_parameters("iso-vg-68", 333.15, E_EFF, RX, RY, kw.pop("roughness", 0.1e-6), **kw)
+
+
+def _flat_rolling(u_ball, u_race, spin=0.0, lub=None, n=10, q=Q, r_dev=math.inf):
+    """Ball above a flat race at z=0, rolling along y; the race translates along y."""
+    lub = _lub() if lub is None else lub
+    out = np.zeros(10)
+    S.contact_traction(q, HC.a, HC.b, r_dev, np.zeros(3), np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+                       np.array([0.0, 0.0, R_BALL]), np.zeros(3), np.array([u_ball / R_BALL, 0.0, spin]),
+                       np.array([0.0, 0.0, -1.0]), np.array([0.0, u_race, 0.0]), np.zeros(3), lub, n, out)
+    return out
+
+
+# --------------------------------------------------------------------------- slice loads (seed eq. 1)
+
+@pytest.mark.parametrize("n", [1, 2, 3, 7, 10, 50])
+def test_slice_loads_sum_to_q(n):
+    fr = [S.slice_fraction(-1 + 2 * j / n, -1 + 2 * (j + 1) / n) for j in range(n)]
+    assert math.fsum(fr) == pytest.approx(1.0, abs=1e-15)
+    assert min(fr) > 0
+
+
+@pytest.mark.parametrize("n", [3, 10])
+def test_slice_loads_integrate_hertz_pressure(n):
+    """Q_j equals the 2-D integral of p0 sqrt(1 - x²/a² - y²/b²) over the strip (numerical quadrature)."""
+    a, b = HC.a, HC.b
+    p0 = 1.5 * Q / (math.pi * a * b)
+    for j in range(n):
+        x0, x1 = a * (-1 + 2 * j / n), a * (-1 + 2 * (j + 1) / n)
+        val, _ = integrate.dblquad(
+            lambda y, x: p0 * math.sqrt(max(0.0, 1 - (x / a) ** 2 - (y / b) ** 2)), x0, x1,
+            lambda x: -b * math.sqrt(max(0.0, 1 - (x / a) ** 2)), lambda x: b * math.sqrt(max(0.0, 1 - (x / a) ** 2)),
+            epsabs=1e-12, epsrel=1e-10)
+        assert Q * S.slice_fraction(x0 / a, x1 / a) == pytest.approx(val, rel=1e-8)
+        xm, _ = integrate.quad(lambda x: x * 0.75 * (1 - x * x), x0 / a, x1 / a, epsabs=1e-14)
+        w, _ = integrate.quad(lambda x: 0.75 * (1 - x * x), x0 / a, x1 / a, epsabs=1e-14)
+        assert S.slice_centroid(x0 / a, x1 / a) == pytest.approx(xm / w, abs=1e-12)
+        area, _ = integrate.quad(lambda x: 2 * math.sqrt(max(0.0, 1 - x * x)), x0 / a, x1 / a, epsabs=1e-13)
+        assert S.slice_area_fraction(x0 / a, x1 / a) == pytest.approx(area, rel=1e-9)
+
+
+# --------------------------------------------------------------------------- kernel vs reference
+
+def _random_state(rng):
+    n = rng.normal(size=3)
+    n /= np.linalg.norm(n)
+    m = np.cross(n, rng.normal(size=3))
+    m /= np.linalg.norm(m)
+    c = rng.normal(size=3) * 0.01
+    cb = c + R_BALL * n
+    cr = c - 0.02 * n + 0.003 * m
+    vb = rng.normal(size=3) * 3
+    wb = rng.normal(size=3) * 500
+    vr = rng.normal(size=3) * 0.5
+    wr = rng.normal(size=3) * 200
+    return c, n, m, cb, vb, wb, cr, vr, wr
+
+
+@pytest.mark.parametrize("kw", [dict(model="boundary"), dict(model="fluid", fluid_model="curve"),
+                                dict(model="fluid", fluid_model="physical"), dict(model="mixed", roughness=0.1e-6),
+                                dict(model="mixed", roughness=0.02e-6, thermal=False),
+                                dict(model="mixed", roughness=0.3e-6, starvation_factor=0.7)])
+@pytest.mark.parametrize("n_slices", [1, 4, 11])
+def test_kernel_matches_reference(kw, n_slices):
+    rng = np.random.default_rng(n_slices)
+    lub = _lub(**kw)
+    for trial in range(4):
+        c, n, m, cb, vb, wb, cr, vr, wr = _random_state(rng)
+        r_dev = [math.inf, S.deformed_surface_radius(D, F_I * D), -0.02, 0.004][trial]
+        q = [Q, 300.0, 5000.0, 1.0][trial]
+        a, b = HC.a * (q / Q) ** (1 / 3), HC.b * (q / Q) ** (1 / 3)
+        out, ref = np.zeros(10), np.zeros(10)
+        args = (q, a, b, r_dev, c, n, m, cb, vb, wb, cr, vr, wr, lub, n_slices)
+        S.contact_traction(*args, out)
+        S.contact_traction_reference(*args, ref)
+        scale = np.max(np.abs(ref)) + 1e-300
+        np.testing.assert_allclose(out, ref, rtol=1e-10, atol=1e-10 * scale)
+        assert out[9] >= 0
+
+
+def test_zero_load_gives_nothing():
+    out = _flat_rolling(2.5, 2.0, q=0.0)
+    assert np.all(out == 0.0)
+
+
+# --------------------------------------------------------------------------- physics invariants
+
+def test_pure_rolling_no_traction_only_rolling_resistance():
+    u = 3.0
+    out = _flat_rolling(u, u, lub=_lub(model="fluid", rolling_resistance=False))
+    np.testing.assert_allclose(out, 0.0, atol=1e-15)
+    lub = _lub(model="fluid", thermal=False)
+    out = _flat_rolling(u, u, lub=lub)
+    # expected: sum over slices of Zhou & Hoeprich eq. 17 on strips of width 2a/n, against the rolling direction
+    n = 10
+    width = 2 * HC.a / n
+    eta0, alpha = lub[S.L_ETA0], lub[S.L_ALPHA]
+    fr = force = 0.0
+    for j in range(n):
+        xi0, xi1 = -1 + 2 * j / n, -1 + 2 * (j + 1) / n
+        qj = Q * S.slice_fraction(xi0, xi1)
+        U = eta0 * u / (E_EFF * RX)
+        frj = 29.2 * (RX / alpha) * width * (alpha * E_EFF * U) ** 0.648 * (qj / (width * E_EFF * RX)) ** 0.246
+        fr += frj
+        # ball: -F_R + P1, P1 = 2 F_R R_x / R_1, R_1 = distance of the slice point from the ball centre
+        r1 = math.hypot(R_BALL, HC.a * S.slice_centroid(xi0, xi1))
+        force += frj * (2 * RX / r1 - 1)
+    assert out[1] == pytest.approx(force, rel=1e-12)
+    assert abs(out[0]) < 1e-12 * fr and abs(out[2]) < 1e-12 * fr
+    # moment on the ball about its centre: shear -F_R at the contact, lever R_ball, opposing the rolling
+    assert out[3] == pytest.approx(-fr * R_BALL, rel=1e-12)
+    assert out[9] == pytest.approx(2 * fr * u, rel=1e-12)
+
+
+def test_large_sliding_gives_boundary_mu_q():
+    lub = _lub(model="boundary")
+    mu_inf = lub[S.L_BD]
+    out = _flat_rolling(1e3, -1e3, lub=lub)  # sliding +2000 m/s along y, rolling speed 0
+    np.testing.assert_allclose(out[0:3], [0.0, -mu_inf * Q, 0.0], rtol=1e-12, atol=1e-9)
+    assert out[9] == pytest.approx(mu_inf * Q * 2e3, rel=1e-12)
+
+
+@pytest.mark.parametrize("n", [2, 10, 40])
+def test_pure_spin_constant_mu_even_n_exact(n):
+    """Spin ω about the normal, constant μ: the moment about the normal is 3μQa/8 (exact for even n)."""
+    mu = 0.08
+    lub = _lub(model="boundary", rolling_resistance=False)
+    lub[S.L_BA:S.L_BD + 1] = (0.0, 0.0, 0.0, mu)
+    out = _flat_rolling(0.0, 0.0, spin=50.0, lub=lub, n=n)
+    expected = 3 * mu * Q * HC.a / 8
+    assert out[5] == pytest.approx(-expected, rel=1e-12)
+    np.testing.assert_allclose(out[0:3], 0.0, atol=1e-12 * mu * Q)
+
+
+def test_pure_spin_odd_n_converges():
+    mu = 0.08
+    lub = _lub(model="boundary", rolling_resistance=False)
+    lub[S.L_BA:S.L_BD + 1] = (0.0, 0.0, 0.0, mu)
+    expected = 3 * mu * Q * HC.a / 8
+    errs = [abs(_flat_rolling(0.0, 0.0, spin=50.0, lub=lub, n=n)[5] + expected) / expected for n in (3, 9, 27, 81)]
+    assert all(e2 < e1 for e1, e2 in zip(errs, errs[1:]))
+    assert errs[-1] < 1e-3
+
+
+def test_angular_momentum_balance_of_traction():
+    """Traction pairs act at the same point: M_b + c_b×F + M_r + c_r×(−F) = 0."""
+    rng = np.random.default_rng(7)
+    lub = _lub(model="mixed", rolling_resistance=False)
+    for _ in range(5):
+        c, n, m, cb, vb, wb, cr, vr, wr = _random_state(rng)
+        out = np.zeros(10)
+        S.contact_traction(Q, HC.a, HC.b, S.deformed_surface_radius(D, F_I * D), c, n, m, cb, vb, wb, cr, vr, wr,
+                           lub, 10, out)
+        tot = out[3:6] + np.cross(cb, out[0:3]) + out[6:9] + np.cross(cr, -out[0:3])
+        assert np.max(np.abs(tot)) < 1e-12 * (np.max(np.abs(out[3:9])) + 1e-300)
+
+
+def test_jones_points_lie_on_deformed_surface():
+    r_dev = S.deformed_surface_radius(D, F_I * D)
+    assert r_dev == pytest.approx(2 * F_I * D * D / (2 * F_I * D + D))
+    a = HC.a
+    for n in (1, 5, 10):
+        for j in range(n):
+            x = a * S.slice_centroid(-1 + 2 * j / n, -1 + 2 * (j + 1) / n)
+            c = 1 / r_dev
+            off = c * x * x / (1 + math.sqrt(1 - (c * x) ** 2))
+            # distance to the centre of curvature (0, r_dev) in the (major, normal) plane
+            assert math.hypot(x, off - r_dev) == pytest.approx(r_dev, rel=1e-14)
+
+
+def test_traction_opposes_sliding_and_power_positive():
+    out = _flat_rolling(3.03, 2.97, lub=_lub(model="fluid", rolling_resistance=False))
+    assert out[1] < 0  # ball surface faster than the race along +y -> force on ball along -y
+    assert out[9] == pytest.approx(-out[1] * 0.06, rel=1e-12)
+
+
+# --------------------------------------------------------------------------- bad input
+
+def test_bad_inputs_raise_typed_errors():
+    lub = _lub()
+    good = dict(centre=np.zeros(3), normal=np.array([0, 0, 1.0]), major=np.array([1.0, 0, 0]),
+                ball_centre=np.array([0, 0, R_BALL]), v_ball=np.zeros(3), w_ball=np.zeros(3),
+                race_centre=np.array([0, 0, -1.0]), v_race=np.zeros(3), w_race=np.zeros(3))
+    args = lambda **kw: [kw.get(k, v) for k, v in good.items()]  # noqa: E731
+    with pytest.raises(InputError, match="n_slices"):
+        S.contact_traction_checked(Q, HC.a, HC.b, math.inf, *args(), lub, 0)
+    with pytest.raises(InputError, match="v_ball"):
+        S.contact_traction_checked(Q, HC.a, HC.b, math.inf, *args(v_ball=np.array([np.nan, 0, 0])), lub, 10)
+    with pytest.raises(InputError, match="w_race"):
+        S.contact_traction_checked(Q, HC.a, HC.b, math.inf, *args(w_race=np.array([0, np.inf, 0])), lub, 10)
+    with pytest.raises(InputError, match="load"):
+        S.contact_traction_checked(-1.0, HC.a, HC.b, math.inf, *args(), lub, 10)
+    out = S.contact_traction_checked(Q, HC.a, HC.b, math.inf, *args(), lub, 10)
+    assert out.shape == (10,)
+    with pytest.raises(InputError, match="model"):
+        S.pack_lubrication_parameters("iso-vg-68", 333.15, E_EFF, RX, RY, 0.0, model="wet")
+    with pytest.raises(InputError, match="temperature"):
+        S.pack_lubrication_parameters("iso-vg-68", 200.0, E_EFF, RX, RY, 0.0)
+    with pytest.raises(InputError, match="roughness"):
+        S.pack_lubrication_parameters("iso-vg-68", 333.15, E_EFF, RX, RY, -1e-7)

@@ -1,0 +1,117 @@
+"""Design-space maps (sweep.py, statics/_batch.py): grid parsing, correctness, executors, safety."""
+
+import time
+
+import numpy as np
+import pytest
+
+from bearingsim import sweep
+from bearingsim.errors import InputError
+from bearingsim.io import load_bearing
+from bearingsim.statics import jones_harris as jh
+from bearingsim.statics._batch import run_batch
+
+
+def test_parse_grid_inclusive_and_units():
+    np.testing.assert_allclose(sweep.parse_grid("1000:5000:9", "force", "fa"), np.linspace(1000, 5000, 9))
+    np.testing.assert_allclose(sweep.parse_grid("1 kN:2 kN:3", "force", "fa"), [1000, 1500, 2000])
+    np.testing.assert_allclose(sweep.parse_grid("0:6000:3", "speed", "speed"), np.array([0, 3000, 6000]) * np.pi / 30)
+    np.testing.assert_allclose(sweep.parse_grid("250 N", "force", "fa"), [250.0])
+
+
+@pytest.mark.parametrize("spec", ["1000:500:3", "1000:5000", "1000:5000:x", "1000:5000:1", "a:b:3"])
+def test_parse_grid_bad_input_names_field(spec):
+    with pytest.raises(InputError) as exc:
+        sweep.parse_grid(spec, "force", "fa")
+    assert exc.value.field == "fa"
+
+
+def test_batch_matches_single_solves():
+    b = load_bearing("skf-7011-cdga-hc")
+    loads = np.zeros((6, 5))
+    loads[:, 0] = np.linspace(500, 3000, 6)
+    loads[:, 1] = 300.0
+    loads[:, 3] = 5.0
+    om = np.linspace(0, 1000, 6)
+    out = run_batch(b, loads, om)
+    assert out["converged"].all()
+    for i in range(6):
+        r = jh.solve(b, jh.Loads(*loads[i]), om[i])
+        np.testing.assert_allclose(out["q"][i], r.displacement, rtol=1e-8, atol=1e-15)
+        np.testing.assert_allclose(out["k"][i], r.stiffness, rtol=1e-7, atol=1e-6 * abs(r.stiffness).max())
+        np.testing.assert_allclose(out["p_inner"][i], r.balls["inner_max_pressure_Pa"].max(), rtol=1e-8)
+        loaded = r.balls["inner_load_N"] > 0
+        np.testing.assert_allclose(out["alpha_inner_min"][i], r.balls["inner_contact_angle_rad"][loaded].min(),
+                                   rtol=1e-8)
+
+
+def test_map_grid_dataset_and_serial_equals_process_pool():
+    kw = dict(fa="500:2000:4", speed="0:9000:5", chunk_points=5)
+    a = sweep.map_grid("skf-7011-cdga-hc", workers=1, **kw)
+    assert a.stiffness.dims == ("fa", "speed", "dof", "dof2")
+    assert int(a.converged.sum()) == 20
+    # one point against the direct solve
+    r = jh.solve(load_bearing("skf-7011-cdga-hc"), jh.Loads(fa=1000.0), 4500 * np.pi / 30)
+    np.testing.assert_allclose(a.stiffness.isel(fa=1, speed=2).values, r.stiffness, rtol=1e-7,
+                               atol=1e-6 * abs(r.stiffness).max())
+    b = sweep.map_grid("skf-7011-cdga-hc", workers=2, **kw)
+    for v in a.data_vars:
+        np.testing.assert_array_equal(a[v].values, b[v].values)
+
+
+def test_local_cluster_equals_serial_exactly(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    kw = dict(fa="0:1500:3", fr="0:1000:2", preload="100:200:2", speed="0:6000:3", chunk_points=3)
+    serial = sweep.map_grid("skf-7011-cdga-hc-db", workers=1, **kw)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cl, \
+            distributed.Client(cl) as client:
+        ds = sweep.map_grid("skf-7011-cdga-hc-db", scheduler=client, out=tmp_path / "m.nc", **kw)
+        for v in serial.data_vars:
+            np.testing.assert_array_equal(serial[v].values, ds[v].values)
+        ds.close()
+    assert serial.converged.all()
+
+
+def test_unreachable_scheduler_fails_fast_and_writes_nothing(tmp_path):
+    out = tmp_path / "m.nc"
+    t0 = time.monotonic()
+    with pytest.raises(InputError) as exc:
+        sweep.map_grid("skf-7011-cdga-hc", fa="100:200:2", scheduler="tcp://127.0.0.1:1", out=out,
+                       scheduler_timeout=2.0)
+    assert exc.value.field == "scheduler"
+    assert time.monotonic() - t0 < 15.0
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_interrupted_map_leaves_no_file(tmp_path, monkeypatch):
+    calls = {"n": 0}
+    real = sweep.solve_block
+
+    def flaky(*a, **k):
+        calls["n"] += 1
+        if calls["n"] == 2:
+            raise KeyboardInterrupt
+        return real(*a, **k)
+
+    monkeypatch.setattr(sweep, "solve_block", flaky)
+    with pytest.raises(KeyboardInterrupt):
+        sweep.map_grid("skf-7011-cdga-hc", fa="100:200:4", chunk_points=1, workers=1, out=tmp_path / "m.nc")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_netcdf_output_equals_memory(tmp_path):
+    kw = dict(fa="500:1500:3", moment="-5:5:3", fr="200 N", speed="3000", workers=1)
+    mem = sweep.map_grid("skf-7011-cdga-hc", **kw)
+    disk = sweep.map_grid("skf-7011-cdga-hc", out=tmp_path / "m.nc", **kw)
+    for v in mem.data_vars:
+        np.testing.assert_array_equal(mem[v].values, disk[v].values)
+    assert float(disk["fr"]) == 200.0
+    disk.close()
+    p = sweep.plot_map(mem, tmp_path / "k.png")
+    assert p.stat().st_size > 0
+
+
+def test_preload_grid_needs_a_set():
+    with pytest.raises(InputError) as exc:
+        sweep.map_grid("skf-7011-cdga-hc", preload="100:200:2")
+    assert exc.value.field == "preload"

@@ -1,0 +1,94 @@
+"""Seed 001 hub unit: quasi-static tilt vs moment (studies/hub_static.py).
+
+Seed 001 gives no tilt values in numbers (its Fig. 6 is a plot); what it states is checked here:
+the moment stiffness is the same at 10, 50 and 100 km/h and equals the non-rotating one
+(seed 001 section 4), the load ranges of Table 2, and the tilt range of Fig. 6 (axis ±0.10 deg
+at ±0.8 kN·m; the curves stay inside it).  The moment stiffness of the preloaded unit at rest
+is checked against a closed form built from the thrust model (independent of the kernel).
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from bearingsim.io import load_bearing
+from bearingsim.statics import jones_harris as jh
+from bearingsim.statics.axial import solve_thrust
+from bearingsim.studies import hub_static as hs
+
+
+@pytest.fixture(scope="module")
+def hub():
+    return load_bearing("hub-seed001")
+
+
+@pytest.fixture(scope="module")
+def study(hub):
+    return hs.run_study(hub, np.linspace(-600, 600, 13))
+
+
+def test_table2_load_ranges_are_reproduced(study):
+    np.testing.assert_allclose([study.fa[0], study.fa[-1]], [-1890.0, 1890.0], rtol=1e-12,
+                               err_msg="seed 001 Table 2: axial load -1,890 ... 1,890 N")
+    np.testing.assert_allclose([study.fr[0], study.fr[-1]], [1820.0, 3750.0], rtol=1e-12,
+                               err_msg="seed 001 Table 2: radial load 1,820 ... 3,750 N")
+    np.testing.assert_allclose(study.bearing.load_point, 0.0104, rtol=1e-12,
+                               err_msg="seed 001 Table 2: load acting point 10.4 mm")
+    assert study.converged.all()
+
+
+def test_tilt_inside_fig6_range_and_monotonic(study):
+    deg = np.degrees(study.tilt)
+    assert np.all(np.diff(deg) > 0)
+    # seed 001 Fig. 6: inclining angle axis -0.10 ... 0.10 deg for moments -0.8 ... 0.8 kN m
+    assert 0.02 < abs(deg[0]) < 0.10, "seed 001 Fig. 6 tilt range at -0.6 kN m"
+    assert 0.02 < abs(deg[-1]) < 0.10, "seed 001 Fig. 6 tilt range at +0.6 kN m"
+    assert not study.lifted_off.any()
+
+
+def test_moment_stiffness_independent_of_vehicle_speed(hub, study):
+    for v in (10.0, 50.0, 100.0):
+        r = hs.run_study(hub, study.moment, speed=hs.vehicle_speed_to_shaft(v))
+        np.testing.assert_allclose(r.secant_compliance, study.secant_compliance, rtol=0.01,
+                                   err_msg=f"seed 001 section 4: compliance at {v} km/h equals the non-rotating one")
+
+
+def test_path_compliance_equals_slope_of_curve(hub):
+    h = 0.5
+    r = hs.run_study(hub, [-h, 0.0, h])
+    slope = (r.tilt[2] - r.tilt[0]) / (2 * h)
+    np.testing.assert_allclose(r.compliance[1], slope, rtol=1e-5,
+                               err_msg="implicit-differentiation compliance vs finite difference of the curve")
+
+
+def test_moment_stiffness_at_rest_closed_form(hub):
+    """At rest without load every ball carries the thrust-model preload Q0 along the line of groove
+    centres; the linearised ball force is dF = k_n (n.dA) n + Q0/L (dA - (n.dA) n) with
+    k_n = 1.5 K_n^(2/3) Q0^(1/3) and L = |A| (seed 000 eqs. 3-5; Harris & Kotzalas vol. 2 ch. 3)."""
+    res = jh.solve(hub, jh.Loads())
+    row = hub.rows[0].bearing
+    th = solve_thrust(row, hub.preload)
+    _, _, kn_ = row.contact_constants
+    k_n = 1.5 * kn_ ** (2 / 3) * th.ball_load ** (1 / 3)
+    big_a = row.total_curvature_distance
+    length = big_a + th.normal_approach
+    ri = (row.inner_conformity - 0.5) * row.ball_diameter
+    a0 = row.free_contact_angle
+    n = np.array([math.sin(th.contact_angle), math.cos(th.contact_angle)])
+    kb = k_n * np.outer(n, n) + th.ball_load / length * (np.eye(2) - np.outer(n, n))
+    k = np.zeros((5, 5))
+    for r in hub.rows:
+        s = r.orientation
+        xg = (r.position - hub.load_point) + s * ri * math.sin(a0)
+        ric = 0.5 * row.pitch_diameter + ri * math.cos(a0)
+        for j in range(row.ball_count):
+            psi = 2 * math.pi * j / row.ball_count
+            t = np.array([[s, 0, 0, s * ric * math.sin(psi), -s * ric * math.cos(psi)],
+                          [0, math.cos(psi), math.sin(psi), -xg * math.sin(psi), xg * math.cos(psi)]])
+            k += t.T @ kb @ t
+    np.testing.assert_allclose(res.stiffness, k, rtol=1e-7, atol=1e-7 * np.abs(k).max(),
+                               err_msg="closed-form linearised stiffness of the preloaded unit")
+    # moment compliance of the unit at rest (pure moment, other loads free)
+    c = np.linalg.inv(res.stiffness)[4, 4]
+    np.testing.assert_allclose(c, np.linalg.inv(k)[4, 4], rtol=1e-7)
