@@ -23,9 +23,9 @@ app.add_typer(reproduce_app, name="reproduce")
 
 
 def _console():
-    from rich.console import Console
+    from .clitools import make_console
 
-    return Console()
+    return make_console()
 
 
 def parse_loads(fa, fr, fz, moment, my):
@@ -138,6 +138,11 @@ def reproduce_spindle(
     csv = study.to_csv(out / "spindle_axial_stiffness.csv")
     png = study.plot(out / "spindle_axial_stiffness_fig5.png")
     _console().print(f"wrote {csv} and {png}")
+
+
+from . import cli_lubrication  # noqa: E402  (commands of the lubrication module)
+
+cli_lubrication.register(app)
 
 
 def main() -> None:

@@ -31,7 +31,7 @@ from importlib import resources
 from pathlib import Path
 
 from .errors import InputError
-from .units import _convert, parse_quantity
+from .units import parse_quantity
 
 T15 = 288.15
 
@@ -178,26 +178,16 @@ class Lubricant:
 # --------------------------------------------------------------------------- TOML
 
 _QUANTITIES = {
-    # key: (SI unit, default unit for bare numbers, dataclass field)
-    "density_15C": ("kg/m^3", "kg/m^3", "density_15"),
-    "density_temperature_coefficient": ("1/K", "1/K", "density_temperature_coefficient"),
-    "pressure_viscosity_coefficient": ("1/Pa", "1/Pa", "pressure_viscosity_coefficient"),
-    "thermal_conductivity": ("W/(m*K)", "W/(m*K)", "thermal_conductivity"),
-    "eyring_stress": ("Pa", "Pa", "eyring_stress"),
-    "lss_c4": ("Pa", "Pa", "lss_c4"),
+    # key: (dimension in units.DIMENSIONS, dataclass field)
+    "density_15C": ("density", "density_15"),
+    "density_temperature_coefficient": ("inverse_temperature", "density_temperature_coefficient"),
+    "pressure_viscosity_coefficient": ("inverse_pressure", "pressure_viscosity_coefficient"),
+    "thermal_conductivity": ("thermal_conductivity", "thermal_conductivity"),
+    "eyring_stress": ("pressure", "eyring_stress"),
+    "lss_c4": ("pressure", "lss_c4"),
 }
 _NUMBERS = {"lss_ratio": "lss_ratio", "lss_c1": "lss_c1", "lss_c2": "lss_c2", "lss_c3": "lss_c3",
             "lss_floor": "lss_floor"}
-
-
-def _q(value, si: str, default: str, fname: str) -> float:
-    if isinstance(value, bool):
-        raise InputError(fname, f"expected a quantity, got {value!r}", f'e.g. "1 {default}"')
-    if isinstance(value, (int, float)):
-        value = f"{value} {default}"
-    if not isinstance(value, str):
-        raise InputError(fname, f"expected a quantity string, got {type(value).__name__}", f'e.g. "1 {default}"')
-    return _convert(value, si, fname, None, default)
 
 
 def lubricant_from_dict(data: dict, fname: str = "lubricant") -> Lubricant:
@@ -212,14 +202,14 @@ def lubricant_from_dict(data: dict, fname: str = "lubricant") -> Lubricant:
     kw: dict = {}
     for i, (t, nu) in enumerate(visc, start=1):
         kw[f"temperature_{i}"] = parse_quantity(t, "temperature", f"{fname}.viscosity[{i - 1}].temperature")
-        nu_si = _q(nu, "m^2/s", "mm^2/s", f"{fname}.viscosity[{i - 1}].kinematic_viscosity")
+        nu_si = parse_quantity(nu, "kinematic_viscosity", f"{fname}.viscosity[{i - 1}].kinematic_viscosity")
         if not nu_si > 0:
             raise InputError(f"{fname}.viscosity[{i - 1}]", f"viscosity must be positive, got {nu!r}",
                              'e.g. "68 mm^2/s"')
         kw[f"kinematic_viscosity_{i}"] = nu_si
-    for key, (si, default, attr) in _QUANTITIES.items():
+    for key, (dim, attr) in _QUANTITIES.items():
         if key in data:
-            kw[attr] = _q(data[key], si, default, f"{fname}.{key}")
+            kw[attr] = parse_quantity(data[key], dim, f"{fname}.{key}")
     for key, attr in _NUMBERS.items():
         if key in data:
             v = data[key]

@@ -24,7 +24,6 @@ A single value is a scalar coordinate; a grid "START:STOP:COUNT" (inclusive) is 
 from __future__ import annotations
 
 import dataclasses
-import math
 import os
 import tempfile
 from pathlib import Path

@@ -29,6 +29,10 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "temperature": ("[temperature]", "K", "degC"),
     "dimensionless": ("", "", ""),
     "stiffness": ("[mass] / [time] ** 2", "N/m", "N/m"),
+    "kinematic_viscosity": ("[length] ** 2 / [time]", "m^2/s", "mm^2/s"),
+    "inverse_temperature": ("1 / [temperature]", "1/K", "1/K"),
+    "inverse_pressure": ("[length] * [time] ** 2 / [mass]", "1/Pa", "1/Pa"),
+    "thermal_conductivity": ("[mass] * [length] / [time] ** 3 / [temperature]", "W/(m*K)", "W/(m*K)"),
 }
 
 

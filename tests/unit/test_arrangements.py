@@ -1,6 +1,5 @@
 """Bearing sets and double-row units (statics/arrangements.py): invariants and closed forms."""
 
-import math
 
 import numpy as np
 import pytest

@@ -222,3 +222,41 @@ def test_bad_inputs_raise_typed_errors():
         S.pack_lubrication_parameters("iso-vg-68", 200.0, E_EFF, RX, RY, 0.0)
     with pytest.raises(InputError, match="roughness"):
         S.pack_lubrication_parameters("iso-vg-68", 333.15, E_EFF, RX, RY, -1e-7)
+
+
+def test_mixed_model_continuous_in_lambda():
+    """Kernel force vs roughness across Λ₁ and Λ₂: no jump (seed 001 mixed interpolation)."""
+    lub0 = _lub(model="mixed", rolling_resistance=False, roughness=0.1e-6)
+    # Λ = h_min/σ: scanning σ makes Λ cross Λ₂ = 3 and Λ₁ = 1
+    forces = []
+    sig = np.geomspace(2e-8, 2e-6, 400)
+    for s in sig:
+        lub = lub0.copy()
+        lub[S.L_SIGMA] = s
+        forces.append(_flat_rolling(3.03, 2.97, lub=lub)[1])
+    forces = np.array(forces)
+    jumps = np.abs(np.diff(forces))
+    assert forces[0] != pytest.approx(forces[-1], rel=0.05)  # boundary and fluid ends differ
+    assert np.max(jumps) < 0.05 * np.max(np.abs(forces))  # smooth: no step at Λ₁ or Λ₂
+
+
+def test_traction_converges_with_slice_count():
+    lub = _lub(model="fluid", fluid_model="curve")
+    f = [np.linalg.norm(_flat_rolling(3.0, 3.0, spin=40.0, lub=lub, n=n, r_dev=S.deformed_surface_radius(D, F_I * D))
+                        [0:6]) for n in (5, 10, 20, 40, 80, 160)]
+    d = np.abs(np.diff(f))
+    assert np.all(d[1:] < d[:-1] * 0.9)  # successive differences shrink
+    assert d[-1] < 1e-2 * f[-1]
+
+
+def test_rolling_resistance_force_system_balances():
+    """Shear on both surfaces plus the pressure forces (through the ball centre and the race's centre
+    of curvature) sum to zero force and zero moment (massless film; Zhou & Hoeprich 1991 N e = P_x,i R_i)."""
+    rng = np.random.default_rng(3)
+    lub = _lub(model="fluid", thermal=False)
+    for _ in range(5):
+        c, n, m, cb, vb, wb, cr, vr, wr = _random_state(rng)
+        out = np.zeros(10)
+        S.contact_traction(Q, HC.a, HC.b, math.inf, c, n, m, cb, vb, wb, cr, vr, wr, lub, 1, out)
+        tot = out[3:6] + np.cross(cb, out[0:3]) + out[6:9] + np.cross(cr, -out[0:3])
+        assert np.max(np.abs(tot)) < 1e-12 * (np.max(np.abs(out[3:9])) + 1e-300)

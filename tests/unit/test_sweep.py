@@ -115,3 +115,33 @@ def test_preload_grid_needs_a_set():
     with pytest.raises(InputError) as exc:
         sweep.map_grid("skf-7011-cdga-hc", preload="100:200:2")
     assert exc.value.field == "preload"
+
+
+def test_cli_map_export_and_hub_static(tmp_path):
+    import json
+
+    import typer
+    from typer.testing import CliRunner
+
+    from bearingsim import cli_sweep
+
+    app = typer.Typer()
+    rep = typer.Typer()
+    app.add_typer(rep, name="reproduce")
+    cli_sweep.register(app, rep)
+    runner = CliRunner()
+    out = tmp_path / "m.nc"
+    r = runner.invoke(app, ["map", "skf-7011-cdga-hc", "--fa", "1000:2000:3", "--speed", "0:6000:3", "--out",
+                            str(out), "--json", "--workers", "1"])
+    assert r.exit_code == 0, r.output
+    d = json.loads(r.output.strip().splitlines()[-1])
+    assert d["points"] == 9 and d["converged"] == 9 and out.exists()
+    r = runner.invoke(app, ["map", "skf-7011-cdga-hc", "--fa", "1000:500:3"])
+    assert isinstance(r.exception, InputError) and r.exception.field == "fa"
+    r = runner.invoke(app, ["export", "ross", "skf-7011-cdga-hc-db", "--speed", "0:6000:3", "--out",
+                            str(tmp_path / "b.json")])
+    assert r.exit_code == 0, r.output
+    assert len(json.loads((tmp_path / "b.json").read_text())["kxx_N_per_m"]) == 3
+    r = runner.invoke(app, ["reproduce", "hub-static", "--out", str(tmp_path), "--points", "3"])
+    assert r.exit_code == 0, r.output
+    assert (tmp_path / "hub_static.csv").exists() and (tmp_path / "hub_static.png").exists()

@@ -50,8 +50,22 @@ def test_tilt_inside_fig6_range_and_monotonic(study):
 def test_moment_stiffness_independent_of_vehicle_speed(hub, study):
     for v in (10.0, 50.0, 100.0):
         r = hs.run_study(hub, study.moment, speed=hs.vehicle_speed_to_shaft(v))
-        np.testing.assert_allclose(r.secant_compliance, study.secant_compliance, rtol=0.01,
+        ok = r.ring_converged
+        # the ring equilibrium converges everywhere (balls off the inner raceway: see the xfail test below)
+        assert ok.all()
+        slope_v = np.polyfit(r.moment[ok], r.tilt[ok], 1)[0]
+        slope_0 = np.polyfit(study.moment[ok], study.tilt[ok], 1)[0]
+        np.testing.assert_allclose(slope_v, slope_0, rtol=0.01,
                                    err_msg=f"seed 001 section 4: compliance at {v} km/h equals the non-rotating one")
+        np.testing.assert_allclose(r.tilt[ok], study.tilt[ok], rtol=0.01, atol=1e-3 * np.abs(study.tilt).max())
+
+
+@pytest.mark.xfail(reason="kernel ball_solve does not converge for balls that lose the inner contact at low "
+                          "speed (centrifugal force ~0.01 N); reported to the lead", strict=False)
+def test_all_points_converge_at_vehicle_speeds(hub, study):
+    for v in (10.0, 50.0):
+        r = hs.run_study(hub, study.moment, speed=hs.vehicle_speed_to_shaft(v))
+        assert r.converged.all()
 
 
 def test_path_compliance_equals_slope_of_curve(hub):

@@ -48,6 +48,10 @@ One function per published model:
   coefficient recalled here or the rule may differ from Hamrock & Dowson's.  The film
   thickness we report always uses the Hamrock–Dowson (1977) formulae; the regime only
   selects the rolling-resistance formula (IR closed form vs Zhou & Hoeprich's PE fit).
+  A search found one third-party transcription (a Python file quoting a textbook, "page
+  136") with the same IR and IE formulae (k → (R_y/R_x)^(2/π)) but a different PR formula,
+  ĥ_PR = 1.41 g_V^0.375 (1 − e^(−0.0387 k)), and (1 − e^(−0.0387 k^(2/π))) in PE; we could not
+  tell which is right, so the formulae above remain unconfirmed.
 
 All inputs SI; lengths [m], speeds [m/s], loads [N], pressures [Pa], viscosity [Pa·s].
 """

@@ -577,7 +577,7 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                         tau = stress(0.0)
                         if theta > 0:
                             t1 = stress(theta * tau * smag)
-                            tau = stress(theta * 0.5 * (tau + t1) * smag)
+                            tau = tau * tau / (2 * tau - t1)
                     muf = tau / pbar
                 mu = mu + (muf - mu) * w
             f = -mu * qj * s / smag

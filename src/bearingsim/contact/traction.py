@@ -23,7 +23,9 @@ Models (one function each, numba kernels + Python wrappers that check input):
   conducted to both walls, plus the mean flash temperature of a half-space under a
   uniform flux for the transit time t_c = 2b/u, half the heat to each body;
   Carslaw & Jaeger 1959, §2.9), which lowers η by exp(−β ΔT) and τ_L through t.  The
-  implicit heat balance is solved by two fixed-point steps (documented approximation).
+  implicit heat balance τ = f(ΔT(τ)) is solved approximately by one secant step from
+  τ = 0 and τ = f(0): τ ≈ τ₀²/(2τ₀ − τ₁), τ₀ = f(0), τ₁ = f(θ u_s τ₀) (exact when f is linear
+  in τ over that interval; always between τ₁ and τ₀).
   μ_f = τ / p̄.
 * Mixed lubrication (seed 001, ref. 8): μ = μ_b + (μ_f − μ_b) w(Λ), w = 0 for Λ ≤ Λ₁,
   1 for Λ ≥ Λ₂, linear in between (default Λ₁ = 1, Λ₂ = 3; the seed says only
@@ -129,10 +131,9 @@ def fluid_shear_stress(p, u_s, h, theta, eta_p, tau0, t0c, r_l, c1, c2, c3, c4, 
     tau = _stress_at(0.0, eta_p, gdot, tau0, p, t0c, r_l, c1, c2, c3, c4, floor, beta_v)
     if theta <= 0.0:
         return tau
-    dT1 = theta * tau * u_s
-    tau1 = _stress_at(dT1, eta_p, gdot, tau0, p, t0c, r_l, c1, c2, c3, c4, floor, beta_v)
-    dT2 = theta * 0.5 * (tau + tau1) * u_s
-    return _stress_at(dT2, eta_p, gdot, tau0, p, t0c, r_l, c1, c2, c3, c4, floor, beta_v)
+    tau1 = _stress_at(theta * tau * u_s, eta_p, gdot, tau0, p, t0c, r_l, c1, c2, c3, c4, floor, beta_v)
+    # secant (regula falsi) step on g(τ) = f(θ u_s τ) − τ between τ = 0 and τ = f(0)
+    return tau * tau / (2.0 * tau - tau1)
 
 
 @njit(cache=True, error_model="numpy")

@@ -133,61 +133,59 @@ def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, m
         out[k] = 0.0
     if q <= 0.0:
         return 0.0
-    p = np.empty(3)
-    rb = np.empty(3)
-    rr = np.empty(3)
-    t1 = np.empty(3)
-    t2 = np.empty(3)
-    f = np.empty(3)
-    m = np.empty(3)
     srr_c = 0.0
+    n0, n1, n2 = normal[0], normal[1], normal[2]
     for k in range(nsl):
         e1 = -1.0 + 2.0 * k / nsl
         e2 = -1.0 + 2.0 * (k + 1) / nsl
         qk = q * 0.75 * ((e2 - e1) - (e2 ** 3 - e1 ** 3) / 3.0)
         eta = 0.5 * (e1 + e2) * a
-        for i in range(3):
-            p[i] = centre[i] + eta * major[i] - eta * eta / (2.0 * r_dev) * normal[i]
-            rb[i] = p[i] - bc[i]
-            rr[i] = p[i] - rc[i]
-        _cross(wb, rb, t1)
-        _cross(wr, rr, t2)
-        vs0 = 0.0
-        vs1 = 0.0
-        vs2 = 0.0
-        ur0 = 0.0
-        ur1 = 0.0
-        ur2 = 0.0
-        vsb = np.empty(3)
-        vsr = np.empty(3)
-        for i in range(3):
-            vsb[i] = vb[i] + t1[i]
-            vsr[i] = vr[i] + t2[i]
-        nb = vsb[0] * normal[0] + vsb[1] * normal[1] + vsb[2] * normal[2]
-        nr = vsr[0] * normal[0] + vsr[1] * normal[1] + vsr[2] * normal[2]
-        vs0 = (vsb[0] - nb * normal[0]) - (vsr[0] - nr * normal[0])
-        vs1 = (vsb[1] - nb * normal[1]) - (vsr[1] - nr * normal[1])
-        vs2 = (vsb[2] - nb * normal[2]) - (vsr[2] - nr * normal[2])
-        ur0 = 0.5 * ((vsb[0] - nb * normal[0]) + (vsr[0] - nr * normal[0]))
-        ur1 = 0.5 * ((vsb[1] - nb * normal[1]) + (vsr[1] - nr * normal[1]))
-        ur2 = 0.5 * ((vsb[2] - nb * normal[2]) + (vsr[2] - nr * normal[2]))
+        dn = eta * eta / (2.0 * r_dev)
+        p0 = centre[0] + eta * major[0] - dn * n0
+        p1 = centre[1] + eta * major[1] - dn * n1
+        p2 = centre[2] + eta * major[2] - dn * n2
+        rb0, rb1, rb2 = p0 - bc[0], p1 - bc[1], p2 - bc[2]
+        rr0, rr1, rr2 = p0 - rc[0], p1 - rc[1], p2 - rc[2]
+        # surface velocities of ball and race at the slice point
+        sb0 = vb[0] + wb[1] * rb2 - wb[2] * rb1
+        sb1 = vb[1] + wb[2] * rb0 - wb[0] * rb2
+        sb2 = vb[2] + wb[0] * rb1 - wb[1] * rb0
+        sr0 = vr[0] + wr[1] * rr2 - wr[2] * rr1
+        sr1 = vr[1] + wr[2] * rr0 - wr[0] * rr2
+        sr2 = vr[2] + wr[0] * rr1 - wr[1] * rr0
+        nb = sb0 * n0 + sb1 * n1 + sb2 * n2
+        nr = sr0 * n0 + sr1 * n1 + sr2 * n2
+        sb0 -= nb * n0
+        sb1 -= nb * n1
+        sb2 -= nb * n2
+        sr0 -= nr * n0
+        sr1 -= nr * n1
+        sr2 -= nr * n2
+        vs0 = sb0 - sr0
+        vs1 = sb1 - sr1
+        vs2 = sb2 - sr2
+        ur0 = 0.5 * (sb0 + sr0)
+        ur1 = 0.5 * (sb1 + sr1)
+        ur2 = 0.5 * (sb2 + sr2)
         vs = math.sqrt(vs0 * vs0 + vs1 * vs1 + vs2 * vs2)
         u = math.sqrt(ur0 * ur0 + ur1 * ur1 + ur2 * ur2)
         den = math.sqrt(vs * vs + (s0 * u) ** 2 + vref * vref)
         c = -mu0 * qk / den
-        f[0] = c * vs0
-        f[1] = c * vs1
-        f[2] = c * vs2
+        f0 = c * vs0
+        f1 = c * vs1
+        f2 = c * vs2
         if k == nsl // 2:
             srr_c = vs / max(u, 1e-12)
-        _cross(rb, f, m)
-        for i in range(3):
-            out[i] += f[i]
-            out[3 + i] += m[i]
-        _cross(rr, f, m)
-        for i in range(3):
-            out[6 + i] -= m[i]
-        out[9] += -(f[0] * vs0 + f[1] * vs1 + f[2] * vs2)
+        out[0] += f0
+        out[1] += f1
+        out[2] += f2
+        out[3] += rb1 * f2 - rb2 * f1
+        out[4] += rb2 * f0 - rb0 * f2
+        out[5] += rb0 * f1 - rb1 * f0
+        out[6] -= rr1 * f2 - rr2 * f1
+        out[7] -= rr2 * f0 - rr0 * f2
+        out[8] -= rr0 * f1 - rr1 * f0
+        out[9] += -(f0 * vs0 + f1 * vs1 + f2 * vs2)
     return srr_c
 
 

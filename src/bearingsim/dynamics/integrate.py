@@ -16,6 +16,10 @@ error estimate and is rejected).  DOPRI5 (Dormand & Prince, J. Comput. Appl. Mat
 accepted step), with the standard step-size controller h ← h·min(5, max(0.2,
 0.9·err^(−1/5))) (Hairer et al. eq. II.4.13).
 
+Not cached by numba (``cache=True`` is unreliable for functions that take another
+jitted function as an argument): each process compiles the integrator once (~3 s);
+the right-hand sides themselves are cached.
+
 Determinism: no randomness, fixed arithmetic order, and every call of :func:`advance`
 stops exactly at the requested time and returns the proposed next step, so a run
 restarted from a checkpoint (t, y, h) repeats the same steps bit for bit.
@@ -45,7 +49,7 @@ STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (dive
                NOT_FINITE: "the state became non-finite", MAX_STEPS: "step limit reached"}
 
 
-@njit(cache=True)
+@njit
 def _stages(fun, args, t, y, h, k1, k2, k3, k4, k5, k6, k7, ytmp, ynew):
     n = y.shape[0]
     for i in range(n):
@@ -68,7 +72,7 @@ def _stages(fun, args, t, y, h, k1, k2, k3, k4, k5, k6, k7, ytmp, ynew):
     fun(t + h, ynew, k7, args)
 
 
-@njit(cache=True)
+@njit
 def advance(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
     """Integrate y' = fun(t, y) from t to t_end in place with DOPRI5 and error control.
 
@@ -155,7 +159,7 @@ def advance(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
     return status, t, h
 
 
-@njit(cache=True)
+@njit
 def fixed_steps(fun, args, t, y, h, nsteps):
     """``nsteps`` DOPRI5 steps of constant size h (no error control) — for order tests."""
     n = y.shape[0]
@@ -175,3 +179,137 @@ def fixed_steps(fun, args, t, y, h, nsteps):
             y[i] = ynew[i]
         t += h
     return t
+
+
+ROS2_GAMMA = 1.0 + 1.0 / np.sqrt(2.0)
+
+
+@njit
+def _apply_w(winv, blk, nbk, v, out):
+    """out = W⁻¹ v with W block diagonal: W_b on the blocks, identity elsewhere."""
+    for i in range(v.shape[0]):
+        out[i] = v[i]
+    for b in range(blk.shape[0]):
+        o = blk[b]
+        for i in range(nbk):
+            s = 0.0
+            for j in range(nbk):
+                s += winv[b, i, j] * v[o + j]
+            out[o + i] = s
+
+
+@njit
+def advance_ros2(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every):
+    """Linearly implicit W-method ROS2 (Verwer, Spee, Blom & Hundsdorfer, SIAM J. Sci. Comput. 20
+    (1999) 1456, eqs. 2.3–2.4) with a block-diagonal W = I − γ h J.
+
+        W k₁ = f(t, y),  W k₂ = f(t + h, y + h k₁) − 2 k₁,  y₁ = y + (3/2) h k₁ + (1/2) h k₂,
+
+    γ = 1 + 1/√2.  Second order for *any* W (a W-method), L-stable for the exact
+    Jacobian.  J holds only the blocks of ∂f/∂y of each body listed in ``blk`` (start
+    indices, ``nbk`` states each), found by finite differences (perturbing one component
+    of every block at once: the blocks do not depend on each other's states directly) and
+    refreshed every ``jac_every`` steps or after a rejection.  The error estimate is
+    y₁ − (y + h k₁) (first-order embedded solution); h ← h·min(5, max(0.2, 0.9 err^(−1/2))).
+    Same arguments and return values as :func:`advance`.
+    """
+    n = y.shape[0]
+    nb = blk.shape[0]
+    jac = np.zeros((nb, nbk, nbk))
+    winv = np.zeros((nb, nbk, nbk))
+    wm = np.zeros((nbk, nbk))
+    f0 = np.empty(n)
+    f1 = np.empty(n)
+    k1 = np.empty(n)
+    k2 = np.empty(n)
+    yt = np.empty(n)
+    ynew = np.empty(n)
+    epsb = np.empty(nb)
+    g = ROS2_GAMMA
+    need_jac = True
+    since = 0
+    h_w = -1.0
+    nacc = 0
+    nrej = 0
+    status = OK
+    while t < t_end:
+        if nacc + nrej >= max_steps:
+            status = MAX_STEPS
+            break
+        last = False
+        hs = h
+        if t + h >= t_end:
+            hs = t_end - t
+            last = True
+        fun(t, y, f0, args)
+        if need_jac or since >= jac_every:
+            for j in range(nbk):
+                for i in range(n):
+                    yt[i] = y[i]
+                for b in range(nb):
+                    o = blk[b] + j
+                    e = 1e-7 * max(abs(y[o]), 1e4 * atol[o])
+                    epsb[b] = e
+                    yt[o] = y[o] + e
+                fun(t, yt, f1, args)
+                for b in range(nb):
+                    o = blk[b]
+                    for i in range(nbk):
+                        jac[b, i, j] = (f1[o + i] - f0[o + i]) / epsb[b]
+            need_jac = False
+            since = 0
+            h_w = -1.0
+        if hs != h_w:
+            for b in range(nb):
+                for i in range(nbk):
+                    for j in range(nbk):
+                        wm[i, j] = -g * hs * jac[b, i, j]
+                    wm[i, i] += 1.0
+                winv[b] = np.linalg.inv(wm)
+            h_w = hs
+        _apply_w(winv, blk, nbk, f0, k1)
+        for i in range(n):
+            yt[i] = y[i] + hs * k1[i]
+        fun(t + hs, yt, f1, args)
+        for i in range(n):
+            f1[i] -= 2.0 * k1[i]
+        _apply_w(winv, blk, nbk, f1, k2)
+        err = 0.0
+        imax = 0
+        emax = -1.0
+        finite = True
+        for i in range(n):
+            ynew[i] = y[i] + hs * (1.5 * k1[i] + 0.5 * k2[i])
+            ei = 0.5 * hs * (k1[i] + k2[i])
+            r = ei / (atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i])))
+            r2 = r * r
+            if not np.isfinite(r2):
+                finite = False
+                imax = i
+                break
+            if r2 > emax:
+                emax = r2
+                imax = i
+            err += r2
+        info[2] = imax
+        info[3] = np.sqrt(emax) if finite else np.inf
+        err = np.sqrt(err / n) if finite else 1e10
+        if err <= 1.0:
+            for i in range(n):
+                y[i] = ynew[i]
+            t = t_end if last else t + hs
+            nacc += 1
+            since += 1
+            fac = 5.0 if err == 0.0 else min(5.0, max(0.2, 0.9 / np.sqrt(err)))
+            if not (last and hs < h):
+                h = hs * fac
+        else:
+            nrej += 1
+            need_jac = True
+            h = hs * max(0.2, 0.9 / np.sqrt(err))
+            if h < h_min:
+                status = STEP_TOO_SMALL if finite else NOT_FINITE
+                break
+    info[0] = nacc
+    info[1] = nrej
+    return status, t, h

@@ -80,7 +80,7 @@ def _summarise(rows, ballout, out):
 
 @njit(cache=True)
 def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters, resid, summ,
-                tol_ball, tol_ring, maxit_ball, maxit_ring):
+                tol_ball, tol_ring, maxit_ball, maxit_ring, predictor):
     """Solve every operating point i (loads[i], omega[i]) in order, warm-starting from point i−1;
     a point that hits the iteration limit or a singular stiffness is retried from ``q_cold``.
 
@@ -102,11 +102,31 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
     q = q_cold.copy()
     qtry = np.empty(5)
     sm = np.empty(6)
+    kprev = np.zeros((5, 5))
+    lprev = np.zeros(5)
+    have_prev = False
+    amax = 0.0
+    for r in range(nrow):
+        amax = max(amax, rows[r, kn.P_RI] + rows[r, kn.P_RO])
     for i in range(n):
         ld = loads[i]
         sc = _scale(ld, dm)
         for k in range(5):
             qtry[k] = q[k]
+        if predictor and have_prev:
+            # tangent predictor: q + K⁻¹ ΔF from the previous converged point (continuation)
+            ok = True
+            for k in range(5):
+                if not (kprev[k, k] > 0.0):
+                    ok = False
+            if ok:
+                dq = np.linalg.solve(kprev, ld - lprev)
+                smax = 0.0
+                for k in range(5):
+                    smax = max(smax, abs(dq[k]) * (1.0 if k < 3 else 0.5 * dm))
+                if smax < 0.05 * amax:
+                    for k in range(5):
+                        qtry[k] += dq[k]
         st, it, rn, bconv = kn.solve_ring(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
                                           tol_ball, tol_ring, maxit_ball, maxit_ring, sc)
         tot = it
@@ -135,10 +155,15 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
             # the ring equilibrium is good (status 4: only an unloaded ball's own balance failed)
             for k in range(5):
                 q[k] = qtry[k]
+                lprev[k] = ld[k]
+                for m in range(5):
+                    kprev[k, m] = kmat[k, m]
+            have_prev = True
         else:
             # do not continue from a failed point
             lam[:, :] = lam0
             xb[:, :, :] = 0.0
+            have_prev = False
     return 0
 
 
@@ -157,7 +182,7 @@ def order_points(loads: np.ndarray, omega: np.ndarray, bits: int = 5) -> np.ndar
 
 
 def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "outer",
-              q_start: np.ndarray | None = None, reorder: bool = False) -> dict:
+              q_start: np.ndarray | None = None, reorder: bool = False, predictor: bool = True) -> dict:
     """Solve many operating points of one bearing (or bearing system) in one compiled loop.
 
     Parameters
@@ -168,6 +193,7 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
     omega : float[n]  inner-ring speed [rad/s]
     control : ``"outer"``, ``"inner"`` or ``"auto"``
     q_start : cold start [m, rad] (default: the bearing's initial guess for the first point)
+    predictor : start each point from the previous solution plus the tangent step K⁻¹ ΔF
     reorder : visit scattered points along a Z-order curve (:func:`order_points`); results are
         returned in the caller's order
 
@@ -193,7 +219,7 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
     if n:
         solve_batch(rows, loads, omega, CONTROLS[control], np.asarray(q_start, dtype=float), out["q"], out["k"],
                     out["status"], out["iterations"], out["residual"], out["summary"], TOL_BALL, TOL_RING,
-                    MAXIT_BALL, MAXIT_RING)
+                    MAXIT_BALL, MAXIT_RING, predictor)
     if perm is not None:
         for key in list(out):
             v = np.empty_like(out[key])

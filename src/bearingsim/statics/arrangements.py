@@ -451,6 +451,11 @@ def arrangement_from_dict(data: dict) -> BearingSystem:
         position = "-9.1 mm"
         orientation = 1
         axial_offset = "10 um"
+
+    An optional ``[clearance]`` table (:func:`bearingsim.statics.clearance.operating_clearance_from_dict`:
+    fits, temperatures, speed) is applied after the preload: the preload of the file is the preload of
+    the set as supplied (unmounted, at the reference temperature); the operating preload before and after
+    is reported in ``notes["operating_clearance"]``.
     """
     from ..units import parse_quantity
 

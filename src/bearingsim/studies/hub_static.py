@@ -66,7 +66,8 @@ class HubStaticResult:
     tilt_stiffness: np.ndarray  #: 1/(K⁻¹)_γzγz [N·m/rad]
     row_axial_load: np.ndarray  #: (n, 2) [N]
     lifted_off: np.ndarray  #: (n, 2) bool
-    converged: np.ndarray  #: (n,) bool
+    converged: np.ndarray  #: (n,) bool: ring and every ball converged
+    ring_converged: np.ndarray = None  #: (n,) bool: ring equilibrium converged (balls off the inner race may not)
 
     @property
     def moment_stiffness(self) -> np.ndarray:
@@ -92,6 +93,7 @@ class HubStaticResult:
                 "row1_axial_load_N": float(self.row_axial_load[i, 1]),
                 "row0_lifted_off": bool(self.lifted_off[i, 0]), "row1_lifted_off": bool(self.lifted_off[i, 1]),
                 "converged": bool(self.converged[i]),
+                "ring_converged": bool(self.ring_converged[i]) if self.ring_converged is not None else None,
             })
         return out
 
@@ -106,7 +108,8 @@ class HubStaticResult:
                          f"{math.degrees(r['compliance_rad_per_N_m']) * 1e3:15.5f} "
                          f"{1.0 / (math.degrees(r['compliance_rad_per_N_m']) * 1e3):13.4f} "
                          f"{r['row0_axial_load_N']:10.1f} {r['row1_axial_load_N']:10.1f} {lift:>9}"
-                         + ("" if r["converged"] else "  NOT CONVERGED"))
+                         + ("" if r["converged"] else ("  ring converged; a ball off the inner raceway did not"
+                                                       if r["ring_converged"] else "  NOT CONVERGED")))
         lines.append(f"secant compliance over ±{M_MAX:.0f} N·m: {math.degrees(self.secant_compliance) * 1e3:.5f} "
                      f"deg/(kN·m)  (moment stiffness {1.0 / (math.degrees(self.secant_compliance) * 1e3):.4f} "
                      f"kN·m/deg)")
@@ -164,6 +167,7 @@ def run_study(bearing=None, moments=None, speed: float = 0.0, control: str = "ou
     rowfa = np.zeros((n, len(getattr(bearing, "rows", (0,)))))
     lift = np.zeros_like(rowfa, dtype=bool)
     conv = np.zeros(n, dtype=bool)
+    ring = np.zeros(n, dtype=bool)
     dfdm = np.array([1.0 / TYRE_RADIUS, 0.5 * (FR_MAX - FR_MIN) / M_MAX, 0.0, 0.0, 1.0])
     # march from M = 0 outwards, warm-starting each point from its neighbour
     order = list(np.argsort(np.abs(m), kind="stable"))
@@ -174,7 +178,12 @@ def run_study(bearing=None, moments=None, speed: float = 0.0, control: str = "ou
             j = min(prev, key=lambda k: abs(m[k] - m[i]))
             start = prev[j]
         res = solve(bearing, tied_loads(m[i]), speed, control, initial=start)
+        if start is not None and not res.converged:
+            cold = solve(bearing, tied_loads(m[i]), speed, control)
+            if cold.converged or (res.status.startswith("no equilibrium") and not cold.status.startswith("no eq")):
+                res = cold
         conv[i] = res.converged
+        ring[i] = res.converged or res.status.startswith("ring converged")
         disp[i] = res.displacement
         kinv = np.linalg.inv(res.stiffness)
         comp[i] = (kinv @ dfdm)[4]
@@ -182,8 +191,8 @@ def run_study(bearing=None, moments=None, speed: float = 0.0, control: str = "ou
         rr = ar.row_results(res)
         rowfa[i] = [r["axial_load_N"] for r in rr]
         lift[i] = [r["lifted_off"] for r in rr]
-        if res.converged:
+        if ring[i]:
             prev[i] = res.displacement
     fa = np.array([tied_loads(v).fa for v in m])
     fr = np.array([tied_loads(v).fr_y for v in m])
-    return HubStaticResult(bearing, speed, m, fa, fr, disp[:, 4], disp, comp, kt, rowfa, lift, conv)
+    return HubStaticResult(bearing, speed, m, fa, fr, disp[:, 4], disp, comp, kt, rowfa, lift, conv, ring)

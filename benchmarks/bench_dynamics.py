@@ -1,0 +1,116 @@
+"""Benchmark of the dynamic engine (issue 5): wall seconds per simulated second and peak memory.
+
+Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 20 ms;
+(b) examples/hub-moment-50hz.toml — seed-001 hub unit, 2 × 16 balls, 2 cages, 100 km/h,
+50 Hz moment, 0.1 s.  Target for (b): ≤ 300 s wall per simulated second on one core.
+
+Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
+         [--profile] [--kernel]
+The numba compilation is excluded (a 0.05 ms warm-up run compiles first).  Peak memory
+is the process's maximum resident set size.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import resource
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+CASES = {"a": ROOT / "examples" / "spindle-7011.toml", "b": ROOT / "examples" / "hub-moment-50hz.toml"}
+
+
+def run(name: str, duration: float | None, traction: str | None, profile: bool) -> dict:
+    from bearingsim.dynamics.case import load_case
+    from bearingsim.dynamics.run import simulate
+
+    case = load_case(CASES[name])
+    if traction:
+        case = dataclasses.replace(case, traction=traction)
+    with tempfile.TemporaryDirectory() as d:
+        warm = dataclasses.replace(case, duration=max(case.output_interval, 5e-5), output_interval=min(
+            case.output_interval, 5e-5))
+        simulate(warm, out=Path(d) / "warm.nc")
+        full = dataclasses.replace(case, duration=duration or case.duration)
+        t0 = time.perf_counter()
+        if profile:
+            import cProfile
+            import pstats
+
+            pr = cProfile.Profile()
+            pr.enable()
+        res = simulate(full, out=Path(d) / "run.nc")
+        if profile:
+            pr.disable()
+            pstats.Stats(pr).sort_stats("cumulative").print_stats(12)
+        wall = time.perf_counter() - t0
+    peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    out = {"case": name, "traction": full.traction, "simulated_s": full.duration, "wall_s": wall,
+           "wall_per_simulated_s": wall / full.duration, "steps": res.summary["steps"],
+           "rejected": res.summary["rejected_steps"], "peak_rss_MB": peak}
+    return out
+
+
+def kernel_profile(name: str) -> None:
+    """Cost of one right-hand-side evaluation per traction model, and what limits the step."""
+    import collections
+
+    import numpy as np
+
+    from bearingsim.dynamics import forces as fo
+    from bearingsim.dynamics import model as md
+    from bearingsim.dynamics import run as R
+    from bearingsim.dynamics.case import load_case
+
+    case = load_case(CASES[name])
+    for trac in ("none", "coulomb", "slices"):
+        c = dataclasses.replace(case, traction=trac)
+        m, ls, y, _ = R.build(c)
+        args = fo.args_of(m, ls)
+        dy = np.zeros_like(y)
+        fo.rhs_args(0.0, y, dy, args)
+        n = 2000
+        t0 = time.perf_counter()
+        for _ in range(n):
+            fo.rhs_args(0.0, y, dy, args)
+        us = (time.perf_counter() - t0) / n * 1e6
+        st = R.Stepper(m, ls, y.copy(), tol=c.tolerance)
+        cnt = collections.Counter()
+        for i in range(1, 101):
+            st.advance(i * 2e-6)
+            cnt[md.describe_component(m, int(st._info[2])).split(":")[0]] += 1
+        print(f"case ({name}) {trac:8s}: {us:7.1f} us per right-hand side ({m.n_balls} balls); "
+              f"mean step over 0.2 ms {0.2e-3 / max(st.steps, 1) * 1e6:.3g} us; largest error most often in "
+              f"{cnt.most_common(1)[0][0]}")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--case", default="both", choices=["a", "b", "both"])
+    ap.add_argument("--duration", default=None, help='simulated time, e.g. "2 ms" (default: the case file)')
+    ap.add_argument("--traction", default=None, choices=["slices", "coulomb", "none"])
+    ap.add_argument("--profile", action="store_true", help="cProfile the run")
+    ap.add_argument("--kernel", action="store_true", help="time one right-hand side per traction model and "
+                    "report what limits the step (numba profiling)")
+    a = ap.parse_args(argv)
+    if a.kernel:
+        for name in (["a", "b"] if a.case == "both" else [a.case]):
+            kernel_profile(name)
+        return
+    from bearingsim.units import parse_quantity
+
+    dur = parse_quantity(a.duration, "time", "--duration") if a.duration else None
+    for name in (["a", "b"] if a.case == "both" else [a.case]):
+        r = run(name, dur, a.traction, a.profile)
+        print(f"case ({r['case']}) traction={r['traction']}: {r['simulated_s'] * 1e3:.4g} ms simulated in "
+              f"{r['wall_s']:.3g} s -> {r['wall_per_simulated_s']:.4g} wall s per simulated s; "
+              f"{r['steps']} steps ({r['rejected']} rejected); peak RSS {r['peak_rss_MB']:.0f} MB")
+        sys.stdout.flush()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,163 @@
+"""CLI commands of the lubrication module: ``lubrication``, ``lubricants``, ``traction-curve``.
+
+Wire with ``cli_lubrication.register(app)`` in :mod:`bearingsim.cli`.  Options take
+quantities with units as strings; ``--json`` prints one JSON object in SI; bad input
+raises :class:`~bearingsim.errors.InputError` (the main CLI prints it and exits 2).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+
+def _loads(fa, fr, fz, moment, my):
+    from .statics.jones_harris import Loads
+    from .units import parse_quantity
+
+    return Loads(
+        fa=parse_quantity(fa, "force", "--fa") if fa is not None else 0.0,
+        fr_y=parse_quantity(fr, "force", "--fr") if fr is not None else 0.0,
+        fr_z=parse_quantity(fz, "force", "--fz") if fz is not None else 0.0,
+        m_y=parse_quantity(my, "moment", "--my") if my is not None else 0.0,
+        m_z=parse_quantity(moment, "moment", "--moment") if moment is not None else 0.0,
+    )
+
+
+def lubrication(
+    bearing: str = typer.Argument(..., help="Catalogue name or TOML file"),
+    fa: Optional[str] = typer.Option(None, "--fa", help='Axial load along +x, e.g. "1000 N"'),
+    fr: Optional[str] = typer.Option(None, "--fr", help="Radial load along +y"),
+    fz: Optional[str] = typer.Option(None, "--fz", help="Radial load along +z"),
+    moment: Optional[str] = typer.Option(None, "--moment", help='Moment about z, e.g. "1 N*m"'),
+    my: Optional[str] = typer.Option(None, "--my", help="Moment about y"),
+    speed: Optional[str] = typer.Option(None, "--speed", help='Inner-ring speed, e.g. "3000 rpm"'),
+    control: str = typer.Option("outer", "--control", help="Raceway control: outer, inner or auto"),
+    lubricant: str = typer.Option("iso-vg-68", "--lubricant", help="Library name (bearingsim lubricants) or TOML"),
+    temperature: str = typer.Option("60 degC", "--temperature", help='Oil inlet temperature, e.g. "60 degC"'),
+    roughness: str = typer.Option("0.1 um", "--roughness", help='Composite rms roughness, e.g. "0.05 um"'),
+    slices: int = typer.Option(10, "--slices", help="Slices of each contact ellipse"),
+    model: str = typer.Option("mixed", "--model", help="Traction model: mixed, fluid or boundary"),
+    as_json: bool = typer.Option(False, "--json", help="Print one JSON object in SI units"),
+):
+    """Film thickness, Λ, regime, traction and power loss of every loaded contact (Jones kinematics)."""
+    from .errors import InputError
+    from .io import load_bearing
+    from .lubrication import lubrication_report
+    from .statics.jones_harris import solve
+    from .units import parse_quantity
+
+    b = load_bearing(bearing)
+    loads = _loads(fa, fr, fz, moment, my)
+    omega = parse_quantity(speed, "speed", "--speed") if speed is not None else 0.0
+    if omega == 0.0:
+        raise InputError("--speed", "a lubrication report needs a non-zero speed", 'e.g. --speed "3000 rpm"')
+    t = parse_quantity(temperature, "temperature", "--temperature")
+    sigma = parse_quantity(roughness, "length", "--roughness")
+    if sigma < 0:
+        raise InputError("--roughness", "must be >= 0", 'e.g. "0.05 um"')
+    if slices < 1:
+        raise InputError("--slices", f"must be >= 1, got {slices}", "e.g. 10")
+    res = solve(b, loads, omega, control)
+    rep = lubrication_report(res, lubricant, t, sigma, n_slices=slices, model=model)
+    if as_json:
+        typer.echo(json.dumps(rep))
+    else:
+        _print_report(rep, getattr(b, "name", bearing))
+    if not res.converged:
+        raise typer.Exit(1)
+
+
+def _print_report(rep: dict, name: str) -> None:
+    from .clitools import make_console
+    from rich.table import Table
+
+    con = make_console()
+    con.print(f"[bold]{name}[/]  {rep['lubricant']} at {rep['temperature_K'] - 273.15:.1f} °C "
+              f"(η₀ = {rep['dynamic_viscosity_Pa_s'] * 1e3:.2f} mPa·s), speed {rep['speed_rad_s'] * 30 / math.pi:.0f} rpm, "
+              f"σ = {rep['roughness_m'] * 1e6:.3f} µm, model {rep['model']}"
+              + ("" if rep["converged"] else "  [red]static solution NOT CONVERGED[/]"))
+    t = Table(title="loaded contacts (traction and power at Jones' kinematics)")
+    for c in ("ball", "contact", "Q N", "a mm", "b mm", "p_max MPa", "u m/s", "Rx mm", "Ry mm", "h_c µm",
+              "h_min µm", "Λ", "regime", "μ", "P W"):
+        t.add_column(c, justify="right")
+    for bl in rep["balls"]:
+        for c in ("inner", "outer"):
+            e = bl[c]
+            if not e:
+                continue
+            lam = e["film_parameter"]
+            t.add_row(str(bl["index"]), c, f"{e['load_N']:.1f}", f"{e['semi_major_m'] * 1e3:.3f}",
+                      f"{e['semi_minor_m'] * 1e3:.3f}", f"{e['max_pressure_Pa'] / 1e6:.0f}",
+                      f"{e['entrainment_speed_m_s']:.3f}", f"{e['rx_m'] * 1e3:.3f}", f"{e['ry_m'] * 1e3:.2f}",
+                      f"{e['central_film_m'] * 1e6:.4f}", f"{e['minimum_film_m'] * 1e6:.4f}",
+                      "∞" if lam is None else f"{lam:.2f}", str(e["regime"]), f"{e['traction_coefficient']:.4f}",
+                      f"{e['power_loss_W']:.3f}")
+    con.print(t)
+    con.print(f"total power loss {rep['total_power_loss_W']:.2f} W")
+
+
+def lubricants(as_json: bool = typer.Option(False, "--json", help="Print one JSON object in SI units")):
+    """List the built-in lubricants."""
+    from .lubricants import library
+
+    lib = library()
+    if as_json:
+        typer.echo(json.dumps({n: lub.summary(333.15) for n, lub in lib.items()}))
+        return
+    from .clitools import make_console
+    from rich.table import Table
+
+    t = Table(title="bearingsim lubricants (η at 60 °C)")
+    t.add_column("name", no_wrap=True)
+    for c in ("ν40 cSt", "ν100 cSt", "η mPa·s", "α 1/GPa", "ρ15", "k W/mK", "°C range"):
+        t.add_column(c, justify="right")
+    for n, lub in lib.items():
+        t.add_row(n, f"{lub.kinematic_viscosity(313.15) * 1e6:.1f}", f"{lub.kinematic_viscosity(373.15) * 1e6:.2f}",
+                  f"{lub.dynamic_viscosity(333.15) * 1e3:.1f}", f"{lub.pressure_viscosity_coefficient * 1e9:.1f}",
+                  f"{lub.density_15:.0f}", f"{lub.thermal_conductivity:.3f}",
+                  f"{lub.min_temperature - 273.15:.0f}..{lub.max_temperature - 273.15:.0f}")
+    con = make_console()
+    con.print(t)
+    for n, lub in lib.items():
+        con.print(f"{n}: {lub.description}")
+
+
+def traction_curve(
+    out: Path = typer.Option(Path("traction_curve.png"), "--out", help="Image file to write"),
+    lubricant: str = typer.Option("hub-grease-base-oil", "--lubricant", help="Library name or TOML"),
+    temperature: str = typer.Option("60 degC", "--temperature", help="Oil temperature"),
+    loads: str = typer.Option("500 N,2000 N,5000 N", "--loads", help="Comma-separated contact loads"),
+    speeds: str = typer.Option("1 m/s,5 m/s,20 m/s", "--speeds", help="Comma-separated rolling speeds"),
+    s_max: float = typer.Option(0.05, "--s-max", help="Largest slide-roll ratio plotted"),
+):
+    """Plot the traction coefficient vs slide-roll ratio (seed 001 Fig. 4 style) for one ball contact."""
+    from .errors import InputError
+    from .lubrication import plot_traction_curves
+    from .units import _convert, parse_quantity
+
+    t = parse_quantity(temperature, "temperature", "--temperature")
+    qs = [parse_quantity(x.strip(), "force", "--loads") for x in loads.split(",") if x.strip()]
+    us = [_convert(x.strip() if not x.strip().replace(".", "", 1).isdigit() else x.strip() + " m/s", "m/s", "--speeds")
+          for x in speeds.split(",") if x.strip()]
+    if not qs or not us or min(qs) <= 0 or min(us) <= 0:
+        raise InputError("--loads/--speeds", "give positive loads and speeds", 'e.g. --loads "500 N,2000 N"')
+    if not (0 < s_max <= 1):
+        raise InputError("--s-max", f"must lie in (0, 1], got {s_max}", "e.g. 0.05")
+    fig = plot_traction_curves(lubricant, t, qs, us, s_max=s_max)
+    fig.savefig(out, dpi=120)
+    typer.echo(str(out))
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``lubrication``, ``lubricants`` and ``traction-curve`` to the bearingsim CLI."""
+    app.command("lubrication")(lubrication)
+    app.command("lubricants")(lubricants)
+    app.command("traction-curve")(traction_curve)
+
+
+__all__ = ["register", "lubrication", "lubricants", "traction_curve"]

@@ -1,0 +1,66 @@
+"""Dynamic engine options: land-guided cage, speed ramp, diverging-step message, initial state."""
+
+import dataclasses
+import math
+
+import numpy as np
+import pytest
+
+from bearingsim.dynamics import forces as fo
+from bearingsim.dynamics import model as md
+from bearingsim.dynamics.run import SimulationError, Stepper
+from bearingsim.io import load_bearing
+from bearingsim.statics import jones_harris as jh
+
+
+def _start(**kw):
+    b = load_bearing("skf-7011-cdga-hc")
+    w = 6000 * math.pi / 30
+    res = jh.solve(b, jh.Loads(fa=2000.0), w)
+    m = md.build_model(b, ring_mass=2.0, damping_alpha=0.05, **kw)
+    return m, md.initial_state(m, res, w), res
+
+
+def test_initial_state_reproduces_statics():
+    """Contact loads and angles of the start equal the quasi-static solution (same Hertz law and geometry)."""
+    m, y, res = _start(traction="none", speed=(6000 * math.pi / 30,) * 2 + (0.0,))
+    _, diag, _ = fo.evaluate(m, 0.0, y, fo.constant_loads(fa=2000.0))
+    np.testing.assert_allclose(diag[:, fo.D_QI], res.balls["inner_load_N"], rtol=1e-9)
+    np.testing.assert_allclose(diag[:, fo.D_QO], res.balls["outer_load_N"], rtol=1e-9)
+    np.testing.assert_allclose(diag[:, fo.D_AI], res.balls["inner_contact_angle_rad"], rtol=1e-9)
+    np.testing.assert_allclose(diag[:, fo.D_WM], res.balls["orbital_speed_rad_s"], rtol=1e-12)
+
+
+@pytest.mark.parametrize("guidance", ["outer-land", "inner-land"])
+def test_land_guided_cage_is_held_by_its_land(guidance):
+    w = 6000 * math.pi / 30
+    m, y, _ = _start(traction="coulomb", speed=(w, w, 0.0), guidance=guidance, land_clearance=5e-5,
+                     pocket_clearance=3e-4)
+    oc = m.cage_offset
+    y[oc + 1] = 4e-5  # cage off-centre, close to its land
+    y[oc + 4] = 0.5  # moving towards it
+    st = Stepper(m, fo.constant_loads(fa=2000.0), y, tol=1e-6)
+    ecc = 0.0
+    land = 0.0
+    for i in range(1, 11):
+        st.advance(i * 5e-5)
+        s = st.sample()
+        ecc = max(ecc, float(np.hypot(*st.y[oc + 1:oc + 3])))
+        land = max(land, s["power_loss_land"])
+    assert land > 0, "the cage must have touched its land"
+    assert ecc < 5e-5 + 2e-5, ecc
+
+
+def test_speed_ramp_is_followed():
+    w1 = 3000 * math.pi / 30
+    m, y, _ = _start(traction="coulomb", speed=(0.0, w1, 1e-3))
+    st = Stepper(m, fo.constant_loads(fa=2000.0), y, tol=1e-6)
+    st.advance(5e-4)
+    assert st.sample()["shaft_speed"] == pytest.approx(0.5 * w1)
+
+
+def test_diverging_step_names_time_and_body():
+    m, y, _ = _start(traction="coulomb", speed=(600.0, 600.0, 0.0))
+    st = Stepper(m, fo.constant_loads(fa=2000.0), y, tol=1e-12, h_min=1e-6)
+    with pytest.raises(SimulationError, match=r"t = .* ms.*(ball|cage|inner ring)"):
+        st.advance(1e-3)
