@@ -14,6 +14,7 @@ from typing import Optional
 
 import typer
 
+from .clitools import parse_loads
 from .errors import BearingSimError, InputError
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
@@ -26,20 +27,6 @@ def _console():
     from .clitools import make_console
 
     return make_console()
-
-
-def parse_loads(fa, fr, fz, moment, my):
-    """CLI load options (strings with units; bare numbers in N and N·m) → Loads."""
-    from .statics.jones_harris import Loads
-    from .units import parse_quantity
-
-    return Loads(
-        fa=parse_quantity(fa, "force", "--fa") if fa is not None else 0.0,
-        fr_y=parse_quantity(fr, "force", "--fr") if fr is not None else 0.0,
-        fr_z=parse_quantity(fz, "force", "--fz") if fz is not None else 0.0,
-        m_y=parse_quantity(my, "moment", "--my") if my is not None else 0.0,
-        m_z=parse_quantity(moment, "moment", "--moment") if moment is not None else 0.0,
-    )
 
 
 @app.command()

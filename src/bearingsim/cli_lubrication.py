@@ -14,18 +14,7 @@ from typing import Optional
 
 import typer
 
-
-def _loads(fa, fr, fz, moment, my):
-    from .statics.jones_harris import Loads
-    from .units import parse_quantity
-
-    return Loads(
-        fa=parse_quantity(fa, "force", "--fa") if fa is not None else 0.0,
-        fr_y=parse_quantity(fr, "force", "--fr") if fr is not None else 0.0,
-        fr_z=parse_quantity(fz, "force", "--fz") if fz is not None else 0.0,
-        m_y=parse_quantity(my, "moment", "--my") if my is not None else 0.0,
-        m_z=parse_quantity(moment, "moment", "--moment") if moment is not None else 0.0,
-    )
+from .clitools import parse_loads
 
 
 def lubrication(
@@ -52,7 +41,7 @@ def lubrication(
     from .units import parse_quantity
 
     b = load_bearing(bearing)
-    loads = _loads(fa, fr, fz, moment, my)
+    loads = parse_loads(fa, fr, fz, moment, my)
     omega = parse_quantity(speed, "speed", "--speed") if speed is not None else 0.0
     if omega == 0.0:
         raise InputError("--speed", "a lubrication report needs a non-zero speed", 'e.g. --speed "3000 rpm"')

@@ -12,3 +12,17 @@ def make_console(stderr: bool = False):
     if not con.is_terminal:
         con = Console(stderr=stderr, width=160)
     return con
+
+
+def parse_loads(fa, fr, fz, moment, my):
+    """CLI load options (strings with units; bare numbers in N and N·m) → Loads."""
+    from .statics.jones_harris import Loads
+    from .units import parse_quantity
+
+    return Loads(
+        fa=parse_quantity(fa, "force", "--fa") if fa is not None else 0.0,
+        fr_y=parse_quantity(fr, "force", "--fr") if fr is not None else 0.0,
+        fr_z=parse_quantity(fz, "force", "--fz") if fz is not None else 0.0,
+        m_y=parse_quantity(my, "moment", "--my") if my is not None else 0.0,
+        m_z=parse_quantity(moment, "moment", "--moment") if moment is not None else 0.0,
+    )
