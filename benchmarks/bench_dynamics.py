@@ -5,6 +5,7 @@ Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 2
 50 Hz moment, 0.1 s.  Target for (b): ≤ 300 s wall per simulated second on one core.
 
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
+         [--integrator dopri5|ros2w]
          [--profile] [--kernel]
 The numba compilation is excluded (a 0.05 ms warm-up run compiles first).  Peak memory
 is the process's maximum resident set size.
@@ -24,13 +25,15 @@ ROOT = Path(__file__).resolve().parents[1]
 CASES = {"a": ROOT / "examples" / "spindle-7011.toml", "b": ROOT / "examples" / "hub-moment-50hz.toml"}
 
 
-def run(name: str, duration: float | None, traction: str | None, profile: bool) -> dict:
+def run(name: str, duration: float | None, traction: str | None, profile: bool, integrator: str | None = None) -> dict:
     from bearingsim.dynamics.case import load_case
     from bearingsim.dynamics.run import simulate
 
     case = load_case(CASES[name])
     if traction:
         case = dataclasses.replace(case, traction=traction)
+    if integrator:
+        case = dataclasses.replace(case, integrator=integrator)
     with tempfile.TemporaryDirectory() as d:
         warm = dataclasses.replace(case, duration=max(case.output_interval, 5e-5), output_interval=min(
             case.output_interval, 5e-5))
@@ -49,7 +52,7 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool) 
             pstats.Stats(pr).sort_stats("cumulative").print_stats(12)
         wall = time.perf_counter() - t0
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
-    out = {"case": name, "traction": full.traction, "simulated_s": full.duration, "wall_s": wall,
+    out = {"case": name, "traction": full.traction, "integrator": full.integrator, "simulated_s": full.duration, "wall_s": wall,
            "wall_per_simulated_s": wall / full.duration, "steps": res.summary["steps"],
            "rejected": res.summary["rejected_steps"], "peak_rss_MB": peak}
     return out
@@ -93,6 +96,7 @@ def main(argv=None):
     ap.add_argument("--case", default="both", choices=["a", "b", "both"])
     ap.add_argument("--duration", default=None, help='simulated time, e.g. "2 ms" (default: the case file)')
     ap.add_argument("--traction", default=None, choices=["slices", "coulomb", "none"])
+    ap.add_argument("--integrator", default=None, choices=["dopri5", "ros2w"])
     ap.add_argument("--profile", action="store_true", help="cProfile the run")
     ap.add_argument("--kernel", action="store_true", help="time one right-hand side per traction model and "
                     "report what limits the step (numba profiling)")
@@ -105,8 +109,8 @@ def main(argv=None):
 
     dur = parse_quantity(a.duration, "time", "--duration") if a.duration else None
     for name in (["a", "b"] if a.case == "both" else [a.case]):
-        r = run(name, dur, a.traction, a.profile)
-        print(f"case ({r['case']}) traction={r['traction']}: {r['simulated_s'] * 1e3:.4g} ms simulated in "
+        r = run(name, dur, a.traction, a.profile, a.integrator)
+        print(f"case ({r['case']}) traction={r['traction']} integrator={r['integrator']}: {r['simulated_s'] * 1e3:.4g} ms simulated in "
               f"{r['wall_s']:.3g} s -> {r['wall_per_simulated_s']:.4g} wall s per simulated s; "
               f"{r['steps']} steps ({r['rejected']} rejected); peak RSS {r['peak_rss_MB']:.0f} MB")
         sys.stdout.flush()

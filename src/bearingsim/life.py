@@ -99,7 +99,9 @@ def _rows_and_ratings(bearing):
 def reference_rating_life(result) -> float | None:
     """ISO/TS 16281 basic reference rating life L10r [10^6 revolutions] from the ball loads of a
     :class:`~bearingsim.statics.jones_harris.StaticResult`; ``None`` when no dynamic load rating is
-    known (``dynamic_load_rating`` in the bearing file)."""
+    known (``dynamic_load_rating`` in the bearing file) or the result did not converge."""
+    if not getattr(result, "converged", True):
+        return None
     rows = _rows_and_ratings(result.bearing)
     if any(c <= 0 for _, c in rows):
         return None

@@ -371,10 +371,11 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
         if client is not None:
             from distributed import as_completed
 
+            # the bearing travels with each task (a few kB): tasks without data dependencies are
+            # balanced freely by the scheduler (a scattered dependency pinned most tasks to one worker)
             futs = {}
-            bfut = client.scatter(bearing, broadcast=True, hash=False)
             for b in blocks:
-                futs[client.submit(solve_block, bfut, axes, b, control, pure=False)] = b
+                futs[client.submit(solve_block, bearing, axes, b, control, pure=False)] = b
             for f in as_completed(list(futs)):
                 done(futs.pop(f), f.result())  # pop: the result is released once written
                 f.release()
@@ -415,6 +416,19 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
 
         return xr.open_dataset(sink.final)
     return _dataset_from_memory(sink, axes, attrs)
+
+
+def warm_up(bearing="skf-7011-cdga-hc") -> bool:
+    """Load the compiled kernels in this process (run it on every Dask worker with ``client.run(warm_up)``
+    before timing: the first block a worker solves otherwise pays the numba cache load)."""
+    if isinstance(bearing, str | Path):
+        from .io import load_bearing
+
+        bearing = load_bearing(bearing)
+    solve_block(bearing, {name: np.array([0.0]) for name, _, _ in AXES} | {"fa": np.array([100.0, 200.0]),
+                                                                           "speed": np.array([0.0, 100.0])},
+                (slice(0, 2), slice(0, 2)))
+    return True
 
 
 def plot_map(ds, path: str | Path, var: str = "stiffness", i: int = 0, j: int = 0):

@@ -64,3 +64,28 @@ def test_stops_exactly_and_is_deterministic():
     _, t4, _ = ig.advance(oscillator, (3.0,), t3, 1.0, b, h3, atol, rtol, 1e-12, 10**6, info)
     assert t1 == 0.37 and t2 == 1.0
     assert np.array_equal(a, b)
+
+
+@njit(cache=True)
+def stiff(t, y, dy, args):
+    # autonomous: y1' = −k (y1 − y3) − y2, y2' = y3, y3' = −y2 with y(0) = (1, 0, 1):
+    # y1 = y3 = cos t, y2 = sin t for any k (stiff for k h ≫ 1; one implicit block of all three states)
+    dy[0] = -args[0] * (y[0] - y[2]) - y[1]
+    dy[1] = y[2]
+    dy[2] = -y[1]
+
+
+def test_ros2w_is_stable_and_accurate_on_a_stiff_problem():
+    """ROS2 W-method (Verwer et al. 1999): steps far beyond the explicit stability limit, error ∝ tolerance."""
+    k = 1e6
+    blk = np.array([0], dtype=np.int64)
+    errs = []
+    for tol in (1e-4, 1e-6):
+        y = np.array([1.0, 0.0, 1.0])
+        info = np.zeros(4)
+        st, t, h = ig.advance_ros2(stiff, (k,), 0.0, 2.0, y, 1e-3, np.full(3, tol), np.zeros(3), 1e-12, 10**6,
+                                   info, blk, 3, 20)
+        assert st == ig.OK and t == 2.0
+        assert info[0] < 20000, "explicit stability alone would need > 3e5 steps"
+        errs.append(max(abs(y[0] - math.cos(2.0)), abs(y[1] - math.sin(2.0))))
+    assert errs[0] < 1e-3 and errs[1] < 1e-5, errs

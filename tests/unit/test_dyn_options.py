@@ -1,6 +1,5 @@
 """Dynamic engine options: land-guided cage, speed ramp, diverging-step message, initial state."""
 
-import dataclasses
 import math
 
 import numpy as np
@@ -64,3 +63,18 @@ def test_diverging_step_names_time_and_body():
     st = Stepper(m, fo.constant_loads(fa=2000.0), y, tol=1e-12, h_min=1e-6)
     with pytest.raises(SimulationError, match=r"t = .* ms.*(ball|cage|inner ring)"):
         st.advance(1e-3)
+
+
+def test_initial_ball_rotation_rolls_without_slip_in_both_rows_of_a_mirrored_unit():
+    """Jones' speeds give no sliding at the contact centres (Jones 1960) — also for the mirrored row
+    (s = −1) of a back-to-back unit, whose spin pseudo-vector is mirrored."""
+    b = load_bearing("hub-seed001")
+    w = 884 * math.pi / 30
+    res = jh.solve(b, jh.Loads(fr_y=2800.0), w)
+    m = md.build_model(b, traction="coulomb", speed=(w, w, 0.0))
+    y = md.initial_state(m, res, w)
+    _, diag, _ = fo.evaluate(m, 0.0, y, fo.constant_loads(fr_y=2800.0))
+    loaded = diag[:, fo.D_QI] > 0
+    assert np.all(diag[loaded, fo.D_SRI] < 3e-3) and np.all(diag[loaded, fo.D_SRO] < 3e-3)
+    np.testing.assert_allclose(diag[:, fo.D_WR], res.balls["spin_speed_rad_s"], rtol=1e-9)
+    np.testing.assert_allclose(diag[:, fo.D_BETA], res.balls["pitch_angle_rad"], rtol=1e-9)

@@ -145,3 +145,18 @@ def test_cli_map_export_and_hub_static(tmp_path):
     r = runner.invoke(app, ["reproduce", "hub-static", "--out", str(tmp_path), "--points", "3"])
     assert r.exit_code == 0, r.output
     assert (tmp_path / "hub_static.csv").exists() and (tmp_path / "hub_static.png").exists()
+
+
+def test_batch_predictor_and_reordering_do_not_change_the_solution():
+    b = load_bearing("skf-7011-cdga-hc")
+    rng = np.random.default_rng(1)
+    n = 40
+    loads = np.column_stack([rng.uniform(800, 3000, n), rng.uniform(-300, 300, n), rng.uniform(-300, 300, n),
+                             rng.uniform(-5, 5, n), rng.uniform(-5, 5, n)])
+    om = rng.uniform(0, 1000, n)
+    a = run_batch(b, loads, om, predictor=False)
+    c = run_batch(b, loads, om, predictor=True, reorder=True)
+    ok = a["converged"] & c["converged"]
+    assert ok.sum() >= 0.9 * n
+    np.testing.assert_allclose(c["q"][ok], a["q"][ok], rtol=1e-7, atol=1e-14)
+    np.testing.assert_allclose(c["k"][ok], a["k"][ok], rtol=1e-6, atol=1e-6 * np.abs(a["k"]).max())

@@ -7,7 +7,6 @@ t_c = 2 (δ_max / v) ∫₀¹ dx/√(1 − x^(5/2)) = 2.9433 δ_max / v.
 """
 
 import dataclasses
-import math
 
 import numpy as np
 from scipy.special import beta

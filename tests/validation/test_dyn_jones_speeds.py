@@ -55,3 +55,24 @@ def test_steady_state_ball_speeds_match_jones(traction, t_end):
         np.testing.assert_allclose(wc, res.cage_speed, rtol=0.02, err_msg=f"Jones 1960 cage speed ({traction})")
     np.testing.assert_allclose(wr, res.balls["spin_speed_rad_s"].mean(), rtol=0.02,
                                err_msg=f"Jones 1960 ball spin speed ({traction})")
+
+
+def test_hub_unit_both_rows_reach_jones_speeds():
+    """Double-row hub unit of seed 001 (back-to-back, mirrored rows) at 100 km/h under a radial load."""
+    b = load_bearing("hub-seed001")
+    w = 884 * math.pi / 30
+    res = jh.solve(b, jh.Loads(fr_y=2800.0), w, control="outer")
+    m = md.build_model(b, traction="coulomb", speed=(w, w, 0.0), ring_mass=3.0, damping_alpha=0.05)
+    y = md.initial_state(m, res, w)
+    for k in range(m.n_balls):
+        o = md.N_RING + md.N_BALL * k
+        y[o + 6:o + 9] *= 0.9
+    st = Stepper(m, fo.constant_loads(fr_y=2800.0), y, tol=1e-6)
+    st.advance(1.5e-3)
+    s = st.sample()
+    for row in (0, 1):
+        sel = (m.ball_row == row) & (s["inner_contact_load"] > 0)
+        np.testing.assert_allclose(s["ball_spin_speed"][sel].mean(), res.balls["spin_speed_rad_s"][sel].mean(),
+                                   rtol=0.02, err_msg=f"Jones 1960 spin speed, hub row {row}")
+        np.testing.assert_allclose(s["ball_orbital_speed"][sel].mean(), res.balls["orbital_speed_rad_s"][sel].mean(),
+                                   rtol=0.02, err_msg=f"Jones 1960 orbital speed, hub row {row}")

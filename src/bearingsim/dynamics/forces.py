@@ -468,8 +468,9 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, pts, lubs, loadspec, diag, gdiag
             wrad = w[1] * cps + w[2] * sps
             wtan = -w[1] * sps + w[2] * cps
             mag = math.sqrt(wx * wx + wrad * wrad + wtan * wtan)
-            diag[k, D_WR] = mag if s * wx >= 0.0 else -mag
-            diag[k, D_BETA] = math.atan2(-wrad * (1.0 if s * wx >= 0 else -1.0), abs(wx))
+            sg = 1.0 if wx >= 0.0 else -1.0
+            diag[k, D_WR] = sg * mag
+            diag[k, D_BETA] = math.atan2(-s * wrad * sg, wx * sg)
             diag[k, D_QC] = 0.0
             diag[k, D_PC] = 0.0
         mass = par[kn.P_MASS]

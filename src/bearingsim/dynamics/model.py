@@ -358,8 +358,9 @@ def initial_state(model: Model, static=None, speed: float | None = None) -> np.n
     bearing: ring displacement q, per-ball centres (x1_m, x2_m from the outer groove
     centre in the ball's axial–radial plane), Jones orbital speed ω_m, spin speed ω_R
     and pitch angle β.  The ball's absolute angular velocity is ω_m e_x plus the Jones
-    spin ω_R (s cos β e_x − sin β e_r) (Jones 1960; statics kernel docstring: spin
-    vector ω_R (cos β, −sin β) in the local (ξ, r) plane, relative to the cage).  The
+    spin ω_R (cos β e_x − s sin β e_r) (Jones 1960; statics kernel docstring: spin
+    vector ω_R (cos β, −sin β) in the local (ξ, r) plane of a row with s = +1, relative
+    to the cage; a mirrored row, s = −1, mirrors this pseudo-vector).  The
     cage is centred and turns at the mean orbital speed.  Without ``static`` the balls sit
     on the line of the groove centres of the centred position, at rest.
     """
@@ -392,9 +393,11 @@ def initial_state(model: Model, static=None, speed: float | None = None) -> np.n
         o = N_RING + N_BALL * k
         y[o:o + 3] = (xb, rb * cps, rb * sps)
         y[o + 3:o + 6] = (0.0, -wm * rb * sps, wm * rb * cps)
-        y[o + 6] = wm + wr * s * math.cos(beta)
-        y[o + 7] = -wr * math.sin(beta) * cps
-        y[o + 8] = -wr * math.sin(beta) * sps
+        # angular velocity is a pseudo-vector: mirroring the row (s = -1) keeps its axial
+        # component and reverses the radial one
+        y[o + 6] = wm + wr * math.cos(beta)
+        y[o + 7] = -s * wr * math.sin(beta) * cps
+        y[o + 8] = -s * wr * math.sin(beta) * sps
     for c in range(model.n_cages):
         o = model.cage_offset + N_CAGE * c
         cp = model.cp[c]

@@ -94,7 +94,7 @@ class StaticResult:
         balls = []
         for j in range(len(b["azimuth_rad"])):
             balls.append({k: (int(v[j]) if k in ("row", "inner_control") else float(v[j])) for k, v in b.items()})
-        return {
+        out = {
             "bearing": getattr(self.bearing, "name", str(self.bearing)),
             "converged": bool(self.converged),
             "status": self.status,
@@ -114,6 +114,15 @@ class StaticResult:
             "cage_speed_rad_s": self.cage_speed,
             "balls": balls,
         }
+        from ..life import iso281_life, reference_rating_life
+
+        out["basic_rating_life_million_revolutions"] = iso281_life(self)
+        out["reference_rating_life_million_revolutions"] = reference_rating_life(self)
+        if hasattr(self.bearing, "rows"):
+            from .arrangements import row_results
+
+            out["rows"] = row_results(self)
+        return out
 
     @property
     def cage_speed(self) -> float:

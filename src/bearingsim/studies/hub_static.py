@@ -16,6 +16,9 @@ tyre radius R = M_max / Fa_max = 317.5 mm (a plausible passenger-car tyre radius
 M = R · Fa, and the vertical load Fr grows on the outer wheel.  M is the moment about z, Fr acts
 along +y, so a positive M tilts the inner ring by a positive γz.
 
+At M = 0 the tilt is not zero: Fr = 2,785 N acts at the load point, 10.4 mm from the centre
+between the rows, i.e. with a moment of 29 N·m about that centre.
+
 Moment compliance along the load path: dγz/dM = [K⁻¹ · dF/dM]_γz with dF/dM = (1/R, ΔFr/ΔM, 0, 0, 1)
 and K the 5×5 stiffness at the load point (implicit differentiation, no extra solve); the moment
 stiffness is its inverse.  The pure tilt stiffness (other loads held) is also given,
