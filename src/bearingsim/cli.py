@@ -127,9 +127,11 @@ def reproduce_spindle(
     _console().print(f"wrote {csv} and {png}")
 
 
-from . import cli_lubrication  # noqa: E402  (commands of the lubrication module)
+from . import cli_dynamics, cli_lubrication, cli_sweep  # noqa: E402  (commands of the topic modules)
 
 cli_lubrication.register(app)
+cli_sweep.register(app, reproduce_app)
+cli_dynamics.register(app)
 
 
 def main() -> None:

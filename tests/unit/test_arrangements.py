@@ -162,3 +162,27 @@ def test_bad_input_names_the_field(data, field):
     with pytest.raises(InputError) as exc:
         bearing_from_dict(data)
     assert exc.value.field == field
+
+
+def test_tandem_pair_shares_the_axial_load(row):
+    dt = ar.make_system(row, "DT", 0.018)
+    res = jh.solve(dt, jh.Loads(fa=2000.0))
+    assert res.converged
+    rr = ar.row_results(res)
+    np.testing.assert_allclose([r["axial_load_N"] for r in rr], [1000.0, 1000.0], rtol=1e-9)
+    th = solve_thrust(row, 1000.0)
+    np.testing.assert_allclose(res.displacement[0], th.axial_deflection, rtol=1e-8,
+                               err_msg="closed form: tandem rows share the load equally (thrust model)")
+    np.testing.assert_allclose(res.stiffness[0, 0], 2 * th.axial_stiffness, rtol=1e-6)
+
+
+def test_three_row_set_preload_balances(row):
+    # two rows facing +x (tandem) against one facing -x: the single row carries the sum of the other two
+    rows = (ar.Row(row, -0.027, 1.0), ar.Row(row, -0.009, 1.0), ar.Row(row, 0.018, -1.0))
+    e = ar._preload_offset(rows, 400.0)
+    import dataclasses
+    s = ar.BearingSystem("tbt", tuple(dataclasses.replace(r, axial_offset=e) for r in rows))
+    fa = s.rest_preload()
+    np.testing.assert_allclose(fa[0] + fa[1], 400.0, rtol=1e-9)
+    np.testing.assert_allclose(fa[2], fa[0] + fa[1], rtol=1e-9)
+    np.testing.assert_allclose(fa[0], fa[1], rtol=1e-9)

@@ -296,6 +296,14 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
         if r0 <= tol * scale or stepn <= tol * par[P_D]:
             conv = True
             break
+        if it >= 5 and out[4] == 0.0 and out[6] < -0.05 * (ri + ro):
+            # far off the inner raceway (beyond any Newton overshoot): no force on the inner ring
+            conv = True
+            break
+    if not conv and out[4] == 0.0 and out[6] < 0.0:
+        # the ball has left the inner raceway: it exerts no force on the inner ring, and its
+        # position along the outer groove (held by a tiny centrifugal force) does not matter
+        conv = True
     return conv, it
 
 
@@ -355,7 +363,7 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
         z = int(par[P_Z])
         s = par[P_SIGN]
         ric = par[P_RIC]
-        xg = par[P_XROW] + s * par[P_XIC]
+        xg = par[P_XROW] + s * (par[P_XIC] + par[P_AXOFF])  # inner groove centre, offset included
         d = par[P_D]
         dm = par[P_DM]
         cg = par[P_JB] * w2 * dm / (d * d)
@@ -559,7 +567,7 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
 
 @njit(cache=True)
 def contact_beyond_groove_bottom(rows, ballout):
-    """True when a loaded ball of an angular contact row has a negative contact angle.
+    """True when a ball loaded by the inner ring of an angular contact row has a negative contact angle.
 
     An angular contact ring has a low shoulder on that side of the groove bottom; the
     torus model would let the contact run past it, which is outside the model.
@@ -569,6 +577,6 @@ def contact_beyond_groove_bottom(rows, ballout):
             continue
         for j in range(int(rows[r, P_Z])):
             bo = ballout[r, j]
-            if (bo[2] > 0.0 and bo[8] < 0.0) or (bo[3] > 0.0 and bo[10] < 0.0):
+            if bo[2] > 0.0 and (bo[8] < 0.0 or bo[10] < 0.0):
                 return True
     return False

@@ -277,19 +277,44 @@ def _preload_offset(bearing_rows, force: float) -> float:
         fa = sys_.row_axial_loads(res.displacement)
         return float(sum(f for f, r in zip(fa, bearing_rows) if r.orientation > 0))
 
-    # bracket: from contact at the clearance to the offset that reaches MAX_PRELOAD_PRESSURE in one row
+    # bracket: from contact at the clearance upwards, doubling from the single-row thrust deflection at
+    # the preload, up to the offset that reaches MAX_PRELOAD_PRESSURE in one row
+    from .axial import solve_thrust
+
     lo, hi = 0.0, math.inf
     for r in bearing_rows:
         lo_r, hi_r = _offset_limits(r.bearing)
         lo = max(lo, lo_r)
         hi = min(hi, hi_r)
     hi *= 1.0 - 1e-9
-    f_hi = carried(hi)
-    if f_hi < force:
-        raise InputError("preload", f"{force:.4g} N is beyond any realistic preload for this row geometry "
-                         f"(it would exceed {MAX_PRELOAD_PRESSURE / 1e9:.3g} GPa contact pressure; "
-                         f"the limit is about {f_hi:.4g} N)", "give a smaller preload")
-    return brentq(lambda e: carried(e) - force, lo, hi, xtol=1e-15, rtol=1e-12)
+    b0 = bearing_rows[0].bearing
+    step = solve_thrust(b0, force).axial_deflection if b0.kind == "angular_contact" else 1e-6
+    e = min(lo + max(step, 1e-9), hi)
+    while True:
+        try:
+            f_e = carried(e)
+        except InputError:
+            f_e = math.inf  # no equilibrium: beyond a sensible offset, keep it as the upper bracket
+        if f_e >= force:
+            break
+        if e >= hi:
+            raise InputError("preload", f"{force:.4g} N is beyond any realistic preload for this row geometry "
+                             f"(it would exceed {MAX_PRELOAD_PRESSURE / 1e9:.3g} GPa contact pressure; "
+                             f"the limit is about {f_e:.4g} N)", "give a smaller preload")
+        lo = e
+        step *= 2.0
+        e = min(lo + max(step, 1e-9), hi)
+    hi = e
+
+    def g(x):
+        try:
+            return carried(x) - force
+        except InputError:
+            return math.inf
+
+    if lo >= hi:
+        return hi
+    return brentq(g, lo, hi, xtol=1e-15, rtol=1e-12)
 
 
 def _offset_limits(b: BallBearing) -> tuple[float, float]:
