@@ -1,7 +1,7 @@
 """Benchmark of the sliced-contact kernel bearingsim.contact.slices.contact_traction.
 
 Prints µs per call after warm-up, called from a numba loop (as the dynamics engine does)
-for 10 slices and a few other counts, for the physical fluid model, the four-parameter
+for 10 slices and a few other counts (best and median of repeated runs), for the physical fluid model, the four-parameter
 curve and the boundary model.  Run:  python benchmarks/bench_slices.py
 Not a test: figures depend on the machine.
 """
@@ -18,7 +18,7 @@ from bearingsim.contact import hertz
 from bearingsim.contact import slices as S
 
 
-@njit(cache=True)
+@njit(cache=False)  # no cache: numba does not invalidate it when the called kernel changes
 def _loop(n_calls, q, a, b, r_dev, c, n, m, cb, vb, wb, cr, vr, wr, lub, n_slices, out):
     acc = 0.0
     for i in range(n_calls):
@@ -45,18 +45,21 @@ def case(model="mixed", fluid_model="physical"):
             np.zeros(3), wr, lub)
 
 
-def main():
-    print("contact_traction: µs per call after warm-up (numba loop, 200 000 calls)")
+def main(repeats: int = 25, n_calls: int = 10_000):
+    print(f"contact_traction: µs per call after warm-up (numba loop of {n_calls} calls, best and median of "
+          f"{repeats} repeats; the best is the figure least disturbed by other load on the machine)")
     for model, fluid in (("mixed", "physical"), ("fluid", "curve"), ("boundary", "physical")):
         args = case(model, fluid)
         for n_slices in (1, 5, 10, 20):
             out = np.zeros(10)
             _loop(10, *args, n_slices, out)
-            n_calls = 200_000
-            t0 = time.perf_counter()
-            _loop(n_calls, *args, n_slices, out)
-            dt = (time.perf_counter() - t0) / n_calls * 1e6
-            print(f"  model={model:8s} fluid={fluid:8s} n_slices={n_slices:3d}: {dt:6.3f} µs/call")
+            times = []
+            for _ in range(repeats):
+                t0 = time.perf_counter()
+                _loop(n_calls, *args, n_slices, out)
+                times.append((time.perf_counter() - t0) / n_calls * 1e6)
+            print(f"  model={model:8s} fluid={fluid:8s} n_slices={n_slices:3d}: best {min(times):6.3f}  "
+                  f"median {float(np.median(times)):6.3f} µs/call")
 
 
 if __name__ == "__main__":

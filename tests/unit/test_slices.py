@@ -260,3 +260,60 @@ def test_rolling_resistance_force_system_balances():
         S.contact_traction(Q, HC.a, HC.b, math.inf, c, n, m, cb, vb, wb, cr, vr, wr, lub, 1, out)
         tot = out[3:6] + np.cross(cb, out[0:3]) + out[6:9] + np.cross(cr, -out[0:3])
         assert np.max(np.abs(tot)) < 1e-12 * (np.max(np.abs(out[3:9])) + 1e-300)
+
+
+# --------------------------------------------------------------------------- fast forms used by the kernel
+
+def test_fast_tanh_and_asinh_forms_match_libm():
+    """The kernel's tanh (via exp) and asinh (ln 2x + 1/4x² for x ≥ 1e6) agree with math.tanh/asinh."""
+    for z in np.geomspace(1e-9, 60.0, 400):
+        assert S._tanh_pos(z) == pytest.approx(math.tanh(z), rel=2e-13, abs=0.0)
+    assert S._tanh_pos(0.0) == 0.0
+    for x in np.geomspace(1e-9, 1e15, 400):
+        assert S._asinh_from(x, math.log(2 * x)) == pytest.approx(math.asinh(x), rel=1e-15)
+
+
+def test_heated_stress_matches_fluid_shear_stress():
+    """First Eyring/limiting-stress evaluation + the kernel's secant step equal traction.fluid_shear_stress."""
+    from bearingsim.contact import traction as T
+
+    rng = np.random.default_rng(11)
+    lub = _lub()
+    tau0, t0c, beta_v = lub[S.L_TAU0], lub[S.L_T0C], lub[S.L_BETA_V]
+    lss = lub[S.L_LSS_R:S.L_LSS_FLOOR + 1]
+    for _ in range(3000):
+        p = 10 ** rng.uniform(6, 9.7)
+        u_s = 10 ** rng.uniform(-7, 2)
+        h = 10 ** rng.uniform(-9, -5)
+        eta_p = 10 ** rng.uniform(-3, 8)
+        theta = 10 ** rng.uniform(-12, -5)
+        ref = T.fluid_shear_stress.py_func(p, u_s, h, theta, eta_p, tau0, t0c, *lss, beta_v)
+        x = eta_p * (u_s / h) / tau0
+        fl = lss[5] * p
+        tl = max(lss[0] * (lss[1] * p / (lss[2] + lss[3] * t0c) - lss[4]), fl)
+        l2x = math.log(2 * x)
+        tau = tl * S._tanh_pos(tau0 / tl * S._asinh_from(x, l2x))
+        tau = S._heated_stress(tau, theta * u_s, x, l2x, p, fl, tau0, t0c, *lss[:5], beta_v)
+        assert tau == pytest.approx(ref, rel=1e-12), (p, u_s, h, eta_p, theta)
+
+
+@pytest.mark.parametrize("n_slices", [9, 10])
+def test_kernel_matches_reference_operating_range(n_slices):
+    """Kernel vs reference at 1e-10 over speeds, slips and loads of ball bearings (all branches of the fast forms)."""
+    rd = S.deformed_surface_radius(D, F_I * D)
+    for kw in (dict(model="mixed", roughness=0.1e-6), dict(model="fluid"), dict(model="mixed", roughness=0.3e-6)):
+        lub = _lub(**kw)
+        for u in (0.01, 0.5, 5.0, 50.0):
+            for slip in (1e-5, 1e-3, 3e-2, 0.5):
+                for q in (20.0, 2000.0, 20000.0):
+                    a, b = HC.a * (q / Q) ** (1 / 3), HC.b * (q / Q) ** (1 / 3)
+                    args = (q, a, b, rd, np.zeros(3), np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+                            np.array([0.0, 0.0, R_BALL]), np.zeros(3),
+                            np.array([u * (1 + slip) / R_BALL, 0.0, 40.0 * u]),
+                            np.array([0.0, 0.0, -0.025]), np.zeros(3), np.array([-u / 0.025, 0.0, 0.0]), lub,
+                            n_slices)
+                    out, ref = np.zeros(10), np.zeros(10)
+                    S.contact_traction(*args, out)
+                    S.contact_traction_reference(*args, ref)
+                    scale = np.max(np.abs(ref)) + 1e-300
+                    np.testing.assert_allclose(out, ref, rtol=1e-10, atol=1e-10 * scale, err_msg=str((kw, u, slip, q)))
