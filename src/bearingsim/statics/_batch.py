@@ -84,6 +84,13 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
     """Solve every operating point i (loads[i], omega[i]) in order, warm-starting from point i−1;
     a point that hits the iteration limit or a singular stiffness is retried from ``q_cold``.
 
+    Start of point i (``predictor``): q_{i−1} + K_{i−1}⁻¹ ΔF (tangent step, used when it moves the ring
+    by less than 0.2 of the groove-centre distance), plus, when the step (ΔF, Δω) repeats the previous
+    one (grid rows), the previous point's deviation from its own tangent prediction.  Ball positions
+    start from X + dX/dA ΔA (tangents kept in ``xb``, see :func:`_kernels.ring_assemble`).  Points with
+    status 3 (a converged equilibrium outside the model) are valid starts for the next point.  The
+    start only changes the path: every point is converged to the same tolerances.
+
     rows : float[nrow, NPAR]; loads : float[n, 5] [N, N·m]; omega : float[n] [rad/s]
     control : kernel control code; q_cold : float[5] cold start [m, rad]
     Outputs (filled): q_out[n, 5], k_out[n, 5, 5], status[n], iters[n], resid[n], summ[n, 6].
@@ -96,7 +103,7 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
     dm = rows[0, kn.P_DM]
     lam0 = 1 if control == kn.CONTROL_INNER else 0
     lam = np.full((nrow, zmax), lam0, dtype=np.int64)
-    xb = np.zeros((nrow, zmax, 2))
+    xb = np.zeros((nrow, zmax, 8))  # positions and their tangents (ring_assemble's warm start)
     kmat = np.zeros((5, 5))
     ballout = np.zeros((nrow, zmax, 12))
     q = q_cold.copy()
@@ -105,6 +112,16 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
     kprev = np.zeros((5, 5))
     lprev = np.zeros(5)
     have_prev = False
+    dl = np.empty(5)
+    dlnow = np.empty(5)
+    dlprev = np.empty(5)
+    qtan = np.empty(5)
+    errprev = np.zeros(5)
+    have_err = False
+    wprev = -1.0
+    dwprev = 0.0
+    dq = np.empty(5)
+    wsol = np.empty((5, 6))
     amax = 0.0
     for r in range(nrow):
         amax = max(amax, rows[r, kn.P_RI] + rows[r, kn.P_RO])
@@ -113,6 +130,7 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
         sc = _scale(ld, dm)
         for k in range(5):
             qtry[k] = q[k]
+        tangent = False
         if predictor and have_prev:
             # tangent predictor: q + K⁻¹ ΔF from the previous converged point (continuation)
             ok = True
@@ -120,13 +138,34 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
                 if not (kprev[k, k] > 0.0):
                     ok = False
             if ok:
-                dq = np.linalg.solve(kprev, ld - lprev)
+                for k in range(5):
+                    dl[k] = ld[k] - lprev[k]
+                if not kn.solve_small(kprev, dl, dq, wsol):
+                    dq[:] = np.linalg.solve(kprev, dl)
                 smax = 0.0
                 for k in range(5):
                     smax = max(smax, abs(dq[k]) * (1.0 if k < 3 else 0.5 * dm))
-                if smax < 0.05 * amax:
+                if smax < 0.2 * amax:
+                    # correction on a uniform path (grid rows): when the step in (F, ω) repeats,
+                    # the last point's deviation from its tangent prediction (the speed effect,
+                    # O(Δω), and the curvature, O(h²)) repeats too
+                    dw = omega[i] - wprev
+                    same = have_err and abs(dw - dwprev) <= 1e-9 * abs(dw)
+                    if same:
+                        dd = 0.0
+                        dn = 0.0
+                        for k in range(5):
+                            dd = max(dd, abs(dl[k] - dlprev[k]))
+                            dn = max(dn, abs(dl[k]))
+                        same = dd <= 1e-9 * dn
                     for k in range(5):
                         qtry[k] += dq[k]
+                        qtan[k] = qtry[k]
+                        if same:
+                            qtry[k] += errprev[k]
+                    tangent = True
+                    for k in range(5):
+                        dlnow[k] = dl[k]
         st, it, rn, bconv = kn.solve_ring(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
                                           tol_ball, tol_ring, maxit_ball, maxit_ring, sc)
         tot = it
@@ -151,19 +190,29 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
         _summarise(rows, ballout, sm)
         for k in range(6):
             summ[i, k] = sm[k]
-        if st == 0 or st == 4:
-            # the ring equilibrium is good (status 4: only an unloaded ball's own balance failed)
+        if st == 0 or st == 4 or st == 3:
+            # the ring equilibrium is good (status 4: only an unloaded ball's own balance failed;
+            # status 3: a converged equilibrium outside the model's validity, still a good start)
             for k in range(5):
                 q[k] = qtry[k]
                 lprev[k] = ld[k]
                 for m in range(5):
                     kprev[k, m] = kmat[k, m]
             have_prev = True
+            # error of the pure tangent prediction at this point (used by the next one)
+            have_err = tangent and it == tot
+            if have_err:
+                for k in range(5):
+                    errprev[k] = qtry[k] - qtan[k]
+                    dlprev[k] = dlnow[k]
+                dwprev = omega[i] - wprev
+            wprev = omega[i]
         else:
             # do not continue from a failed point
             lam[:, :] = lam0
             xb[:, :, :] = 0.0
             have_prev = False
+            have_err = False
     return 0
 
 

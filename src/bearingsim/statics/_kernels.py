@@ -268,12 +268,23 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
     r0 = math.hypot(out[0], out[1])
     xs0 = 0.0
     xs1 = 0.0
+    if r0 <= tol * scale:
+        # the start already meets the tolerance (a warm start that did not move)
+        return True, 0
     for it in range(1, maxit + 1):
         det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
         if det == 0.0 or not math.isfinite(det):
             break
         dx0 = -(jac[1, 1] * out[0] - jac[0, 1] * out[1]) / det
         dx1 = -(-jac[1, 0] * out[0] + jac[0, 0] * out[1]) / det
+        if math.hypot(dx0, dx1) <= tol * par[P_D]:
+            # the full Newton step is below the position tolerance: take it and stop (a line
+            # search on round-off would only waste evaluations)
+            x[0] += dx0
+            x[1] += dx1
+            ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+            conv = True
+            break
         # limit the step to a fraction of the groove-centre distance
         lim = 0.05 * (ri + ro)
         st = math.hypot(dx0, dx1)
@@ -282,10 +293,22 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
             dx1 *= lim / st
         xs0 = x[0]
         xs1 = x[1]
+        # take the step in polar coordinates about the outer groove centre (normal part along the
+        # radius, tangential part as an arc): to first order the same Newton step, but a ball that
+        # rolls along the outer groove (inner contact open) is not pushed into the outer raceway by
+        # the chord, so the line search does not have to crawl
+        ls0 = math.sqrt(xs0 * xs0 + xs1 * xs1)
+        ns0 = xs0 / ls0
+        ns1 = xs1 / ls0
+        dn = ns0 * dx0 + ns1 * dx1
+        dth = (ns1 * dx0 - ns0 * dx1) / ls0
+        th0 = math.atan2(xs0, xs1)
         lam = 1.0
         for _ in range(30):
-            x[0] = xs0 + lam * dx0
-            x[1] = xs1 + lam * dx1
+            lt = ls0 + lam * dn
+            tht = th0 + lam * dth
+            x[0] = lt * math.sin(tht)
+            x[1] = lt * math.cos(tht)
             ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
             r1 = math.hypot(out[0], out[1])
             if r1 <= (1.0 - 1e-4 * lam) * r0 or r1 <= tol * scale:
@@ -336,7 +359,9 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
     rows : float[nrow, NPAR]; qv : float[5] (δx, δy, δz, γy, γz) [m, rad]
     omega : inner-ring speed [rad/s]; control : CONTROL_OUTER/INNER/AUTO
     lam_state : int[nrow, zmax] current control per ball (0 outer, 1 inner), updated for AUTO
-    xb : float[nrow, zmax, 2] ball positions (warm start in, solution out)
+    xb : float[nrow, zmax, 2] ball positions (warm start in, solution out); or float[nrow, zmax, 8]
+         with (A1, A2, dX1/dA1, dX1/dA2, dX2/dA1, dX2/dA2) of the last solution after (X1, X2), which
+         starts each ball solve at the tangent prediction X + dX/dA ΔA (same solution, fewer iterations)
     loads : float[5] external (Fa, Fr_y, Fr_z, M_y, M_z) [N, N·m] on the inner ring
     res : float[5] ← loads + Σ ball forces on the ring (zero at equilibrium)
     kmat : float[5, 5] ← stiffness −d(res)/dq
@@ -358,6 +383,11 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
     allconv = True
     maxits = 0
     w2 = omega * omega
+    # xb[r, j, 2:8], when present, holds the ball's last (A1, A2) and dX/dA (row-major) for the
+    # first-order warm start below; with only (X1, X2) stored the start is the last position
+    # (not at rest, where the ball solve is closed form; the tangents are cleared there)
+    ext = xb.shape[2] >= 8
+    ext_pred = ext and omega != 0.0
     for r in range(nrow):
         par = rows[r]
         z = int(par[P_Z])
@@ -395,6 +425,12 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
                 a2 += ta2[k] * qv[k]
             xl[0] = xb[r, j, 0]
             xl[1] = xb[r, j, 1]
+            if ext_pred:
+                # first-order warm start: X + (dX/dA) ΔA from the ball's last solution
+                da1 = a1 - xb[r, j, 2]
+                da2 = a2 - xb[r, j, 3]
+                xl[0] += xb[r, j, 4] * da1 + xb[r, j, 5] * da2
+                xl[1] += xb[r, j, 6] * da1 + xb[r, j, 7] * da2
             for _pass in range(4):
                 inner_ctrl = lam_state[r, j]
                 if inner_ctrl == 1:
@@ -426,6 +462,21 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
                 maxits = its
             xb[r, j, 0] = xl[0]
             xb[r, j, 1] = xl[1]
+            if ext:
+                xb[r, j, 2] = a1
+                xb[r, j, 3] = a2
+                det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
+                if ext_pred and conv and det != 0.0 and math.isfinite(det):
+                    # dX/dA = −(∂R/∂X)⁻¹ ∂R/∂A at the ball's equilibrium (implicit differentiation)
+                    xb[r, j, 4] = -(jac[1, 1] * jac[0, 2] - jac[0, 1] * jac[1, 2]) / det
+                    xb[r, j, 5] = -(jac[1, 1] * jac[0, 3] - jac[0, 1] * jac[1, 3]) / det
+                    xb[r, j, 6] = -(-jac[1, 0] * jac[0, 2] + jac[0, 0] * jac[1, 2]) / det
+                    xb[r, j, 7] = -(-jac[1, 0] * jac[0, 3] + jac[0, 0] * jac[1, 3]) / det
+                else:
+                    xb[r, j, 4] = 0.0
+                    xb[r, j, 5] = 0.0
+                    xb[r, j, 6] = 0.0
+                    xb[r, j, 7] = 0.0
             # out and jac hold the evaluation at the solution (last call of ball_solve)
             fx = out[2]
             fr = out[3]
@@ -463,6 +514,48 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
 
 
 @njit(cache=True)
+def solve_small(a, b, x, w):
+    """x ← a⁻¹ b for a small dense system by Gaussian elimination with partial pivoting.
+
+    a : float[n, n] (not modified), b : float[n], x : float[n] (output), w : float[n, n + 1]
+    (workspace).  Returns False when a pivot is zero or not finite (singular system).  Replaces
+    np.linalg.solve in the hot loops (no allocation, no LAPACK call overhead for n = 5).
+    """
+    n = b.shape[0]
+    for i in range(n):
+        for j in range(n):
+            w[i, j] = a[i, j]
+        w[i, n] = b[i]
+    for c in range(n):
+        p = c
+        big = abs(w[c, c])
+        for i in range(c + 1, n):
+            v = abs(w[i, c])
+            if v > big:
+                big = v
+                p = i
+        if not (big > 0.0) or not math.isfinite(big):
+            return False
+        if p != c:
+            for j in range(c, n + 1):
+                t = w[c, j]
+                w[c, j] = w[p, j]
+                w[p, j] = t
+        inv = 1.0 / w[c, c]
+        for i in range(c + 1, n):
+            f = w[i, c] * inv
+            if f != 0.0:
+                for j in range(c + 1, n + 1):
+                    w[i, j] -= f * w[c, j]
+    for i in range(n - 1, -1, -1):
+        t = w[i, n]
+        for j in range(i + 1, n):
+            t -= w[i, j] * x[j]
+        x[i] = t / w[i, i]
+    return True
+
+
+@njit(cache=True)
 def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball, tol_ring,
                maxit_ball, maxit_ring, load_scale):
     """Newton–Raphson on the five inner-ring displacements (seed 000 eq. 13).
@@ -481,6 +574,9 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
     res_try = np.empty(5)
     q_try = np.empty(5)
     k_try = np.empty((5, 5))
+    dq = np.empty(5)
+    kk = np.empty((5, 5))
+    wsol = np.empty((5, 6))
     xb_save = xb.copy()
     # moments scaled by the pitch radius so that all residual entries are forces
     dm = rows[0, P_DM]
@@ -500,7 +596,9 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
         amax = max(amax, rows[r, P_RI] + rows[r, P_RO])
     for it in range(1, maxit_ring + 1):
         # Newton step K dq = res  (K = -dres/dq)
-        kk = kmat.copy()
+        for k in range(5):
+            for m in range(5):
+                kk[k, m] = kmat[k, m]
         # guard: regularise only exactly singular directions
         ok = True
         for k in range(5):
@@ -517,7 +615,8 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
             for k in range(5):
                 if not (kk[k, k] > 0.0):
                     kk[k, k] = 1e-6 * diag_max * (1.0 if k < 3 else dm * dm / 4.0)
-        dq = np.linalg.solve(kk, res)
+        if not solve_small(kk, res, dq, wsol):
+            dq[:] = np.linalg.solve(kk, res)  # raises for a singular matrix, as before
         # step limit: translations ≤ 0.1 A, tilts ≤ 0.1 A / (d_m/2)
         smax = 0.0
         for k in range(5):
