@@ -5,8 +5,11 @@ Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 2
 50 Hz moment, 0.1 s.  Target for (b): ≤ 300 s wall per simulated second on one core.
 
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
-         [--integrator dopri5|ros2w]
-         [--profile] [--kernel]
+         [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8]
+         [--profile] [--kernel] [--accuracy]
+--accuracy compares the ring displacement of the chosen settings with a DOPRI5 run at
+tolerance 1e-7 over the same (short) duration and prints the largest deviation of each
+ring coordinate relative to its range.
 The numba compilation is excluded (a 0.05 ms warm-up run compiles first).  Peak memory
 is the process's maximum resident set size.
 """
@@ -25,7 +28,8 @@ ROOT = Path(__file__).resolve().parents[1]
 CASES = {"a": ROOT / "examples" / "spindle-7011.toml", "b": ROOT / "examples" / "hub-moment-50hz.toml"}
 
 
-def run(name: str, duration: float | None, traction: str | None, profile: bool, integrator: str | None = None) -> dict:
+def run(name: str, duration: float | None, traction: str | None, profile: bool, integrator: str | None = None,
+        tolerance: float | None = None, n_slices: int | None = None, keep=None) -> dict:
     from bearingsim.dynamics.case import load_case
     from bearingsim.dynamics.run import simulate
 
@@ -34,6 +38,10 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
         case = dataclasses.replace(case, traction=traction)
     if integrator:
         case = dataclasses.replace(case, integrator=integrator)
+    if tolerance:
+        case = dataclasses.replace(case, tolerance=tolerance)
+    if n_slices:
+        case = dataclasses.replace(case, n_slices=n_slices)
     with tempfile.TemporaryDirectory() as d:
         warm = dataclasses.replace(case, duration=max(case.output_interval, 5e-5), output_interval=min(
             case.output_interval, 5e-5))
@@ -51,8 +59,13 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
             pr.disable()
             pstats.Stats(pr).sort_stats("cumulative").print_stats(12)
         wall = time.perf_counter() - t0
+        if keep is not None:
+            ds = res.to_xarray()
+            keep.append(ds["inner_ring_displacement"].values.copy())
+            ds.close()
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
-    out = {"case": name, "traction": full.traction, "integrator": full.integrator, "simulated_s": full.duration, "wall_s": wall,
+    out = {"case": name, "traction": full.traction, "integrator": full.method, "tolerance": full.tolerance,
+           "n_slices": full.n_slices, "simulated_s": full.duration, "wall_s": wall,
            "wall_per_simulated_s": wall / full.duration, "steps": res.summary["steps"],
            "rejected": res.summary["rejected_steps"], "peak_rss_MB": peak}
     return out
@@ -96,7 +109,10 @@ def main(argv=None):
     ap.add_argument("--case", default="both", choices=["a", "b", "both"])
     ap.add_argument("--duration", default=None, help='simulated time, e.g. "2 ms" (default: the case file)')
     ap.add_argument("--traction", default=None, choices=["slices", "coulomb", "none"])
-    ap.add_argument("--integrator", default=None, choices=["dopri5", "ros2w"])
+    ap.add_argument("--integrator", default=None, choices=["auto", "dopri5", "ros2w", "ros34w"])
+    ap.add_argument("--tolerance", type=float, default=None, help="integrator tolerance (default: the case file)")
+    ap.add_argument("--n-slices", type=int, default=None, help="slices per contact ellipse (default: the case file)")
+    ap.add_argument("--accuracy", action="store_true", help="compare with a DOPRI5 run at tolerance 1e-7")
     ap.add_argument("--profile", action="store_true", help="cProfile the run")
     ap.add_argument("--kernel", action="store_true", help="time one right-hand side per traction model and "
                     "report what limits the step (numba profiling)")
@@ -109,11 +125,22 @@ def main(argv=None):
 
     dur = parse_quantity(a.duration, "time", "--duration") if a.duration else None
     for name in (["a", "b"] if a.case == "both" else [a.case]):
-        r = run(name, dur, a.traction, a.profile, a.integrator)
-        print(f"case ({r['case']}) traction={r['traction']} integrator={r['integrator']}: {r['simulated_s'] * 1e3:.4g} ms simulated in "
+        keep = [] if a.accuracy else None
+        r = run(name, dur, a.traction, a.profile, a.integrator, a.tolerance, a.n_slices, keep)
+        print(f"case ({r['case']}) traction={r['traction']} integrator={r['integrator']} tol={r['tolerance']:g} "
+              f"n_slices={r['n_slices']}: {r['simulated_s'] * 1e3:.4g} ms simulated in "
               f"{r['wall_s']:.3g} s -> {r['wall_per_simulated_s']:.4g} wall s per simulated s; "
               f"{r['steps']} steps ({r['rejected']} rejected); peak RSS {r['peak_rss_MB']:.0f} MB")
         sys.stdout.flush()
+        if a.accuracy:
+            import numpy as np
+
+            run(name, dur, a.traction, False, "dopri5", 1e-7, None, keep)
+            test, ref = keep
+            span = np.ptp(ref, axis=0) + 1e-30
+            dev = np.abs(test - ref).max(axis=0) / span
+            print("  largest deviation from DOPRI5 tol 1e-7 / range of the coordinate: "
+                  + ", ".join(f"{k} {v:.2e}" for k, v in zip(("dx", "dy", "dz", "gy", "gz"), dev)))
 
 
 if __name__ == "__main__":

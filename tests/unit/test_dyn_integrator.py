@@ -89,3 +89,79 @@ def test_ros2w_is_stable_and_accurate_on_a_stiff_problem():
         assert info[0] < 20000, "explicit stability alone would need > 3e5 steps"
         errs.append(max(abs(y[0] - math.cos(2.0)), abs(y[1] - math.sin(2.0))))
     assert errs[0] < 1e-3 and errs[1] < 1e-5, errs
+
+
+def test_ros34w_third_order_convergence_for_exact_and_zero_jacobian():
+    """ROS34PW2 (Rang & Angermann 2005) is of order 3 as a W-method: the harmonic oscillator
+    with constant steps gives global error ∝ h³ both with the exact Jacobian (one 2×2 block)
+    and with J = 0 (the method then reduces to an explicit Runge–Kutta method of order 3)."""
+    w = 2.0 * math.pi
+    blk = np.array([0], dtype=np.int64)
+    for nbk in (2, 0):
+        errs = []
+        for n in (20, 40, 80, 160):
+            y = np.array([1.0, 0.0])
+            ig.fixed_steps_ros34(oscillator, (w,), 0.0, y, 1.0 / n, n, blk, nbk)
+            errs.append(abs(y[0] - math.cos(w)))
+        orders = [math.log2(errs[i] / errs[i + 1]) for i in range(len(errs) - 1)]
+        np.testing.assert_allclose(orders[-2:], 3.0, atol=0.1,
+                                   err_msg=f"Rang & Angermann 2005: ROS34PW2 is a W-method of order 3 (nbk={nbk})")
+
+
+def test_ros34w_is_stable_and_accurate_on_a_stiff_problem():
+    """ROS34PW2: steps far beyond the explicit stability limit, independent of the stiffness, error ∝ tolerance."""
+    blk = np.array([0], dtype=np.int64)
+    exact = (math.cos(2.0), math.sin(2.0))
+    steps = {}
+    for k in (1e4, 1e6):
+        errs = []
+        for tol in (1e-4, 1e-6):
+            y = np.array([1.0, 0.0, 1.0])
+            info = np.zeros(4)
+            st, t, h = ig.advance_ros34(stiff, (k,), 0.0, 2.0, y, 1e-3, np.full(3, tol), np.zeros(3), 1e-12,
+                                        10**6, info, blk, 3, 20)
+            assert st == ig.OK and t == 2.0
+            steps[(k, tol)] = info[0] + info[1]
+            errs.append(max(abs(y[0] - exact[0]), abs(y[1] - exact[1])))
+        assert errs[0] < 1e-3 and errs[1] < 1e-5, errs
+    # explicit stability alone would need > 3e5 steps at k = 1e6; the step count does not grow with k
+    assert steps[(1e6, 1e-6)] < 300
+    assert steps[(1e6, 1e-6)] <= 1.5 * steps[(1e4, 1e-6)]
+
+
+def test_ros34w_restart_from_t_y_h_is_bitwise():
+    """A run restarted from (t, y, h) after an interval repeats the same steps (checkpoint/resume)."""
+    blk = np.array([0], dtype=np.int64)
+    atol = np.full(3, 1e-7)
+    rtol = np.zeros(3)
+    info = np.zeros(4)
+    a = np.array([1.0, 0.0, 1.0])
+    _, t1, h1 = ig.advance_ros34(stiff, (1e5,), 0.0, 0.37, a, 1e-3, atol, rtol, 1e-12, 10**6, info, blk, 3, 20)
+    b = a.copy()
+    _, t2, _ = ig.advance_ros34(stiff, (1e5,), t1, 1.0, a, h1, atol, rtol, 1e-12, 10**6, info, blk, 3, 20)
+    _, t3, _ = ig.advance_ros34(stiff, (1e5,), t1, 1.0, b, h1, atol, rtol, 1e-12, 10**6, info, blk, 3, 20)
+    assert t2 == t3 == 1.0
+    assert np.array_equal(a, b)
+
+
+@njit(cache=True)
+def relay(t, y, dy, args):
+    # y' = −sign(y): the right-hand side jumps at y = 0 (y = 1 − t reaches it at t = 1)
+    dy[0] = -args[0] * (1.0 if y[0] > 0 else -1.0)
+
+
+def test_ros34w_hands_a_non_smooth_stretch_over():
+    """At a discontinuity of the right-hand side the third-order method keeps rejecting steps; with a
+    switch ratio it stops at its last accepted step (status SWITCH) for the caller to continue with ROS2."""
+    blk = np.array([0], dtype=np.int64)
+    info = np.zeros(4)
+    y = np.array([1.0])
+    st, t, h = ig.advance_ros34(relay, (1.0,), 0.0, 3.0, y, 1e-2, np.full(1, 1e-6), np.zeros(1), 1e-14, 10**6,
+                                info, blk, 1, 20, 0.2)
+    assert st == ig.SWITCH
+    assert 0.99 < t < 1.0 and info[1] >= 10
+    np.testing.assert_allclose(y[0], 1.0 - t, atol=1e-9, err_msg="exact solution y = 1 − t before the jump")
+    y = np.array([1.0])
+    st, t, h = ig.advance_ros34(relay, (1.0,), 0.0, 3.0, y, 1e-2, np.full(1, 1e-6), np.zeros(1), 1e-14, 10**6,
+                                info, blk, 1, 20)
+    assert st == ig.OK and t == 3.0

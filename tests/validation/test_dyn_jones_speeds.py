@@ -19,7 +19,7 @@ from bearingsim.io import load_bearing
 from bearingsim.statics import jones_harris as jh
 
 
-def _run(traction, t_end):
+def _run(traction, t_end, method="dopri5"):
     b = load_bearing("skf-7011-cdga-hc")
     w = 10000 * math.pi / 30
     res = jh.solve(b, jh.Loads(fa=3000.0), w, control="outer")
@@ -31,7 +31,7 @@ def _run(traction, t_end):
         y[o + 3:o + 6] *= 0.97
         y[o + 6:o + 9] *= 0.9
     y[m.cage_offset + 9] *= 0.95
-    st = Stepper(m, fo.constant_loads(fa=3000.0), y, tol=1e-6)
+    st = Stepper(m, fo.constant_loads(fa=3000.0), y, tol=1e-6, method=method)
     samples = []
     n = 12
     for i in range(1, n + 1):
@@ -46,9 +46,10 @@ def _run(traction, t_end):
     return res, wm, wr, wc
 
 
-@pytest.mark.parametrize("traction,t_end", [("coulomb", 3e-3), ("slices", 1e-3)])
-def test_steady_state_ball_speeds_match_jones(traction, t_end):
-    res, wm, wr, wc = _run(traction, t_end)
+@pytest.mark.parametrize("traction,t_end,method", [("coulomb", 3e-3, "dopri5"), ("slices", 1e-3, "dopri5"),
+                                                   ("slices", 1e-3, "ros34w")])
+def test_steady_state_ball_speeds_match_jones(traction, t_end, method):
+    res, wm, wr, wc = _run(traction, t_end, method)
     np.testing.assert_allclose(wm, res.balls["orbital_speed_rad_s"].mean(), rtol=0.02,
                                err_msg=f"Jones 1960 orbital speed ({traction}); seed 001 §3.1")
     if traction == "coulomb":  # the lubricated run is too short (CI) to average the cage rattle
@@ -57,17 +58,20 @@ def test_steady_state_ball_speeds_match_jones(traction, t_end):
                                err_msg=f"Jones 1960 ball spin speed ({traction})")
 
 
-def test_hub_unit_both_rows_reach_jones_speeds():
-    """Double-row hub unit of seed 001 (back-to-back, mirrored rows) at 100 km/h under a radial load."""
+@pytest.mark.parametrize("traction,method", [("coulomb", "dopri5"), ("slices", "ros34w")])
+def test_hub_unit_both_rows_reach_jones_speeds(traction, method):
+    """Double-row hub unit of seed 001 (back-to-back, mirrored rows) at 100 km/h under a radial load
+    (the lubricated kernel with the ROS34PW2 W-method is the benchmark (b) configuration)."""
     b = load_bearing("hub-seed001")
     w = 884 * math.pi / 30
     res = jh.solve(b, jh.Loads(fr_y=2800.0), w, control="outer")
-    m = md.build_model(b, traction="coulomb", speed=(w, w, 0.0), ring_mass=3.0, damping_alpha=0.05)
+    kw = {"lubricant": "hub-grease-base-oil", "temperature": 313.15} if traction == "slices" else {}
+    m = md.build_model(b, traction=traction, speed=(w, w, 0.0), ring_mass=3.0, damping_alpha=0.05, **kw)
     y = md.initial_state(m, res, w)
     for k in range(m.n_balls):
         o = md.N_RING + md.N_BALL * k
         y[o + 6:o + 9] *= 0.9
-    st = Stepper(m, fo.constant_loads(fr_y=2800.0), y, tol=1e-6)
+    st = Stepper(m, fo.constant_loads(fr_y=2800.0), y, tol=1e-6, method=method)
     st.advance(1.5e-3)
     s = st.sample()
     for row in (0, 1):

@@ -11,7 +11,8 @@ Example (``examples/spindle-7011.toml``)::
     traction = "slices"                 # slices (lubricated kernel), coulomb (test stand-in), none
     n_slices = 8
     tolerance = 1e-6                    # integrator tolerance (relative; lengths scaled by 1 mm)
-    integrator = "dopri5"               # or "ros2w": linearly implicit per ball, for stiff lubricated runs
+    integrator = "auto"                 # ros34w (W-method, implicit per ball) for traction = "slices", else dopri5;
+                                        # or "dopri5", "ros2w", "ros34w"
     contact_damping = 0.05              # Hunt–Crossley alpha [s/m]
     gravity = ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]   # optional
     load_point = "0 mm"                 # axial position of the load point (default: the bearing's)
@@ -77,7 +78,7 @@ class Case:
     chunk: int = 200
     control: str = "outer"
     checkpoint_every: int = 1  #: chunks between checkpoints
-    integrator: str = "dopri5"  #: "dopri5" or "ros2w" (see docs/dynamics.md)
+    integrator: str = "auto"  #: "auto", "dopri5", "ros2w" or "ros34w" (see docs/dynamics.md)
     source: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
@@ -100,10 +101,19 @@ class Case:
             raise InputError("chunk", f"must be a positive integer, got {self.chunk!r}", "e.g. 200")
         if self.contact_damping < 0:
             raise InputError("contact_damping", "must be ≥ 0", "e.g. 0.05 (s/m)")
-        if self.integrator not in ("dopri5", "ros2w"):
-            raise InputError("integrator", f"unknown integrator {self.integrator!r}", "use dopri5 or ros2w")
+        if self.integrator not in ("auto", "dopri5", "ros2w", "ros34w"):
+            raise InputError("integrator", f"unknown integrator {self.integrator!r}",
+                             "use auto, dopri5, ros2w or ros34w")
         if not self.ring_mass > 0:
             raise InputError("inner_ring.mass", "must be positive", 'e.g. "2 kg"')
+
+    @property
+    def method(self) -> str:
+        """The integrator used: "auto" is the W-method ROS34PW2 for the lubricated kernel (whose
+        traction creep is stiff) and DOPRI5 otherwise (docs/dynamics.md, Integrator)."""
+        if self.integrator != "auto":
+            return self.integrator
+        return "ros34w" if self.traction == "slices" else "dopri5"
 
     @property
     def n_samples(self) -> int:
@@ -218,7 +228,7 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
                 tolerance=float(tol), contact_damping=float(damping), gravity=tuple(gvec), load_point=load_point,
                 ring_mass=ring_mass, ring_inertia=inertia, cage=cage, lubrication=data.get("lubrication", {}),
                 chunk=data.get("chunk", 200), control=data.get("control", "outer"),
-                checkpoint_every=data.get("checkpoint_every", 1), integrator=data.get("integrator", "dopri5"),
+                checkpoint_every=data.get("checkpoint_every", 1), integrator=data.get("integrator", "auto"),
                 source=data)
 
 
