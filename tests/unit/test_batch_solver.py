@@ -80,3 +80,20 @@ def test_hub_low_speed_batch_points_are_equilibria():
         for i in range(len(m)):
             rn, conv = _ring_residual(rows, out["q"][i], loads[i], omega)
             assert conv and rn < 1e-9, (omega, m[i], rn)
+
+
+def test_solve_many_equals_single_solves():
+    """The public batch API gives the single-point equilibria (warm starts change nothing)."""
+    from bearingsim.statics.jones_harris import solve_many
+
+    b = load_bearing("skf-7011-cdga-hc")
+    rng = np.random.default_rng(7)
+    loads = np.column_stack([rng.uniform(1000, 5000, 12), rng.uniform(-300, 300, 12), rng.uniform(-300, 300, 12),
+                             rng.uniform(-5, 5, 12), rng.uniform(-5, 5, 12)])
+    speeds = rng.uniform(0, 1200, 12)
+    many = solve_many(b, loads, speeds)
+    assert many.converged.all()
+    for i in range(12):
+        r = jh.solve(b, jh.Loads(*loads[i]), speeds[i])
+        np.testing.assert_allclose(many.displacement[i], r.displacement, rtol=1e-8, atol=1e-14)
+        np.testing.assert_allclose(many.stiffness[i], r.stiffness, rtol=1e-7, atol=1e-7 * abs(r.stiffness).max())

@@ -284,10 +284,13 @@ def solve_many(bearing, loads: np.ndarray, speeds: np.ndarray, control: str = "o
     speeds : float[n]  inner-ring speeds [rad/s]
     control : raceway control as in :func:`solve`
 
-    Neighbouring points in the order given share their solutions as starting points, so
-    order the points along a path through the grid (e.g. speed fastest) for best speed.
-    A point that fails from the warm start is retried once from the cold start.
+    Neighbouring points in the order given share their solutions as starting points (the
+    compiled loop of :func:`bearingsim.statics._batch.run_batch`, with a tangent predictor and a
+    cold restart when a warm start fails), so order the points along a path through the grid
+    (e.g. speed fastest) for best speed.
     """
+    from ._batch import run_batch
+
     loads = np.ascontiguousarray(loads, dtype=float)
     speeds = np.ascontiguousarray(speeds, dtype=float)
     if loads.ndim != 2 or loads.shape[1] != 5 or speeds.shape != (loads.shape[0],):
@@ -297,31 +300,5 @@ def solve_many(bearing, loads: np.ndarray, speeds: np.ndarray, control: str = "o
         raise InputError("loads", "non-finite load or speed", "give finite values")
     if control not in CONTROLS:
         raise InputError("control", f"unknown raceway control {control!r}", "use outer, inner or auto")
-    rows = rows_of(bearing)
-    n = loads.shape[0]
-    nrow, zmax = rows.shape[0], int(rows[:, kn.P_Z].max())
-    lam = np.full((nrow, zmax), 1 if control == "inner" else 0, dtype=np.int64)
-    xb = np.zeros((nrow, zmax, 2))
-    ballout = np.zeros((nrow, zmax, 12))
-    out = BatchResult(np.zeros((n, 5)), np.zeros((n, 5, 5)), np.zeros(n, bool), np.zeros(n, np.int64), np.zeros(n))
-    q = None
-    ctrl = CONTROLS[control]
-    dm = rows[0, kn.P_DM]
-    for i in range(n):
-        li = loads[i]
-        scale = max(abs(li[0]), abs(li[1]), abs(li[2]), 2 * abs(li[3]) / dm, 2 * abs(li[4]) / dm, 1.0)
-        for attempt in range(2):
-            if q is None or attempt == 1:
-                q = initial_guess(bearing, Loads(*li))
-                xb[:] = 0.0
-            status, its, rn, bconv = kn.solve_ring(rows, li, abs(speeds[i]), ctrl, q, lam, xb, out.stiffness[i],
-                                                   ballout, TOL_BALL, TOL_RING, MAXIT_BALL, MAXIT_RING, scale)
-            if status == 0 and bconv:
-                break
-        out.displacement[i] = q
-        out.converged[i] = status == 0 and bconv
-        out.iterations[i] = its
-        out.residual[i] = rn
-        if not out.converged[i]:
-            q = None
-    return out
+    out = run_batch(bearing, loads, speeds, control)
+    return BatchResult(out["q"], out["k"], out["converged"], out["iterations"], out["residual"])
