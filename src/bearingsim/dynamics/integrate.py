@@ -79,6 +79,35 @@ def _stages(fun, args, t, y, h, k1, k2, k3, k4, k5, k6, k7, ytmp, ynew):
 
 
 @njit
+def _error_norm(e, y, ynew, atol, rtol, info):
+    """Scaled RMS norm of the local error estimate e (Hairer, Nørsett & Wanner, *Solving ODEs I*,
+    1993, eq. II.4.11): √(Σ (e_i / (atol_i + rtol_i max(|y_i|, |ynew_i|)))² / n).
+
+    info[2], info[3] ← index and scaled error of the worst component.  Returns (err, finite);
+    a non-finite component gives err = 1e10 and finite = False.
+    """
+    n = y.shape[0]
+    err = 0.0
+    imax = 0
+    emax = -1.0
+    finite = True
+    for i in range(n):
+        r = e[i] / (atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i])))
+        r2 = r * r
+        if not np.isfinite(r2):
+            finite = False
+            imax = i
+            break
+        if r2 > emax:
+            emax = r2
+            imax = i
+        err += r2
+    info[2] = imax
+    info[3] = np.sqrt(emax) if finite else np.inf
+    return (np.sqrt(err / n) if finite else 1e10), finite
+
+
+@njit
 def advance(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
     """Integrate y' = fun(t, y) from t to t_end in place with DOPRI5 and error control.
 
@@ -103,6 +132,7 @@ def advance(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
     k7 = np.empty(n)
     ytmp = np.empty(n)
     ynew = np.empty(n)
+    evec = np.empty(n)
     fun(t, y, k1, args)
     nacc = 0
     nrej = 0
@@ -117,30 +147,9 @@ def advance(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
             hs = t_end - t
             last = True
         _stages(fun, args, t, y, hs, k1, k2, k3, k4, k5, k6, k7, ytmp, ynew)
-        err = 0.0
-        imax = 0
-        emax = -1.0
-        finite = True
         for i in range(n):
-            ei = hs * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
-            sc = atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i]))
-            r = ei / sc
-            r2 = r * r
-            if not np.isfinite(r2):
-                finite = False
-                imax = i
-                emax = np.inf
-                break
-            if r2 > emax:
-                emax = r2
-                imax = i
-            err += r2
-        info[2] = imax
-        info[3] = np.sqrt(emax) if finite else np.inf
-        if finite:
-            err = np.sqrt(err / n)
-        else:
-            err = 1e10
+            evec[i] = hs * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
+        err, finite = _error_norm(evec, y, ynew, atol, rtol, info)
         if err <= 1.0:
             for i in range(n):
                 y[i] = ynew[i]
@@ -230,6 +239,7 @@ def advance_ros2(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, 
     k2 = np.empty(n)
     yt = np.empty(n)
     ynew = np.empty(n)
+    evec = np.empty(n)
     epsb = np.empty(nb)
     g = ROS2_GAMMA
     need_jac = True
@@ -280,26 +290,10 @@ def advance_ros2(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, 
         for i in range(n):
             f1[i] -= 2.0 * k1[i]
         _apply_w(winv, blk, nbk, f1, k2)
-        err = 0.0
-        imax = 0
-        emax = -1.0
-        finite = True
         for i in range(n):
             ynew[i] = y[i] + hs * (1.5 * k1[i] + 0.5 * k2[i])
-            ei = 0.5 * hs * (k1[i] + k2[i])
-            r = ei / (atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i])))
-            r2 = r * r
-            if not np.isfinite(r2):
-                finite = False
-                imax = i
-                break
-            if r2 > emax:
-                emax = r2
-                imax = i
-            err += r2
-        info[2] = imax
-        info[3] = np.sqrt(emax) if finite else np.inf
-        err = np.sqrt(err / n) if finite else 1e10
+            evec[i] = 0.5 * hs * (k1[i] + k2[i])
+        err, finite = _error_norm(evec, y, ynew, atol, rtol, info)
         if err <= 1.0:
             for i in range(n):
                 y[i] = ynew[i]
@@ -496,6 +490,7 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
     jv = np.empty(n)
     tv = np.empty(n)
     ynew = np.empty(n)
+    evec = np.empty(n)
     epsb = np.empty(nb)
     need_jac = True
     since = 0
@@ -527,27 +522,11 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
             _w_inverse(jac, hs, R34_G, winv, wm)
             h_w = hs
         _ros34_stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv)
-        err = 0.0
-        imax = 0
-        emax = -1.0
-        finite = True
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
-            ei = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i] + (R34_M[2] - R34_E[2]) * k3[i]
-                  + (R34_M[3] - R34_E[3]) * k4[i])
-            r = ei / (atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i])))
-            r2 = r * r
-            if not np.isfinite(r2):
-                finite = False
-                imax = i
-                break
-            if r2 > emax:
-                emax = r2
-                imax = i
-            err += r2
-        info[2] = imax
-        info[3] = np.sqrt(emax) if finite else np.inf
-        err = np.sqrt(err / n) if finite else 1e10
+            evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
+                       + (R34_M[2] - R34_E[2]) * k3[i] + (R34_M[3] - R34_E[3]) * k4[i])
+        err, finite = _error_norm(evec, y, ynew, atol, rtol, info)
         if err <= 1.0:
             for i in range(n):
                 y[i] = ynew[i]
