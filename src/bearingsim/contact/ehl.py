@@ -75,6 +75,15 @@ def ellipticity_hd(rx, ry):
     return 1.03 * (ry / rx) ** 0.64
 
 
+@njit(cache=True)
+def dimensionless_groups(u, q, eta0, alpha, e_eff, rx):
+    """(U, G, W) of Hamrock & Dowson (1977): U = η₀u/(E′R_x), G = αE′, W = Q/(E′R_x²)  [-].
+
+    u [m/s], q [N], eta0 [Pa·s], alpha [1/Pa], e_eff [Pa], rx [m].
+    """
+    return eta0 * u / (e_eff * rx), alpha * e_eff, q / (e_eff * rx * rx)
+
+
 @njit(cache=True, error_model="numpy")
 def hamrock_dowson_central(u, q, eta0, alpha, e_eff, rx, ry):
     """Isothermal central film thickness h_c [m] (Hamrock & Dowson 1977).
@@ -85,9 +94,7 @@ def hamrock_dowson_central(u, q, eta0, alpha, e_eff, rx, ry):
     if u <= 0.0 or q <= 0.0:
         return 0.0
     k = ellipticity_hd(rx, ry)
-    U = eta0 * u / (e_eff * rx)
-    G = alpha * e_eff
-    W = q / (e_eff * rx * rx)
+    U, G, W = dimensionless_groups(u, q, eta0, alpha, e_eff, rx)
     return rx * 2.69 * U**0.67 * G**0.53 * W ** (-0.067) * (1.0 - 0.61 * math.exp(-0.73 * k))
 
 
@@ -97,9 +104,7 @@ def hamrock_dowson_minimum(u, q, eta0, alpha, e_eff, rx, ry):
     if u <= 0.0 or q <= 0.0:
         return 0.0
     k = ellipticity_hd(rx, ry)
-    U = eta0 * u / (e_eff * rx)
-    G = alpha * e_eff
-    W = q / (e_eff * rx * rx)
+    U, G, W = dimensionless_groups(u, q, eta0, alpha, e_eff, rx)
     return rx * 3.63 * U**0.68 * G**0.49 * W ** (-0.073) * (1.0 - math.exp(-0.68 * k))
 
 
@@ -162,11 +167,6 @@ def _pos(name, v, allow_zero=False):
         raise InputError(name, f"must be a finite {'non-negative' if allow_zero else 'positive'} number, got {v!r}",
                          "check the units and sign")
     return float(v)
-
-
-def dimensionless_groups(u: float, q: float, eta0: float, alpha: float, e_eff: float, rx: float):
-    """(U, G, W) of Hamrock & Dowson: U = η₀u/(E′R_x), G = αE′, W = Q/(E′R_x²)."""
-    return eta0 * u / (e_eff * rx), alpha * e_eff, q / (e_eff * rx * rx)
 
 
 def film_thickness(u: float, q: float, eta0: float, alpha: float, e_eff: float, rx: float, ry: float,

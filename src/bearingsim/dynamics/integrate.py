@@ -259,19 +259,7 @@ def advance_ros2(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, 
             last = True
         fun(t, y, f0, args)
         if need_jac or since >= jac_every:
-            for j in range(nbk):
-                for i in range(n):
-                    yt[i] = y[i]
-                for b in range(nb):
-                    o = blk[b] + j
-                    e = 1e-7 * max(abs(y[o]), 1e4 * atol[o])
-                    epsb[b] = e
-                    yt[o] = y[o] + e
-                fun(t, yt, f1, args)
-                for b in range(nb):
-                    o = blk[b]
-                    for i in range(nbk):
-                        jac[b, i, j] = (f1[o + i] - f0[o + i]) / epsb[b]
+            _block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
             need_jac = False
             since = 0
             h_w = -1.0
