@@ -81,6 +81,22 @@ def test_traction_curve_shapes():
     np.testing.assert_allclose(m1, m2, rtol=1e-12, atol=1e-15)
 
 
+def test_physical_fluid_curve_has_the_seed_fig4_shape():
+    """Seed 001 Fig. 4 (shape only; its conditions are not given): μ rises from 0 over s ~ 1e-4 - 1e-3, peaks near
+    s = 0.005 - 0.015 and falls slowly.  The rise comes from the film's elasticity (Johnson & Tevaarwerk 1977), the
+    fall from shear heating; at 20 m/s both lie in the seed's range."""
+    e = hertz.effective_modulus(208e9, 0.3, 208e9, 0.3)
+    rx, ry = hertz.raceway_radii(0.0111, 0.061, 0.52, math.radians(35), True)
+    s = np.geomspace(1e-5, 0.1, 121)
+    for lub, q in (("iso-vg-68", 2000.0), ("hub-grease-base-oil", 5000.0)):
+        mu = traction_vs_slide_roll(lub, 333.15, q, rx, ry, e, 20.0, s)
+        i = int(np.argmax(mu))
+        assert 0.005 <= s[i] <= 0.02, (lub, s[i])
+        assert mu[-1] < 0.95 * mu[i]
+        assert mu[0] < 0.05 * mu[i]  # no Coulomb-like jump at s -> 0
+        assert np.all(np.diff(mu[: i + 1]) > 0)
+
+
 def _app():
     app = typer.Typer()
     register(app)

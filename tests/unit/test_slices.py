@@ -83,7 +83,8 @@ def _random_state(rng):
 @pytest.mark.parametrize("kw", [dict(model="boundary"), dict(model="fluid", fluid_model="curve"),
                                 dict(model="fluid", fluid_model="physical"), dict(model="mixed", roughness=0.1e-6),
                                 dict(model="mixed", roughness=0.02e-6, thermal=False),
-                                dict(model="mixed", roughness=0.3e-6, starvation_factor=0.7)])
+                                dict(model="mixed", roughness=0.3e-6, starvation_factor=0.7),
+                                dict(model="fluid", fluid_model="physical", viscoelastic=False)])
 @pytest.mark.parametrize("n_slices", [1, 4, 11])
 def test_kernel_matches_reference(kw, n_slices):
     rng = np.random.default_rng(n_slices)
@@ -317,3 +318,38 @@ def test_kernel_matches_reference_operating_range(n_slices):
                     S.contact_traction_reference(*args, ref)
                     scale = np.max(np.abs(ref)) + 1e-300
                     np.testing.assert_allclose(out, ref, rtol=1e-10, atol=1e-10 * scale, err_msg=str((kw, u, slip, q)))
+
+
+@pytest.mark.parametrize("n_slices", [1, 10])
+def test_viscoelastic_film_linear_limit_closed_form(n_slices):
+    """Small slide-roll ratio at 2 GPa: the film shears elastically (Johnson & Tevaarwerk 1977 linear elastic
+    regime), F = Σ_j G(p̄_j) ℓ_j A_j s/(2 h_c) with ℓ_j the strip's mean chord and A_j its area; without film
+    elasticity the same contact is Coulomb-like (μ near its plateau already at s = 1e-7)."""
+    from bearingsim.contact import ehl
+    from bearingsim.contact import traction as T
+
+    lub = _lub(model="fluid", fluid_model="physical", thermal=False, rolling_resistance=False)
+    q = 8000.0  # p_max ≈ 2 GPa on the hub inner raceway
+    hc = hertz.point_contact_exact(q, RX, RY, E_EFF)
+    u, s = 3.0, 1e-7
+    out = np.zeros(10)
+    args = (q, hc.a, hc.b, math.inf, np.zeros(3), np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+            np.array([0.0, 0.0, R_BALL]), np.zeros(3), np.array([u * (1 + s / 2) / R_BALL, 0.0, 0.0]),
+            np.array([0.0, 0.0, -1.0]), np.array([0.0, u * (1 - s / 2), 0.0]), np.zeros(3))
+    S.contact_traction(*args, lub, n_slices, out)
+    h = ehl.hamrock_dowson_central(u, q, lub[S.L_ETA0], lub[S.L_ALPHA], E_EFF, RX, RY)
+    expected = 0.0
+    for j in range(n_slices):
+        xi0, xi1 = -1 + 2 * j / n_slices, -1 + 2 * (j + 1) / n_slices
+        area = hc.a * hc.b * S.slice_area_fraction(xi0, xi1)
+        pbar = q * S.slice_fraction(xi0, xi1) / area
+        g = T.limiting_shear_stress(pbar, 60.0, 0.25, 1.2, 2.52, 0.024, 1e8, 0.02) / 0.25
+        chord = area / (2 * hc.a / n_slices)
+        expected += g * chord * area * s / (2 * h)
+    np.testing.assert_allclose(-out[1], expected, rtol=1e-9,
+                               err_msg="Johnson & Tevaarwerk (1977) linear elastic film traction G s l / (2 h)")
+    assert abs(out[0]) < 1e-12 * expected
+    stiff = np.zeros(10)
+    S.contact_traction(*args, _lub(model="fluid", fluid_model="physical", thermal=False, rolling_resistance=False,
+                                   viscoelastic=False), n_slices, stiff)
+    assert -stiff[1] / q > 0.01 and -out[1] / q < 1e-4

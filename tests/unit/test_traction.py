@@ -129,3 +129,29 @@ def test_roelands_matches_barus_slope_at_zero_pressure():
     dp = 1e3
     slope = (math.log(T.roelands_viscosity(dp, eta0, ln, z)) - math.log(eta0)) / dp
     assert slope == pytest.approx(ln * z / 1.96e8, rel=1e-4)
+
+
+@pytest.mark.parametrize("ratio", [0.01, 0.5, 0.999, 1.0, 1.001, 2.0, 30.0, 1e4])
+def test_elastic_plastic_mean_stress_is_the_transit_mean(ratio):
+    """Johnson & Tevaarwerk (1977) elastic/plastic film: mean over the transit of min(τ_e t/t_c, τ_y)."""
+    tau_y = 3.0e7
+    tau_e = ratio * tau_y
+    ref, _ = integrate.quad(lambda x: min(tau_e * x, tau_y), 0.0, 1.0, points=[min(1.0, 1.0 / ratio)],
+                            epsabs=1e-6, epsrel=1e-13)
+    assert T.elastic_plastic_mean_stress(tau_y, tau_e) == pytest.approx(ref, rel=1e-12), "transit mean (closed form)"
+
+
+def test_elastic_plastic_mean_stress_limits_and_smoothness():
+    tau_y = 2.0e7
+    # linear elastic limit τ_e/2 and viscous (plastic) limit τ_y
+    assert T.elastic_plastic_mean_stress(tau_y, 1e3) == 0.5e3
+    assert T.elastic_plastic_mean_stress(tau_y, 1e6 * tau_y) == pytest.approx(tau_y, rel=1e-6)
+    # value and slope continuous at τ_e = τ_y (slope 1/2 on both sides)
+    h = 1e-6 * tau_y
+    f = lambda x: T.elastic_plastic_mean_stress(tau_y, x)  # noqa: E731
+    assert (f(tau_y + h) - f(tau_y)) / h == pytest.approx(0.5, rel=1e-5)
+    assert (f(tau_y) - f(tau_y - h)) / h == pytest.approx(0.5, rel=1e-12)
+    # monotone in τ_e and never above τ_y
+    x = np.geomspace(1e-3, 1e3, 200) * tau_y
+    y = np.array([f(v) for v in x])
+    assert np.all(np.diff(y) > 0) and np.all(y < tau_y)

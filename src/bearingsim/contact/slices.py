@@ -72,7 +72,7 @@ from numba import njit
 
 from ..errors import InputError
 from . import ehl, traction
-from .traction import MARTIN_ROLLING, mixed_weight
+from .traction import MARTIN_ROLLING, elastic_plastic_mean_stress, mixed_weight
 
 # ---- layout of the packed parameter vector `lub` -------------------------------------
 L_MODEL = 0  # 0 boundary, 1 fluid, 2 mixed
@@ -98,7 +98,8 @@ L_ROE_Z = 31  # Roelands index
 L_EFFUS = 32  # effusivity sqrt(k rho c) of the solids [W s^0.5/(m^2 K)]
 L_ROLLRES = 33  # 1: rolling resistance and oil-film force on
 L_T0C = 34  # inlet temperature [degC]
-L_SIZE = 35
+L_VISCO = 35  # 1: film elasticity (Johnson-Tevaarwerk elastic/plastic mean stress) on
+L_SIZE = 36
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
 FLUID_MODELS = {"curve": 0, "physical": 1}
@@ -186,6 +187,7 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     sigma = lub[L_SIGMA]
     thermal = lub[L_THERMAL] != 0.0
     rollres = lub[L_ROLLRES] != 0.0
+    visco = lub[L_VISCO] != 0.0
 
     # The velocity fields are affine in the point p: with d_b = p - c_ball, d_r = p - c_race,
     #   sliding  s(p) = v_b + w_b x d_b - v_r - w_r x d_r,
@@ -303,6 +305,10 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     inv_ab = 1.0 / (a * b)
     inv_hc = 1.0 / hc if hc > 0.0 else 0.0
     inv_hc_tau0 = inv_hc * inv_tau0
+    # film elasticity: the exit stress per unit slide-roll ratio is G ℓ_j/h with the strip's mean
+    # chord ℓ_j = (strip area)/(strip width) = b·area·n/2 and G = τ_L(p̄, t₀)/r_L
+    visco = visco and lss_r > 0.0
+    k_ve = 0.5 * b * n_slices * inv_hc / lss_r if lss_r > 0.0 else 0.0
     two_inv_hc_tau0 = 2.0 * inv_hc_tau0
     ln_eta0 = math.log(eta0) if phys else 0.0
     # rolling resistance (traction.rolling_resistance_zh / _ir) with the slice-independent factor
@@ -410,6 +416,13 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
                                                lss_c2, lss_c3, lss_c4, beta_v)
                         tau_b = _heated_stress(tau_b, theta * smag_b, xe_b, l2x_b, pbar, fl, tau0, t0c, lss_r, lss_c1,
                                                lss_c2, lss_c3, lss_c4, beta_v)
+                    if visco:
+                        # traction.elastic_plastic_mean_stress with τ_e = G ℓ_j s/h (no rolling: τ_e = ∞)
+                        ke = k_ve * tl * area
+                        if u_a > 0.0:
+                            tau_a = elastic_plastic_mean_stress(tau_a, ke * sr_a)
+                        if u_b > 0.0:
+                            tau_b = elastic_plastic_mean_stress(tau_b, ke * sr_b)
                     mu_a += (tau_a / pbar - mu_a) * wfl
                     mu_b += (tau_b / pbar - mu_b) * wfl
                 else:
@@ -580,7 +593,8 @@ def pack_lubrication_parameters(lubricant, temperature: float, e_eff: float, rx:
                                 roughness: float = 0.0, boundary_model=(0.0, 0.12, 0.01, 0.10), *,
                                 model: str = "mixed", fluid_model: str = "physical", fluid_curve=None,
                                 lambda_limits=(1.0, 3.0), thermal: bool = True, starvation_factor: float = 1.0,
-                                rolling_resistance: bool = True, solid_effusivity: float = 1.32e4) -> np.ndarray:
+                                rolling_resistance: bool = True, solid_effusivity: float = 1.32e4,
+                                viscoelastic: bool = True) -> np.ndarray:
     """Build the parameter vector ``lub`` of :func:`contact_traction` for one contact type.
 
     Parameters
@@ -601,6 +615,8 @@ def pack_lubrication_parameters(lubricant, temperature: float, e_eff: float, rx:
     rolling_resistance : include rolling viscous resistance and oil-film force
     solid_effusivity : √(kρc) of the ball/race material [W s^0.5/(m² K)]
         (default: 52100 steel, k = 46.6 W/(m K), ρ = 7830 kg/m³, c = 475 J/(kg K), typical values)
+    viscoelastic : film elasticity in the physical fluid model (Johnson & Tevaarwerk 1977
+        elastic/plastic mean stress, :func:`bearingsim.contact.traction.elastic_plastic_mean_stress`)
     """
     from ..lubricants import get_lubricant
 
@@ -656,6 +672,7 @@ def pack_lubrication_parameters(lubricant, temperature: float, e_eff: float, rx:
     lub[L_EFFUS] = solid_effusivity
     lub[L_ROLLRES] = 1.0 if rolling_resistance else 0.0
     lub[L_T0C] = t - 273.15
+    lub[L_VISCO] = 1.0 if viscoelastic else 0.0
     return lub
 
 
@@ -799,6 +816,13 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                         if theta > 0:
                             t1 = stress(theta * tau * smag)
                             tau = tau * tau / (2 * tau - t1)
+                        if lub[L_VISCO] != 0 and lub[L_LSS_R] > 0 and uj > 0:
+                            # Johnson-Tevaarwerk elastic/plastic film: G = τ_L(p̄, t₀)/r_L, ℓ = strip mean chord
+                            g_mod = max(lub[L_LSS_R] * (lub[L_LSS_C1] * pbar / (lub[L_LSS_C2] + lub[L_LSS_C3]
+                                                                                   * lub[L_T0C]) - lub[L_LSS_C4]),
+                                        lub[L_LSS_FLOOR] * pbar) / lub[L_LSS_R]
+                            chord = a * b * (H(xi1) - H(xi0)) / width
+                            tau = traction.elastic_plastic_mean_stress.py_func(tau, g_mod * chord * sr / hc)
                     muf = tau / pbar
                 mu = mu + (muf - mu) * w
             f = -mu * qj * s / smag

@@ -27,6 +27,22 @@ Models (one function each, numba kernels + Python wrappers that check input):
   τ = 0 and τ = f(0): τ ≈ τ₀²/(2τ₀ − τ₁), τ₀ = f(0), τ₁ = f(θ u_s τ₀) (exact when f is linear
   in τ over that interval; always between τ₁ and τ₀).
   μ_f = τ / p̄.
+* Film elasticity (:func:`elastic_plastic_mean_stress`, option ``viscoelastic``, on by default):
+  the steady law above is the viscous branch of the Maxwell film γ̇ = τ̇/G + F(τ)/η
+  (Johnson & Tevaarwerk 1977, Proc. R. Soc. Lond. A 356:215, their constitutive equation;
+  Zhou & Hoeprich 1991 eq. 35).  A film element crosses the contact in the transit time t_c = ℓ/u, and at high
+  pressure (Deborah number η u/(G ℓ) ≫ 1) it never reaches the viscous stress: its stress
+  grows elastically, τ = G γ̇ t, until it meets the viscous (yield) stress τ_y.  In this
+  elastic/plastic limit (one of the regimes Johnson & Tevaarwerk identify) the mean over
+  the transit, with τ_e = G γ̇ t_c = G s ℓ/h the stress reached elastically at the exit, is
+      τ̄ = τ_e/2                    for τ_e ≤ τ_y,
+      τ̄ = τ_y (1 − τ_y/(2 τ_e))     for τ_e > τ_y,
+  continuous with its slope at τ_e = τ_y; it tends to τ_y when the film is viscous (τ_e ≫ τ_y)
+  and to the linear elastic traction τ̄ = G s ℓ/(2h) at small slide–roll ratio s.  G is the
+  limiting elastic shear modulus of Dyson's formula (the same G_∞ whose quarter is τ_L, i.e.
+  G = τ_L/r_L at the inlet temperature), ℓ the contact length in the rolling direction.  Without
+  it the initial slope of μ(s) is η(p) u/(h p̄), with a Roelands viscosity of 10¹⁰–10¹⁷ Pa·s at
+  1–2 GPa: a Coulomb-like jump that is neither measured nor integrable at a useful step size.
 * Mixed lubrication (seed 001, ref. 8): μ = μ_b + (μ_f − μ_b) w(Λ), w = 0 for Λ ≤ Λ₁,
   1 for Λ ≥ Λ₂, linear in between (default Λ₁ = 1, Λ₂ = 3; the seed says only
   "proportionally to the film parameter"; the limits are our choice).
@@ -137,6 +153,19 @@ def fluid_shear_stress(p, u_s, h, theta, eta_p, tau0, t0c, r_l, c1, c2, c3, c4, 
 
 
 @njit(cache=True, error_model="numpy")
+def elastic_plastic_mean_stress(tau_y, tau_e):
+    """Mean shear stress over the transit of an elastic–perfectly-plastic EHL film [Pa].
+
+    Johnson & Tevaarwerk (1977), elastic/plastic limit of the Maxwell film: the stress grows as
+    G γ̇ t and is capped at the yield (viscous) stress τ_y [Pa]; τ_e = G γ̇ t_c [Pa] is the stress
+    reached elastically at the exit.  τ̄ = τ_e/2 (τ_e ≤ τ_y), τ_y(1 − τ_y/(2τ_e)) otherwise.
+    """
+    if tau_e <= tau_y:
+        return 0.5 * tau_e
+    return tau_y * (1.0 - 0.5 * tau_y / tau_e)
+
+
+@njit(cache=True, error_model="numpy")
 def rolling_resistance_zh(U, G, w_dimless, rx, alpha, length):
     """F_R = 29.2 (R/α) L (G U)^0.648 W^0.246  [N]  (Zhou & Hoeprich 1991 eq. 17/43, isothermal)."""
     if U <= 0.0 or w_dimless <= 0.0:
@@ -238,5 +267,5 @@ def rolling_resistance(regime_name: str, eta0: float, alpha: float, e_eff: float
 
 
 __all__ = ["four_parameter", "fit_four_parameter", "traction_curve", "mixed_weight", "mixed_coefficient",
-           "roelands_viscosity", "limiting_shear_stress", "fluid_shear_stress", "rolling_resistance_zh",
+           "roelands_viscosity", "limiting_shear_stress", "fluid_shear_stress", "elastic_plastic_mean_stress", "rolling_resistance_zh",
            "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING"]
