@@ -129,3 +129,19 @@ def test_example_cases_run(name, tmp_path):
     assert np.all(np.isfinite(ds["inner_contact_load"].values))
     assert float(ds["power_loss_inner"].values[-1]) > 0
     ds.close()
+
+
+def test_fluctuation_range_of_a_lagging_tilt_is_closed_form():
+    """Seed 001 Fig. 8 definition on a synthetic loop: tilt = c M(t - lag) with M = M0 sin(w t) gives, at M = M0/2,
+    W_H = c M0 [sin(5π/6 − φ) − sin(π/6 − φ)] = √3 c M0 sin φ (φ = w lag)."""
+    from bearingsim.dynamics.run import Results
+
+    w, m0, c, lag = 2 * math.pi * 50, 600.0, 1.7e-6, 0.3e-3
+    t = np.linspace(0.0, 0.05, 20001)
+    load = np.zeros((t.size, 5))
+    load[:, 4] = m0 * np.sin(w * t)
+    disp = np.zeros((t.size, 5))
+    disp[:, 4] = c * m0 * np.sin(w * (t - lag))
+    res = Results(data={"time": t, "applied_load": load, "inner_ring_displacement": disp}, attrs={})
+    assert res.fluctuation_range(300.0) == pytest.approx(math.sqrt(3) * c * m0 * math.sin(w * lag), rel=1e-5)
+    assert math.isnan(res.fluctuation_range(700.0))

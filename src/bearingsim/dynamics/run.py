@@ -8,6 +8,7 @@ chunks (memory bounded by the chunk), writes periodic checkpoints and resumes fr
 
 from __future__ import annotations
 
+import math
 import os
 import time
 from dataclasses import dataclass, field
@@ -259,6 +260,29 @@ class Results:
         out["heat_generation_total_W"] = out["power_loss_inner"] + out["power_loss_outer"] + \
             out["power_loss_cage"] + out["power_loss_land"]
         return out
+
+    def fluctuation_range(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> float:
+        """Hysteresis of the tilt against the moment, seed 001 Fig. 8 definition [rad].
+
+        The tilt (``inner_ring_displacement[:, dof]``, default γz) where the applied load
+        ``applied_load[:, load]`` (default M_z) passes ``moment`` [N·m] falling, minus the tilt where
+        it passes it rising, both from the last such crossings of the run (linear interpolation
+        between samples); positive when the tilt lags the moment.  Seed 001 evaluates it at
+        0.3 kN·m.  NaN if the run does not pass the value in both directions.
+        """
+        m = self.data["applied_load"][:, load] - moment
+        g = self.data["inner_ring_displacement"][:, dof]
+        crossings = {True: math.nan, False: math.nan}
+        for i in range(len(m) - 1, 0, -1):
+            if m[i - 1] == m[i] or (m[i - 1] > 0) == (m[i] > 0):
+                continue
+            rising = m[i] > m[i - 1]
+            if math.isnan(crossings[rising]):
+                w = m[i - 1] / (m[i - 1] - m[i])
+                crossings[rising] = g[i - 1] + w * (g[i] - g[i - 1])
+            if not (math.isnan(crossings[True]) or math.isnan(crossings[False])):
+                break
+        return crossings[False] - crossings[True]
 
     def plot(self, variables=("inner_ring_displacement", "cage_angular_speed"), ax=None):
         """Plot variables against time (matplotlib); returns the figure."""
