@@ -48,3 +48,10 @@ def register(app: typer.Typer) -> None:
             con.print(f"wrote {out}: {summary['simulated_seconds'] * 1e3:.4g} ms simulated in "
                       f"{summary['wall_seconds']:.3g} s ({summary['wall_per_simulated_second']:.4g} wall s per "
                       f"simulated s, {summary['steps']} steps)")
+            ss = summary.get("steady_state")
+            if ss:
+                con.print(f"last half of the run: heat {ss['heat_generation_total_W']:.4g} W (ball-inner "
+                          f"{ss['power_loss_inner']:.4g}, ball-outer {ss['power_loss_outer']:.4g}, ball-cage "
+                          f"{ss['power_loss_cage']:.4g}, land {ss['power_loss_land']:.4g}; rolling resistance "
+                          f"{ss['power_loss_rolling']:.4g} of the raceway terms); inner-ring friction torque "
+                          f"{ss['inner_ring_friction_torque']:.4g} N·m; cage {ss['cage_angular_speed']:.5g} rad/s")

@@ -129,6 +129,17 @@ def test_example_cases_run(name, tmp_path):
     assert np.all(np.isfinite(ds["inner_contact_load"].values))
     assert float(ds["power_loss_inner"].values[-1]) > 0
     ds.close()
+    # steady-state means read from the file in blocks equal the plain means of the loaded arrays
+    from bearingsim.dynamics.run import Results
+
+    res.BLOCK = 1
+    streamed = res.steady_state(fraction=0.7)
+    full = Results(data=res.data, attrs={}).steady_state(fraction=0.7)
+    t = res.data["time"]
+    sel = t >= t[0] + 0.3 * (t[-1] - t[0])
+    for k, v in full.items():
+        assert streamed[k] == pytest.approx(v, rel=1e-12, abs=1e-300), k
+    assert full["power_loss_inner"] == pytest.approx(float(np.mean(res.data["power_loss_inner"][sel])), rel=1e-12)
 
 
 def test_fluctuation_range_of_a_lagging_tilt_is_closed_form():

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+from contextlib import contextmanager
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -246,20 +247,42 @@ class Results:
         rolling resistance is inside the raceway terms when the traction kernel provides it)
         and the friction torque on the inner ring [N·m].
         """
-        t = self.data["time"]
-        sel = t >= t[0] + (1 - fraction) * (t[-1] - t[0])
-        out = {}
-        for k in ("power_loss_inner", "power_loss_outer", "power_loss_cage", "power_loss_land", "power_loss_rolling",
-                  "inner_ring_friction_torque", "outer_ring_friction_torque"):
-            out[k] = float(np.mean(self.data[k][sel]))
-        # mean cage speed from its angle (the cage rattles in its pocket clearance)
-        th = self.data["cage_angle"][sel]
-        tt = t[sel]
-        out["cage_angular_speed"] = float(np.mean((th[-1] - th[0]) / (tt[-1] - tt[0]))) if len(tt) > 1 else \
-            float(np.mean(self.data["cage_angular_speed"][sel]))
+        names = ("power_loss_inner", "power_loss_outer", "power_loss_cage", "power_loss_land", "power_loss_rolling",
+                 "inner_ring_friction_torque", "outer_ring_friction_torque")
+        with self._columns() as read:
+            t = read("time")
+            i0 = int(np.searchsorted(t, t[0] + (1 - fraction) * (t[-1] - t[0])))
+            n = len(t)
+            out = {}
+            # means in blocks of rows: memory bounded by the block, not by the run
+            for k in names:
+                total = 0.0
+                for a in range(i0, n, self.BLOCK):
+                    total += float(np.sum(read(k, a, min(n, a + self.BLOCK))))
+                out[k] = total / max(n - i0, 1)
+            # mean cage speed from its angle (the cage rattles in its pocket clearance)
+            if n - i0 > 1:
+                dth = read("cage_angle", n - 1, n)[0] - read("cage_angle", i0, i0 + 1)[0]
+                out["cage_angular_speed"] = float(np.mean(dth / (t[-1] - t[i0])))
+            else:
+                out["cage_angular_speed"] = float(np.mean(read("cage_angular_speed", i0, n)))
         out["heat_generation_total_W"] = out["power_loss_inner"] + out["power_loss_outer"] + \
             out["power_loss_cage"] + out["power_loss_land"]
         return out
+
+    BLOCK = 20_000  #: rows read at a time from an output file
+
+    @contextmanager
+    def _columns(self):
+        """Yield read(name, start=0, stop=None) -> rows of one output variable, from memory or the file."""
+        if self._data is not None or self.path is None:
+            data = self.data
+            yield lambda name, start=0, stop=None: data[name][start:stop]
+            return
+        import xarray as xr
+
+        with xr.open_dataset(self.path) as ds:
+            yield lambda name, start=0, stop=None: ds[name][start:stop].values
 
     def fluctuation_range(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> float:
         """Hysteresis of the tilt against the moment, seed 001 Fig. 8 definition [rad].
