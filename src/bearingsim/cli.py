@@ -131,7 +131,7 @@ from . import cli_dynamics, cli_lubrication, cli_sweep  # noqa: E402  (commands 
 
 cli_lubrication.register(app)
 cli_sweep.register(app, reproduce_app)
-cli_dynamics.register(app)
+cli_dynamics.register(app, reproduce_app)
 
 
 def main() -> None:

@@ -1,6 +1,7 @@
-"""CLI of the dynamic engine: ``bearingsim simulate CASE.toml --out run.nc [--resume]``.
+"""CLI of the dynamic engine: ``bearingsim simulate CASE.toml --out run.nc [--resume]`` and
+``bearingsim reproduce hub-hysteresis CASE.toml`` (seed 001 Figs. 7–9).
 
-The lead wires it with ``cli_dynamics.register(app)``.
+Wired with ``cli_dynamics.register(app, reproduce_app)``.
 """
 
 from __future__ import annotations
@@ -12,8 +13,18 @@ from typing import Optional
 import typer
 
 
-def register(app: typer.Typer) -> None:
-    """Add the ``simulate`` command to the bearingsim typer app."""
+def _numbers(text: str, field: str) -> list[float]:
+    from .errors import InputError
+
+    try:
+        vals = [float(x) for x in text.split(",") if x.strip()]
+    except ValueError:
+        raise InputError(field, f"cannot read {text!r}", "give comma-separated numbers, e.g. 10,50,100") from None
+    return vals
+
+
+def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None:
+    """Add ``simulate`` (and, with ``reproduce_app``, ``reproduce hub-hysteresis``) to the typer app."""
 
     @app.command()
     def simulate(case: Path = typer.Argument(..., help="case TOML file (see examples/spindle-7011.toml)"),
@@ -25,8 +36,7 @@ def register(app: typer.Typer) -> None:
         """Run a dynamic simulation of rings, balls and cage in time (issue 5)."""
         import dataclasses
 
-        from rich.console import Console
-
+        from .clitools import make_console
         from .dynamics.case import load_case
         from .dynamics.run import simulate as run_sim
         from .units import parse_quantity
@@ -34,7 +44,7 @@ def register(app: typer.Typer) -> None:
         c = load_case(case)
         if duration is not None:
             c = dataclasses.replace(c, duration=parse_quantity(duration, "time", "--duration"))
-        con = Console(stderr=True)
+        con = make_console(stderr=True)
         res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con)
         summary = dict(res.summary)
         summary["output"] = str(out)
@@ -55,3 +65,25 @@ def register(app: typer.Typer) -> None:
                           f"{ss['power_loss_cage']:.4g}, land {ss['power_loss_land']:.4g}; rolling resistance "
                           f"{ss['power_loss_rolling']:.4g} of the raceway terms); inner-ring friction torque "
                           f"{ss['inner_ring_friction_torque']:.4g} N·m; cage {ss['cage_angular_speed']:.5g} rad/s")
+
+    if reproduce_app is None:
+        return
+
+    @reproduce_app.command("hub-hysteresis")
+    def reproduce_hub_hysteresis(
+        case: Path = typer.Argument(..., help="hub case TOML (e.g. examples/hub-moment-50hz.toml)"),
+        speeds: str = typer.Option("100", "--speeds", help="vehicle speeds [km/h], comma-separated (seed: 10,50,100)"),
+        frequencies: str = typer.Option("50", "--frequencies", help="load frequencies [Hz] (seed: 1,10,50)"),
+        cycles: int = typer.Option(3, "--cycles", help="load cycles per run (the first is a start-up)"),
+        out: Path = typer.Option(Path("out"), "--out", help="folder for the runs, CSV and loop plot"),
+    ):
+        """Seed 001 Figs. 7–9: tilt–moment hysteresis W_H at 0.3 kN·m per speed and load frequency (long runs)."""
+        from .clitools import make_console
+        from .studies.hub_dynamic import run_study
+
+        con = make_console()
+        out.mkdir(parents=True, exist_ok=True)
+        study = run_study(case, _numbers(speeds, "--speeds"), _numbers(frequencies, "--frequencies"), cycles,
+                          out_dir=out, progress=True, console=make_console(stderr=True))
+        study.print_table(con)
+        con.print(f"wrote {study.to_csv(out / 'hub_hysteresis.csv')} and {study.plot(out / 'hub_hysteresis_loops.png')}")

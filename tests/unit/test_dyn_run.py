@@ -154,5 +154,8 @@ def test_fluctuation_range_of_a_lagging_tilt_is_closed_form():
     disp = np.zeros((t.size, 5))
     disp[:, 4] = c * m0 * np.sin(w * (t - lag))
     res = Results(data={"time": t, "applied_load": load, "inner_ring_displacement": disp}, attrs={})
-    assert res.fluctuation_range(300.0) == pytest.approx(math.sqrt(3) * c * m0 * math.sin(w * lag), rel=1e-5)
+    expected = math.sqrt(3) * c * m0 * math.sin(w * lag)
+    assert res.fluctuation_range(300.0) == pytest.approx(expected, rel=1e-5)
+    np.testing.assert_allclose(res.loop_widths(300.0), expected, rtol=1e-5)
+    assert len(res.loop_widths(300.0)) == 3  # 2.5 cycles: M passes 300 N m rising then falling in each of 3
     assert math.isnan(res.fluctuation_range(700.0))

@@ -284,28 +284,34 @@ class Results:
         with xr.open_dataset(self.path) as ds:
             yield lambda name, start=0, stop=None: ds[name][start:stop].values
 
-    def fluctuation_range(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> float:
-        """Hysteresis of the tilt against the moment, seed 001 Fig. 8 definition [rad].
+    def loop_widths(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> np.ndarray:
+        """Hysteresis of the tilt against the moment per load cycle, seed 001 Fig. 8 definition [rad].
 
-        The tilt (``inner_ring_displacement[:, dof]``, default γz) where the applied load
-        ``applied_load[:, load]`` (default M_z) passes ``moment`` [N·m] falling, minus the tilt where
-        it passes it rising, both from the last such crossings of the run (linear interpolation
-        between samples); positive when the tilt lags the moment.  Seed 001 evaluates it at
-        0.3 kN·m.  NaN if the run does not pass the value in both directions.
+        For every time the applied load ``applied_load[:, load]`` (default M_z) passes ``moment``
+        [N·m] rising and then falling: the tilt (``inner_ring_displacement[:, dof]``, default γz) at
+        the falling crossing minus that at the rising one (linear interpolation between samples);
+        positive when the tilt lags the moment.  Seed 001 evaluates it at 0.3 kN·m.
         """
         m = self.data["applied_load"][:, load] - moment
         g = self.data["inner_ring_displacement"][:, dof]
-        crossings = {True: math.nan, False: math.nan}
-        for i in range(len(m) - 1, 0, -1):
+        out = []
+        rising = math.nan
+        for i in range(1, len(m)):
             if m[i - 1] == m[i] or (m[i - 1] > 0) == (m[i] > 0):
                 continue
-            rising = m[i] > m[i - 1]
-            if math.isnan(crossings[rising]):
-                w = m[i - 1] / (m[i - 1] - m[i])
-                crossings[rising] = g[i - 1] + w * (g[i] - g[i - 1])
-            if not (math.isnan(crossings[True]) or math.isnan(crossings[False])):
-                break
-        return crossings[False] - crossings[True]
+            w = m[i - 1] / (m[i - 1] - m[i])
+            value = g[i - 1] + w * (g[i] - g[i - 1])
+            if m[i] > m[i - 1]:
+                rising = value
+            elif not math.isnan(rising):
+                out.append(value - rising)
+                rising = math.nan
+        return np.array(out)
+
+    def fluctuation_range(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> float:
+        """W_H of the last complete load cycle [rad] (:meth:`loop_widths`); NaN if there is none."""
+        w = self.loop_widths(moment, dof, load)
+        return float(w[-1]) if len(w) else math.nan
 
     def plot(self, variables=("inner_ring_displacement", "cage_angular_speed"), ax=None):
         """Plot variables against time (matplotlib); returns the figure."""
