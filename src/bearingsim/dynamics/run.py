@@ -40,7 +40,7 @@ class Stepper:
     h_min: float = 1e-13
     method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit per ball, for stiff traction)
     jac_every: int = 20
-    switch_ratio: float = 0.2  #: ros34w: fraction of rejected steps in an interval that hands it to ROS2
+    switch_ratio: float = 0.5  #: ros34w: fraction of rejected steps in an interval that hands it to ROS2
     switches: int = 0
     max_steps_per_interval: int = 10_000_000
     steps: int = 0

@@ -54,6 +54,8 @@ class HysteresisCell:
     frequency_hz: float
     widths: np.ndarray  #: W_H of cycles 2, 3, … [rad]
     wall_seconds: float
+    steps: int = 0  #: integrator steps of the run
+    fallback_intervals: int = 0  #: output intervals the W-method handed to ROS2 (non-smooth stretches)
     moment: np.ndarray = field(repr=False, default=None)  #: last cycle, applied moment [N m]
     tilt: np.ndarray = field(repr=False, default=None)  #: last cycle, tilt γz [rad]
 
@@ -83,7 +85,8 @@ class HysteresisStudy:
                         "W_H_mean_mdeg": math.degrees(c.mean) * 1e3, "W_H_spread_mdeg": math.degrees(c.spread) * 1e3,
                         "W_H_cycles_mdeg": " ".join(f"{math.degrees(w) * 1e3:.3f}" for w in c.widths),
                         "seed_fig9_mdeg": math.degrees(c.seed()) * 1e3,
-                        "seed_fig9_alt_mdeg": math.degrees(c.seed(SEED_FIG9_ALT)) * 1e3, "wall_s": c.wall_seconds})
+                        "seed_fig9_alt_mdeg": math.degrees(c.seed(SEED_FIG9_ALT)) * 1e3, "wall_s": c.wall_seconds,
+                        "steps": c.steps, "ros2_fallback_intervals": c.fallback_intervals})
         return out
 
     def print_table(self, console) -> None:
@@ -91,13 +94,14 @@ class HysteresisStudy:
 
         t = Table(title=f"Seed 001 hub unit: fluctuation range W_H at {self.moment / 1e3:g} kN·m "
                         "(tilt falling − rising; 10⁻³ deg)")
-        for c in ("km/h", "Hz", "cycles", "ours mean", "ours spread", "per cycle", "seed Fig. 9*", "or*", "wall s"):
+        for c in ("km/h", "Hz", "cycles", "ours mean", "ours spread", "per cycle", "seed Fig. 9*", "or*", "wall s",
+                  "steps"):
             t.add_column(c, justify="right")
         for r in self.rows():
             t.add_row(f"{r['speed_kmh']:g}", f"{r['frequency_hz']:g}", str(r["cycles"]), f"{r['W_H_mean_mdeg']:.3f}",
                       f"{r['W_H_spread_mdeg']:.3f}", r["W_H_cycles_mdeg"], f"{r['seed_fig9_mdeg']:.1f}",
                       f"{r['seed_fig9_alt_mdeg']:.1f}",
-                      f"{r['wall_s']:.0f}")
+                      f"{r['wall_s']:.0f}", str(r["steps"]))
         console.print(t)
         console.print("* the two readings of the seed's Fig. 9 consistent with its stated trends "
                       "(bearingsim/studies/hub_dynamic.py); the seed's loop lags the moment (W_H > 0)")
@@ -186,6 +190,8 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
             t = res.data["time"]
             last = t >= t[-1] - 1.0 / f
             cells.append(HysteresisCell(float(v), float(f), widths[1:] if len(widths) > 1 else widths[:0], wall,
+                                        int(res.summary.get("steps", 0)),
+                                        int(res.summary.get("ros2_fallback_intervals", 0)),
                                         res.data["applied_load"][last, 4].copy(),
                                         res.data["inner_ring_displacement"][last, 4].copy()))
     return HysteresisStudy(cells, moment)
