@@ -142,26 +142,3 @@ def test_ros34w_restart_from_t_y_h_is_bitwise():
     _, t3, _ = ig.advance_ros34(stiff, (1e5,), t1, 1.0, b, h1, atol, rtol, 1e-12, 10**6, info, blk, 3, 20)
     assert t2 == t3 == 1.0
     assert np.array_equal(a, b)
-
-
-@njit(cache=True)
-def relay(t, y, dy, args):
-    # y' = −sign(y): the right-hand side jumps at y = 0 (y = 1 − t reaches it at t = 1)
-    dy[0] = -args[0] * (1.0 if y[0] > 0 else -1.0)
-
-
-def test_ros34w_hands_a_non_smooth_stretch_over():
-    """At a discontinuity of the right-hand side the third-order method keeps rejecting steps; with a
-    switch ratio it stops at its last accepted step (status SWITCH) for the caller to continue with ROS2."""
-    blk = np.array([0], dtype=np.int64)
-    info = np.zeros(4)
-    y = np.array([1.0])
-    st, t, h = ig.advance_ros34(relay, (1.0,), 0.0, 3.0, y, 1e-2, np.full(1, 1e-6), np.zeros(1), 1e-14, 10**6,
-                                info, blk, 1, 20, 0.2)
-    assert st == ig.SWITCH
-    assert 0.99 < t < 1.0 and info[1] >= 10
-    np.testing.assert_allclose(y[0], 1.0 - t, atol=1e-9, err_msg="exact solution y = 1 − t before the jump")
-    y = np.array([1.0])
-    st, t, h = ig.advance_ros34(relay, (1.0,), 0.0, 3.0, y, 1e-2, np.full(1, 1e-6), np.zeros(1), 1e-14, 10**6,
-                                info, blk, 1, 20)
-    assert st == ig.OK and t == 3.0

@@ -49,10 +49,8 @@ OK = 0
 STEP_TOO_SMALL = 1
 NOT_FINITE = 2
 MAX_STEPS = 3
-SWITCH = 4  #: advance_ros34 gave up on a non-smooth stretch (too many rejections); continue with ROS2
 STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (diverging or too stiff)",
-               NOT_FINITE: "the state became non-finite", MAX_STEPS: "step limit reached",
-               SWITCH: "too many rejected steps for the third-order method"}
+               NOT_FINITE: "the state became non-finite", MAX_STEPS: "step limit reached"}
 
 
 @njit
@@ -445,8 +443,7 @@ def _w_inverse(jac, hs, g, winv, wm):
 
 
 @njit
-def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every,
-                  switch_ratio=2.0):
+def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every):
     """Third-order linearly implicit W-method ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761)
     with the block-diagonal Jacobian of :func:`advance_ros2` (blocks ``blk`` of ``nbk``
     states, finite differences, refreshed every ``jac_every`` steps or after a rejection).
@@ -455,12 +452,7 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
     Jacobian — which omits the ball–ring and ball–cage coupling and ∂f/∂t — costs no
     order; the embedded second-order solution gives err ∝ h³ and the controller
     h ← h·min(5, max(0.2, 0.9 err^(−1/3))).  4 right-hand sides per step.
-    Same arguments and return values as :func:`advance`; in addition, when more than
-    ``switch_ratio`` of the steps of this call (after at least 10 rejections) were rejected,
-    it stops at the last accepted step with status SWITCH: on stretches where the
-    right-hand side is not smooth (the lubricated kernel's traction law, ball-load
-    changes) a high-order method keeps rejecting steps while the second-order ROS2 does
-    not, and the caller continues with :func:`advance_ros2`.
+    Same arguments and return values as :func:`advance`.
     """
     n = y.shape[0]
     nb = blk.shape[0]
@@ -540,9 +532,6 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
             h = hs * max(0.2, 0.9 * err ** (-1.0 / 3.0))
             if h < h_min:
                 status = STEP_TOO_SMALL if finite else NOT_FINITE
-                break
-            if nrej >= 10 and nrej > switch_ratio * (nacc + nrej):
-                status = SWITCH
                 break
     info[0] = nacc
     info[1] = nrej

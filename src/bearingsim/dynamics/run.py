@@ -40,8 +40,6 @@ class Stepper:
     h_min: float = 1e-13
     method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit per ball, for stiff traction)
     jac_every: int = 20
-    switch_ratio: float = 0.5  #: ros34w: fraction of rejected steps in an interval that hands it to ROS2
-    switches: int = 0
     max_steps_per_interval: int = 10_000_000
     steps: int = 0
     rejected: int = 0
@@ -62,15 +60,7 @@ class Stepper:
         if self.method == "ros34w":
             status, t, h = ig.advance_ros34(fo.rhs_args, self._args, self.t, float(t_end), self.y, self.h, self.atol,
                                             self.rtol, self.h_min, self.max_steps_per_interval, self._info, self._blk,
-                                            md.N_BALL, self.jac_every, self.switch_ratio)
-            if status == ig.SWITCH:
-                # non-smooth stretch: finish this interval with the second-order W-method
-                self.steps += int(self._info[0])
-                self.rejected += int(self._info[1])
-                self.switches += 1
-                status, t, h = ig.advance_ros2(fo.rhs_args, self._args, t, float(t_end), self.y, h, self.atol,
-                                               self.rtol, self.h_min, self.max_steps_per_interval, self._info,
-                                               self._blk, md.N_BALL, self.jac_every)
+                                            md.N_BALL, self.jac_every)
         elif self.method == "ros2w":
             status, t, h = ig.advance_ros2(fo.rhs_args, self._args, self.t, float(t_end), self.y, self.h, self.atol,
                                            self.rtol, self.h_min, self.max_steps_per_interval, self._info, self._blk,
@@ -552,7 +542,6 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
             writer.close()
     wall = time.perf_counter() - t_wall0
     summary = {"wall_seconds": wall, "simulated_seconds": stepper.t - t_sim0, "steps": stepper.steps,
-               "ros2_fallback_intervals": stepper.switches,
                "rejected_steps": stepper.rejected,
                "wall_per_simulated_second": wall / max(stepper.t - t_sim0, 1e-30),
                "initial_static_converged": bool(static.converged)}

@@ -55,7 +55,6 @@ class HysteresisCell:
     widths: np.ndarray  #: W_H of cycles 2, 3, … [rad]
     wall_seconds: float
     steps: int = 0  #: integrator steps of the run
-    fallback_intervals: int = 0  #: output intervals the W-method handed to ROS2 (non-smooth stretches)
     moment: np.ndarray = field(repr=False, default=None)  #: last cycle, applied moment [N m]
     tilt: np.ndarray = field(repr=False, default=None)  #: last cycle, tilt γz [rad]
 
@@ -86,7 +85,7 @@ class HysteresisStudy:
                         "W_H_cycles_mdeg": " ".join(f"{math.degrees(w) * 1e3:.3f}" for w in c.widths),
                         "seed_fig9_mdeg": math.degrees(c.seed()) * 1e3,
                         "seed_fig9_alt_mdeg": math.degrees(c.seed(SEED_FIG9_ALT)) * 1e3, "wall_s": c.wall_seconds,
-                        "steps": c.steps, "ros2_fallback_intervals": c.fallback_intervals})
+                        "steps": c.steps})
         return out
 
     def print_table(self, console) -> None:
@@ -191,7 +190,6 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
             last = t >= t[-1] - 1.0 / f
             cells.append(HysteresisCell(float(v), float(f), widths[1:] if len(widths) > 1 else widths[:0], wall,
                                         int(res.summary.get("steps", 0)),
-                                        int(res.summary.get("ros2_fallback_intervals", 0)),
                                         res.data["applied_load"][last, 4].copy(),
                                         res.data["inner_ring_displacement"][last, 4].copy()))
     return HysteresisStudy(cells, moment)
