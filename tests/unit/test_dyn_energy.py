@@ -69,10 +69,11 @@ def test_energy_conserved_without_friction_and_damping():
             cage_hits = max(cage_hits, st.sample()["cage_contact_load"].max())
         assert cage_hits > 0, "the test must exercise the pocket contacts"
         drifts.append(worst / ke0)
-    # relative to the initial kinetic energy; the pocket contact (deepest of a set of
-    # surface points) switches points, which limits the convergence to ~tol^0.85
-    assert drifts[1] < 2e-5, f"energy drift {drifts}"
-    assert drifts[0] / drifts[1] > 10, f"drift must shrink with the tolerance: {drifts}"
+    # relative to the initial kinetic energy.  Measured: 9.4e-6, 2.7e-6, 1.1e-6, 4.5e-7, 1.9e-7 at tol 1e-7 … 1e-11,
+    # i.e. convergence as ≈ tol^0.4; contact onsets, where the Hertz force ∝ δ^1.5 is not smooth, are the likely
+    # limit (with the earlier point-cloud pocket contact the drift was ≈ 20× larger)
+    assert drifts[1] < 1e-6, f"energy drift {drifts}"
+    assert drifts[0] / drifts[1] > 4, f"drift must shrink with the tolerance: {drifts}"
 
 
 def test_deterministic_and_restartable():

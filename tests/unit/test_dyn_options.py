@@ -110,3 +110,33 @@ def test_slice_count_converges_for_the_hub_contacts():
     assert err[32] < err[8] < err[2], err
     assert err[32] < 0.05, err
     np.testing.assert_allclose(power[8], power[128], rtol=0.01, err_msg="quadrature convergence of the power loss")
+
+
+def test_pocket_point_is_the_nearest_surface_point():
+    """The closed-form pocket contact point (seed 001 §3.2 surface nodes in the limit of a fine mesh) lies on the
+    pocket surface and no point of a dense sampling of that surface is nearer the ball centre."""
+    rng = np.random.default_rng(3)
+    radius, opening, half_len = 5.75e-3, math.radians(20.0), 0.2 * 11.1e-3
+    # dense sampling of the spherical cap (polar angle from the radial axis in [opening, pi - opening]) and cylinder
+    pol = np.linspace(opening, math.pi - opening, 600)[:, None]
+    az = np.linspace(0.0, 2 * math.pi, 1200, endpoint=False)[None, :]
+    sphere = np.stack([radius * np.sin(pol) * np.cos(az), radius * np.cos(pol) * np.ones_like(az),
+                       radius * np.sin(pol) * np.sin(az)], axis=-1).reshape(-1, 3)
+    h = np.linspace(-half_len, half_len, 400)[:, None]
+    cyl = np.stack([radius * np.cos(az) * np.ones_like(h), h * np.ones_like(az), radius * np.sin(az) * np.ones_like(h)],
+                   axis=-1).reshape(-1, 3)
+    for shape, par, cloud in ((0, opening, sphere), (1, half_len, cyl)):
+        for _ in range(40):
+            u = rng.normal(size=3) * 0.3e-3
+            if _ % 4 == 0:
+                u[1] = rng.choice([-1, 1]) * 0.8 * radius  # far along the radial axis: rim / edge cases
+            q = np.array(fo.pocket_point(shape, par, radius, *u))
+            if shape == 0:
+                assert np.linalg.norm(q) == pytest.approx(radius, rel=1e-12)
+                assert abs(q[1]) <= radius * math.cos(opening) * (1 + 1e-12)
+            else:
+                assert math.hypot(q[0], q[2]) == pytest.approx(radius, rel=1e-12) and abs(q[1]) <= half_len
+            d = np.linalg.norm(u - q)
+            dmin = np.min(np.linalg.norm(cloud - u, axis=1))
+            assert d <= dmin + 1e-15, (shape, u, d, dmin)
+            assert d >= dmin - 2e-4 * radius  # the sampling is dense: it comes within its spacing

@@ -5,11 +5,11 @@ elastic modes.  Here the cage is rigid: its state block is
 
     r (3), v (3), θ, βy, βz, θ̇, β̇y, β̇z                    (N_CAGE = 12 values)
 
-and its pocket surfaces are point clouds in the pocket frame (:func:`pocket_points`).
-An elastic cage adds n modal coordinates η and rates η̇ after these 12 values
-(:func:`block_size`) and displaces each surface point by Σ η_i φ_i(point); the contact
-routine already works point by point (deepest point of the cloud), so only the point
-positions and the generalized modal forces Σ φ_i·F need adding.
+and its pocket surfaces are spheres or cylinders in the pocket frame (:func:`pocket_geometry`);
+the contact routine finds the surface point nearest the ball centre in closed form.  An elastic
+cage adds n modal coordinates η and rates η̇ after these 12 values (:func:`block_size`) and
+displaces that contact point by Σ η_i φ_i(point); only the mode shapes at the contact point and
+the generalized modal forces Σ φ_i·F need adding.
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import InputError
-from .model import GUIDANCE, N_CAGE, pocket_points, steel_cage_constant  # noqa: F401  (re-exported)
+from .model import GUIDANCE, N_CAGE, pocket_geometry, steel_cage_constant  # noqa: F401  (re-exported)
 
 
 def block_size(n_modes: int = 0) -> int:

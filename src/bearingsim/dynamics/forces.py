@@ -325,7 +325,41 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
 
 
 @njit(cache=True)
-def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, pts, lubs, loadspec, diag, gdiag):
+def pocket_point(shape, par, radius, ut, ur, ux):
+    """Point of the pocket surface nearest the ball centre (ut, ur, ux), pocket frame (t, r, x) [m].
+
+    shape 0: sphere of ``radius`` about the pocket centre, open within the half-angle ``par``
+    [rad] of the radial axis r: the point is radius·û when û = u/|u| lies on the surface, else
+    the nearest point of the opening's rim at the same azimuth.  shape 1: cylinder of ``radius``
+    about the radial axis, half-length ``par`` [m]: the point at the ball centre's height
+    (clamped to ±par) in the direction of its offset in the t–x plane.  Exact closest points
+    (seed 001 §3.2 discretises the surface into nodes; the closed form is what those nodes
+    converge to, without the jumps of the deepest node as the ball moves).
+    """
+    if shape == 0:
+        d = math.sqrt(ut * ut + ur * ur + ux * ux)
+        if d == 0.0:
+            return radius, 0.0, 0.0
+        c = ur / d
+        cmax = math.cos(par)
+        if abs(c) <= cmax:
+            f = radius / d
+            return ut * f, ur * f, ux * f
+        rho = math.sqrt(ut * ut + ux * ux)
+        sp = math.sin(par) * radius
+        cr = cmax * radius if ur > 0.0 else -cmax * radius
+        if rho == 0.0:
+            return sp, cr, 0.0
+        return sp * ut / rho, cr, sp * ux / rho
+    rho = math.sqrt(ut * ut + ux * ux)
+    h = min(par, max(-par, ur))
+    if rho == 0.0:
+        return radius, h, 0.0
+    return radius * ut / rho, h, radius * ux / rho
+
+
+@njit(cache=True)
+def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
     """Time derivative of the state (equations of motion, inertial frame).
 
     Inner ring (seed 001 Table 3; Lagrange with constant mass matrix):
@@ -560,29 +594,22 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, pts, lubs, loadspec, diag, gdiag
                 # no point of a pocket of radius D/2 + clr can touch a ball this close to the centre
                 if math.sqrt(ut * ut + ux * ux + ur * ur) <= clr:
                     continue
-                best = 0.0
-                ib = -1
-                for ip in range(pts.shape[0]):
-                    e0 = ut - pts[ip, 0]
-                    e1 = ur - pts[ip, 1]
-                    e2 = ux - pts[ip, 2]
-                    pen = half_d - math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
-                    if pen > best:
-                        best = pen
-                        ib = ip
-                if ib < 0:
-                    continue
-                e0 = ut - pts[ib, 0]
-                e1 = ur - pts[ib, 1]
-                e2 = ux - pts[ib, 2]
+                # nearest point of the pocket surface to the ball centre (closed form) and the penetration
+                qt, qr, qx = pocket_point(int(cpar[md.C_SHAPE]), cpar[md.C_POCKET], half_d + clr, ut, ur, ux)
+                e0 = ut - qt
+                e1 = ur - qr
+                e2 = ux - qx
                 dd = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+                best = half_d - dd
+                if not (best > 0.0 and dd > 0.0):
+                    continue
                 # normal (point → ball centre) and contact point in the cage frame
                 nl0 = e2 / dd
                 nl1 = (e1 * cph - e0 * sph) / dd
                 nl2 = (e1 * sph + e0 * cph) / dd
-                pl0 = pts[ib, 2]
-                pl1 = rp * cph + pts[ib, 1] * cph - pts[ib, 0] * sph
-                pl2 = rp * sph + pts[ib, 1] * sph + pts[ib, 0] * cph
+                pl0 = qx
+                pl1 = rp * cph + qr * cph - qt * sph
+                pl2 = rp * sph + qr * sph + qt * cph
                 for i in range(3):
                     nvec[i] = rcm[i, 0] * nl0 + rcm[i, 1] * nl1 + rcm[i, 2] * nl2
                     pc[i] = occ[i] + rcm[i, 0] * pl0 + rcm[i, 1] * pl1 + rcm[i, 2] * pl2
@@ -776,15 +803,15 @@ def evaluate(model, t, y, loadspec, want_diag=True):
     dy = np.zeros_like(y)
     diag = np.zeros((model.n_balls if want_diag else 0, NDB))
     gdiag = np.zeros(NDG)
-    rhs(t, y, dy, model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.pts, model.lub_array(), loadspec,
-        diag, gdiag)
+    rhs(t, y, dy, model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.lub_array(), loadspec, diag,
+        gdiag)
     return dy, diag, gdiag
 
 
 @njit(cache=True)
 def rhs_args(t, y, dy, a):
     """:func:`rhs` with its arrays in one tuple (the integrator's calling convention)."""
-    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9])
+    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8])
 
 
 def args_of(model, loadspec, diag=None, gdiag=None):
@@ -793,5 +820,4 @@ def args_of(model, loadspec, diag=None, gdiag=None):
         diag = np.zeros((0, NDB))
     if gdiag is None:
         gdiag = np.zeros(NDG)
-    return (model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.pts, model.lub_array(), loadspec, diag,
-            gdiag)
+    return (model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.lub_array(), loadspec, diag, gdiag)

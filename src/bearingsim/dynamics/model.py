@@ -98,7 +98,11 @@ C_PSI0 = 13  # azimuth of pocket 0 [rad]
 C_Z = 14  # number of pockets
 C_BALL0 = 15  # index of the first ball of this cage
 C_NMODES = 16  # modal coordinates (0: rigid)
-NCP = 17
+C_SHAPE = 17  # pocket shape: 0 sphere, 1 cylinder (POCKET_SHAPES)
+C_POCKET = 18  # sphere: half-angle of the opening about the radial axis [rad]; cylinder: half-length [m]
+NCP = 19
+
+POCKET_SHAPES = {"sphere": 0, "cylinder": 1}
 
 GUIDANCE = {"balls": 0, "outer-land": 1, "inner-land": 2}
 
@@ -113,7 +117,6 @@ class Model:
     ball_psi: np.ndarray  #: float[nb] nominal azimuth [rad]
     gp: np.ndarray  #: float[NGP]
     cp: np.ndarray  #: float[ncage, NCP]
-    pts: np.ndarray  #: float[npt, 3] pocket-surface points in the pocket frame (t, r, x) [m]
     names: dict = field(default_factory=dict)
     lubs: np.ndarray | None = None  #: float[2 nrow, L_SIZE] lubrication parameters (inner, outer per row)
 
@@ -149,32 +152,21 @@ class Model:
         return slice(o, o + N_CAGE)
 
 
-def pocket_points(ball_diameter: float, clearance: float, shape: str = "sphere", n_around: int = 24,
-                  n_levels: int = 13, opening_deg: float = 20.0) -> np.ndarray:
-    """Points on the pocket surface in the pocket frame (t, r, x) [m].
+def pocket_geometry(ball_diameter: float, shape: str = "sphere", opening_deg: float = 20.0) -> tuple[int, float]:
+    """(shape code, shape parameter) of the pocket surface (seed 001 §3.2), for ``cp[C_SHAPE]``, ``cp[C_POCKET]``.
 
-    seed 001 §3.2: the cage surface is divided into nodes that interfere geometrically
-    with the ball.  ``shape="sphere"`` (default): a spherical pocket of radius
-    D/2 + clearance, points on ``n_levels`` circles of polar angle from ``opening_deg``
-    to 180° − ``opening_deg`` about the cage's radial axis (the pocket is open toward the
-    raceways), ``n_around`` points per circle; it locates a ball-guided cage radially and
-    axially.  ``shape="cylinder"``: a cylindrical pocket with a radial axis (points at
-    ±0.4 D/2 along the axis); it does not locate the cage radially (use land guidance).
+    ``shape="sphere"`` (default): a spherical pocket of radius D/2 + clearance, open toward the
+    raceways within ``opening_deg`` of the cage's radial axis; it locates a ball-guided cage radially
+    and axially; parameter = the opening half-angle [rad].  ``shape="cylinder"``: a cylindrical pocket
+    of radius D/2 + clearance with a radial axis and a half-length 0.2 D; it does not locate the cage
+    radially (use land guidance); parameter = the half-length [m].  The contact routine finds the
+    surface point nearest the ball centre in closed form (:func:`bearingsim.dynamics.forces.pocket_point`).
     """
-    rp = 0.5 * ball_diameter + clearance
-    th = 2.0 * math.pi * np.arange(n_around) / n_around
-    pts = []
     if shape == "sphere":
-        for pol in np.radians(np.linspace(opening_deg, 180.0 - opening_deg, n_levels)):
-            for a in th:
-                pts.append((rp * math.sin(pol) * math.cos(a), rp * math.cos(pol), rp * math.sin(pol) * math.sin(a)))
-    elif shape == "cylinder":
-        for h in np.linspace(-0.4, 0.4, n_levels) * 0.5 * ball_diameter:
-            for a in th:
-                pts.append((rp * math.cos(a), h, rp * math.sin(a)))
-    else:
-        raise InputError("cage.pocket_shape", f"unknown pocket shape {shape!r}", "use sphere or cylinder")
-    return np.array(pts)
+        return POCKET_SHAPES[shape], math.radians(opening_deg)
+    if shape == "cylinder":
+        return POCKET_SHAPES[shape], 0.2 * ball_diameter
+    raise InputError("cage.pocket_shape", f"unknown pocket shape {shape!r}", "use sphere or cylinder")
 
 
 def row_extras(bearing, rows: np.ndarray) -> np.ndarray:
@@ -333,8 +325,8 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
         cp[r, C_PSI0] = par[kn.P_PSI0]
         cp[r, C_Z] = z
         cp[r, C_BALL0] = b0
+        cp[r, C_SHAPE], cp[r, C_POCKET] = pocket_geometry(d, pocket_shape)
         b0 += z
-    pts = pocket_points(d0, clr, pocket_shape)
     lubs = None
     if traction == "slices":
         from ..contact import slices
@@ -347,7 +339,7 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
                                                              rowx[r, X_RYI], **(lubrication or {}))
             lubs[2 * r + 1] = slices.pack_lubrication_parameters(lubricant, temperature, rowx[r, X_EPO],
                                                                  rowx[r, X_RXO], rowx[r, X_RYO], **(lubrication or {}))
-    return Model(rows=rows, rowx=rowx, ball_row=ball_row, ball_psi=np.array(ball_psi), gp=gp, cp=cp, pts=pts,
+    return Model(rows=rows, rowx=rowx, ball_row=ball_row, ball_psi=np.array(ball_psi), gp=gp, cp=cp,
                  names={"bearing": getattr(bearing, "name", "bearing")}, lubs=lubs)
 
 
