@@ -75,3 +75,15 @@ def test_bad_input(tmp_path):
     const.write_text(CASE.read_text().split("[loads]")[0] + '[loads]\nfr = "2800 N"\n')
     with pytest.raises(InputError, match="loads"):
         hd.run_study(const, cycles=2)
+
+
+def test_cli_bad_input_is_one_line_and_exit_2(tmp_path):
+    import subprocess
+    import sys
+
+    for args, field in ((["--speeds", "fast"], "--speeds"), (["--cycles", "1"], "cycles")):
+        r = subprocess.run([sys.executable, "-m", "bearingsim", "reproduce", "hub-hysteresis", str(CASE), *args,
+                            "--out", str(tmp_path / "o")], capture_output=True, text=True, timeout=120)
+        assert r.returncode == 2, r.stderr
+        assert field in (r.stderr + r.stdout)
+        assert not list((tmp_path / "o").glob("*.nc"))
