@@ -4,9 +4,11 @@
     python benchmarks/bench_sweep.py --quick    # skip the 1,000,000-point map
 
 Figures: operating points per second on one core (batch kernel, warm starts) for the SKF 7011 grid
-with inertia (41 speeds x 9 axial loads), a 10,000-point random combined-load set, and the hub unit;
-map_grid with 1 and 2 Dask workers on a 10,000-point grid; peak memory of a 1,000,000-point map
-streamed to netCDF.
+with inertia (41 speeds x 9 axial loads), a 10,000-point random combined-load set, and the hub unit
+(wall and CPU-time rates); map_grid in-process and with 1 and 2 pre-warmed Dask workers on two
+10,000-point grids (the 7011 combined-load grid at 3000 rpm, and the same number of dearer points of
+the 7011 DB pair over speed), with a control of the machine's parallel efficiency; time and peak memory
+of a 1,000,000-point map streamed to netCDF.
 """
 
 from __future__ import annotations
@@ -121,31 +123,73 @@ def main(quick=False):  # noqa: C901
     # 4. map_grid: in-process vs Dask LocalCluster with 1 and 2 workers, 10,000-point grid
     from distributed import Client, LocalCluster
 
-    from bearingsim.sweep import map_grid, warm_up
+    from bearingsim.sweep import _blocks, map_grid, warm_up
 
     print(f"control: two pure-Python tasks on two processes run {machine_parallel_efficiency():.2f} x faster "
           "than one (2.0 on two idle cores; less when other jobs share the machine)")
-    # 10,000 combined-load points (25 Fa x 20 Fr x 20 M at 3000 rpm), 25 blocks of 400
-    kw = dict(fa="500:5000:25", fr="0:2000:20", moment="-20:20:20", speed="3000", chunk_points=400)
+    # 10,000 combined-load points (25 Fa x 20 Fr x 20 M at 3000 rpm) in 5 blocks (4 x 2,400 + 400 points,
+    # 35-55 ms each): few tasks, because the ~5 ms of scheduler/client CPU per task on the main process is
+    # taken from the workers on a 2-core machine, and about even shares for 2 workers (the dearest block,
+    # low Fa with many status-3 points, first; the small one last)
+    chunk = 2400
+    kw = dict(fa="500:5000:25", fr="0:2000:20", moment="-20:20:20", speed="3000", chunk_points=chunk)
+    nblk = len(_blocks((25, 20, 20), chunk))
+    map_grid(b7011, workers=1, **kw)  # imports (xarray) and kernels loaded before timing
     t = time.perf_counter()
+    c = time.process_time()
     ser = map_grid(b7011, workers=1, **kw)
     t_ser = time.perf_counter() - t
-    print(f"map_grid 10,000 combined-load points in-process: {10000 / t_ser:,.0f} points/s "
-          f"(converged {float(ser.converged.mean()):.1%})")
-    for nw in (1, 2):
-        with LocalCluster(n_workers=nw, threads_per_worker=1, processes=True, dashboard_address=None) as cl, \
-                Client(cl) as client:
-            client.run(warm_up)  # load the compiled kernels on every worker before timing
-            t = time.perf_counter()
-            ds = map_grid(b7011, scheduler=client, **kw)
-            dt = time.perf_counter() - t
-            same = all(np.array_equal(ser[v].values, ds[v].values) for v in ser.data_vars)
-            print(f"map_grid 10,000 combined-load points, Dask {nw} worker(s): {10000 / dt:,.0f} points/s "
-                  f"(identical to serial: {same})")
-            if nw == 1:
-                t1 = dt
-            else:
-                print(f"   speed-up 2 workers / 1 worker: {t1 / dt:.2f} x  (machine has {os.cpu_count()} cores)")
+    c_ser = time.process_time() - c
+    print(f"map_grid 10,000 combined-load points in-process ({nblk} blocks): {10000 / t_ser:,.0f} points/s "
+          f"[CPU time: {10000 / c_ser:,.0f} points/s] (converged {float(ser.converged.mean()):.1%})")
+    print("Dask: wall time of map_grid(scheduler=client) on LocalClusters of 1 and 2 single-threaded worker "
+          "processes, started and pre-warmed before timing (client.run(warm_up) loads the compiled kernels in "
+          "every worker); results gathered into the in-memory Dataset by the main process (which also hosts the "
+          "scheduler); runs alternate between the two clusters, 5 runs each")
+
+    def _cpu():
+        return time.process_time()
+
+    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None) as cl1, \
+            Client(cl1) as c1, \
+            LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cl2, \
+            Client(cl2) as c2:
+        for client in (c1, c2):
+            client.run(warm_up)
+        db = load_bearing("skf-7011-cdga-hc-db")
+        cases = [("7011, 25 Fa x 20 Fr x 20 M at 3000 rpm", b7011, kw, ser),
+                 # the same number of points, each dearer (a preloaded pair, 2 x 21 balls, speeds to 11,200 rpm)
+                 ("7011 DB pair, 25 Fa x 20 Fr x 20 speeds", db,
+                  dict(fa="500:5000:25", fr="0:2000:20", speed="1000:11200:20", chunk_points=chunk), None)]
+        for label, brg, kwc, ref in cases:
+            if ref is None:
+                ref = map_grid(brg, workers=1, **kwc)
+            walls = {1: [], 2: []}
+            cpus = {1: [], 2: []}
+            same = True
+            for client in (c1, c2):
+                map_grid(brg, scheduler=client, **kwc)  # first map: connections and imports
+            for _ in range(5):
+                for nw, client in ((1, c1), (2, c2)):
+                    w0 = client.run(_cpu)
+                    m0 = time.process_time()
+                    t = time.perf_counter()
+                    ds = map_grid(brg, scheduler=client, **kwc)
+                    walls[nw].append(time.perf_counter() - t)
+                    m1 = time.process_time()
+                    w1 = client.run(_cpu)
+                    cpus[nw].append((sum(w1[k] - w0[k] for k in w0), m1 - m0))
+                    same = same and all(np.array_equal(ref[v].values, ds[v].values) for v in ref.data_vars)
+            print(f"map_grid {label} (10,000 points, {nblk} blocks of <= {chunk}):")
+            for nw in (1, 2):
+                wc = np.median([x[0] for x in cpus[nw]])
+                mc = np.median([x[1] for x in cpus[nw]])
+                print(f"   Dask {nw} worker(s): best {10000 / min(walls[nw]):,.0f} points/s, median "
+                      f"{10000 / np.median(walls[nw]):,.0f} points/s; CPU per map: workers {wc:.3f} s, main process "
+                      f"{mc:.3f} s")
+            print(f"   speed-up 2 workers / 1 worker: {min(walls[1]) / min(walls[2]):.2f} x (best of 5), "
+                  f"{np.median(walls[1]) / np.median(walls[2]):.2f} x (median); identical to serial: {same} "
+                  f"(machine has {os.cpu_count()} cores)")
 
     if quick:
         return

@@ -6,11 +6,11 @@ point, serpentine order inside each block) and returns an :class:`xarray.Dataset
 displacements, the 5×5 stiffness, the contact-angle extremes, the maximum pressures and the
 convergence flags over the grid.
 
-Execution: the grid is cut into rectangular blocks (the last two grid dimensions, split so that a
-block holds at most ``chunk_points`` points).  Each block is solved independently and
-deterministically, so the result does not depend on where the blocks run: in this process
-(``workers=1``), in a local process pool (default, one worker per core), or on a Dask cluster
-(``scheduler="tcp://host:port"`` or a ``distributed.Client``).  With ``out=path`` the blocks are
+Execution: the grid is cut into rectangular blocks of at most ``chunk_points`` points (the last grid
+dimension split first, then whole rows, whole planes, ... outwards; :func:`_blocks`).  Each block is
+solved independently and deterministically, so the result does not depend on where the blocks run:
+in this process (``workers=1``), in a local process pool (default, one worker per core), or on a Dask
+cluster (``scheduler="tcp://host:port"`` or a ``distributed.Client``).  With ``out=path`` the blocks are
 streamed into a netCDF file under a temporary name, renamed at the end; an interrupt or an error
 removes the temporary file (never a corrupt map).
 
@@ -79,24 +79,38 @@ def parse_grid(spec, dimension: str, field: str) -> np.ndarray:
 
 # ---- blocks ------------------------------------------------------------------------------------
 def _blocks(shape: tuple, chunk_points: int):
-    """Rectangular blocks of the grid: tuples of slices (outer indices fixed, last two dims split)."""
+    """Rectangular blocks of the grid (tuples of slices, one per dimension) of at most ``chunk_points``
+    points: the last dimension is split first, then as many whole rows of it as fit, then whole planes,
+    and so on outwards.  The blocks depend only on the grid and ``chunk_points`` (never on the
+    executor), so every executor solves the same blocks and returns the same numbers."""
     if len(shape) == 0:
         return [()]
-    nb = shape[-1]
-    na = shape[-2] if len(shape) >= 2 else 1
-    rb = max(1, min(nb, chunk_points))
-    ra = max(1, min(na, chunk_points // rb))
-    outer = shape[:-2] if len(shape) >= 2 else ()
+    sizes = []
+    room = max(1, int(chunk_points))
+    for n in reversed(shape):
+        r = max(1, min(n, room))
+        sizes.append(r)
+        room = max(1, room // r)
+    sizes = sizes[::-1]
+    starts = [range(0, n, r) for n, r in zip(shape, sizes)]
     out = []
-    for idx in np.ndindex(*outer) if outer else [()]:
-        for a0 in range(0, na, ra):
-            for b0 in range(0, nb, rb):
-                sl = tuple(slice(i, i + 1) for i in idx)
-                if len(shape) >= 2:
-                    sl += (slice(a0, min(a0 + ra, na)),)
-                sl += (slice(b0, min(b0 + rb, nb)),)
-                out.append(sl)
+    for idx in np.ndindex(*[len(st) for st in starts]):
+        out.append(tuple(slice(starts[k][i], min(starts[k][i] + sizes[k], shape[k])) for k, i in enumerate(idx)))
     return out
+
+
+def _snake(shape: tuple) -> np.ndarray:
+    """Boustrophedon visiting order of a block: int[npts, ndim] grid indices in which consecutive points
+    differ by one step along one dimension (a reflected mixed-radix Gray code: index k runs backwards
+    when the indices before it sum to an odd number)."""
+    digits = np.unravel_index(np.arange(int(np.prod(shape))), shape)
+    parity = np.zeros(len(digits[0]), dtype=np.int64)
+    cols = []
+    for n, d in zip(shape, digits):
+        i = np.where(parity % 2 == 1, n - 1 - d, d)
+        cols.append(i)
+        parity += i
+    return np.column_stack(cols)
 
 
 def _with_preload(bearing, preload: float):
@@ -129,14 +143,8 @@ def solve_block(bearing, axes: dict, block: tuple, control: str = "outer") -> di
         if name not in sub:
             sub[name] = vals[name]
     shape = tuple(len(sub[d]) for d in dims)
-    # serpentine order over the block (last dim alternates direction)
-    grids = np.meshgrid(*[np.arange(n) for n in shape], indexing="ij") if dims else []
-    flat = [g.ravel() for g in grids]
-    if dims and len(shape) >= 1:
-        nlast = shape[-1]
-        rowid = np.arange(int(np.prod(shape))) // nlast
-        rev = (rowid % 2) == 1
-        flat[-1] = np.where(rev, nlast - 1 - flat[-1], flat[-1])
+    # serpentine (boustrophedon) order over the block: each point next to the previous one
+    flat = list(_snake(shape).T) if dims else []
     npts = int(np.prod(shape)) if dims else 1
     pick = {d: sub[d][flat[i]] for i, d in enumerate(dims)}
     for name, _, _ in AXES:
@@ -372,13 +380,19 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
             from distributed import as_completed
 
             # the bearing travels with each task (a few kB): tasks without data dependencies are
-            # balanced freely by the scheduler (a scattered dependency pinned most tasks to one worker)
-            futs = {}
-            for b in blocks:
-                futs[client.submit(solve_block, bearing, axes, b, control, pure=False)] = b
-            for f in as_completed(list(futs)):
-                done(futs.pop(f), f.result())  # pop: the result is released once written
-                f.release()
+            # balanced freely by the scheduler (a scattered dependency pinned most tasks to one worker).
+            # One batched submission, and the results of all blocks finished so far fetched in one
+            # gather (not one round trip per block), so that the main process — which also hosts the
+            # scheduler of a LocalCluster — takes as little CPU as possible from the workers.
+            fl = client.map(solve_block, [bearing] * len(blocks), [axes] * len(blocks), blocks,
+                            [control] * len(blocks), pure=False)
+            block_of = {f.key: b for f, b in zip(fl, blocks)}
+            pending = as_completed(fl)
+            del fl  # held by ``pending`` until finished, then released below
+            for batch in pending.batches():
+                for f, res in zip(batch, client.gather(batch)):
+                    done(block_of.pop(f.key), res)
+                    f.release()  # the block's result leaves the cluster once written
         elif nworkers == 1 or len(blocks) == 1:
             for b in blocks:
                 done(b, solve_block(bearing, axes, b, control))

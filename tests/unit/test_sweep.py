@@ -160,3 +160,86 @@ def test_batch_predictor_and_reordering_do_not_change_the_solution():
     assert ok.sum() >= 0.9 * n
     np.testing.assert_allclose(c["q"][ok], a["q"][ok], rtol=1e-7, atol=1e-14)
     np.testing.assert_allclose(c["k"][ok], a["k"][ok], rtol=1e-6, atol=1e-6 * np.abs(a["k"]).max())
+
+
+# ---- behaviour added for speed (issue 3 item 7): coupled Newton, blocks, serpentine order ----------------------
+def _random_points(seed, n):
+    rng = np.random.default_rng(seed)
+    loads = np.column_stack([rng.uniform(500, 5000, n), rng.uniform(-2000, 2000, n), rng.uniform(-2000, 2000, n),
+                             rng.uniform(-50, 50, n), rng.uniform(-50, 50, n)])
+    return loads, rng.uniform(0, 11200, n) * np.pi / 30
+
+
+def _status_of(r):
+    if r.converged:
+        return 0
+    return 3 if r.status.startswith("the only equilibrium") else -1
+
+
+def test_batch_coupled_newton_same_status_and_equilibria_as_single_solves():
+    """The batch (coupled ring-ball Newton, warm starts, Z-order) against independent cold single solves
+    (jones_harris.solve, nested Newton): every point gets the same status, including the points whose
+    equilibrium puts a contact past the groove bottom (status 3), and the same converged equilibria."""
+    b = load_bearing("skf-7011-cdga-hc")
+    loads, om = _random_points(3, 60)
+    out = run_batch(b, loads, om, reorder=True)
+    ref = [jh.solve(b, jh.Loads(*loads[i]), om[i]) for i in range(len(om))]
+    np.testing.assert_array_equal(out["status"], [_status_of(r) for r in ref])
+    assert (out["status"] == 3).sum() >= 3 and (out["status"] == 0).sum() >= 40
+    w = np.array([1.0, 1.0, 1.0, 0.5 * b.pitch_diameter, 0.5 * b.pitch_diameter])  # rotations as arc lengths
+    for i in np.flatnonzero(out["status"] == 0):
+        r = ref[i]
+        scale = np.abs(r.displacement * w).max()
+        np.testing.assert_allclose(out["q"][i] * w, r.displacement * w, rtol=0, atol=1e-8 * scale)
+        np.testing.assert_allclose(out["k"][i], r.stiffness, rtol=0, atol=1e-7 * np.abs(r.stiffness).max())
+
+
+def test_solve_ring_started_at_a_status3_equilibrium_still_reports_status3():
+    """A start that already meets the tolerances (a warm start at the solution) gets the groove-bottom check."""
+    from bearingsim.statics import _kernels as kn
+
+    b = load_bearing("skf-7011-cdga-hc")
+    loads, om = _random_points(3, 60)
+    out = run_batch(b, loads, om, reorder=True)
+    i = int(np.flatnonzero(out["status"] == 3)[0])
+    rows = np.ascontiguousarray(jh.rows_of(b))
+    z = int(rows[0, kn.P_Z])
+    q = np.array(jh.initial_guess(b, jh.Loads(*loads[i])), dtype=float)
+    lam = np.zeros((1, z), dtype=np.int64)
+    xb = np.zeros((1, z, 2))
+    sc = max(1.0, np.abs(loads[i, :3]).max(), 2 * np.abs(loads[i, 3:]).max() / rows[0, kn.P_DM])
+    args = (lam, xb, np.zeros((5, 5)), np.zeros((1, z, 12)), jh.TOL_BALL, jh.TOL_RING, jh.MAXIT_BALL, jh.MAXIT_RING, sc)
+    st, its, _, _ = kn.solve_ring(rows, loads[i], om[i], kn.CONTROL_OUTER, q, *args)
+    assert st == 3 and its > 0
+    st, its, _, _ = kn.solve_ring(rows, loads[i], om[i], kn.CONTROL_OUTER, q, *args)
+    assert st == 3 and its == 0
+
+
+@pytest.mark.parametrize("shape, chunk", [((7,), 3), ((4, 5), 5), ((4, 5), 7), ((25, 20, 20), 1000),
+                                          ((3, 4, 5, 6), 50), ((2, 3), 100)])
+def test_blocks_tile_the_grid_within_the_chunk_size(shape, chunk):
+    seen = np.zeros(shape, dtype=int)
+    for blk in sweep._blocks(shape, chunk):
+        assert len(blk) == len(shape)
+        assert seen[blk].size <= chunk
+        seen[blk] += 1
+    assert (seen == 1).all()
+
+
+@pytest.mark.parametrize("shape", [(5,), (3, 4), (2, 3, 4), (3, 2, 2, 3)])
+def test_snake_order_visits_every_point_once_by_unit_steps(shape):
+    idx = sweep._snake(shape)
+    assert idx.shape == (int(np.prod(shape)), len(shape))
+    assert len({tuple(r) for r in idx}) == len(idx)
+    steps = np.abs(np.diff(idx, axis=0))
+    assert (steps.sum(axis=1) == 1).all()  # consecutive points are grid neighbours
+
+
+def test_map_blocks_spanning_outer_dimensions_equal_small_blocks():
+    """A block over several outer grid indices gives the same map (to the solver tolerance) as 1-D blocks."""
+    kw = dict(fa="1000:3000:3", fr="0:600:3", speed="0:6000:3", workers=1)
+    big = sweep.map_grid("skf-7011-cdga-hc", chunk_points=27, **kw)
+    small = sweep.map_grid("skf-7011-cdga-hc", chunk_points=3, **kw)
+    np.testing.assert_array_equal(big.status.values, small.status.values)
+    k = small.stiffness.values
+    np.testing.assert_allclose(big.stiffness.values, k, rtol=0, atol=1e-7 * np.abs(k).max())

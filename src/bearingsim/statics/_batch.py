@@ -39,46 +39,67 @@ def _scale(loads, dm):
 
 
 @njit(cache=True)
-def _summarise(rows, ballout, out):
-    """Max pressures and contact-angle extremes of the loaded balls → out[6]."""
-    pi_max = 0.0
-    po_max = 0.0
-    ai_min = 1e9
-    ai_max = -1e9
-    ao_min = 1e9
-    ao_max = -1e9
-    for r in range(rows.shape[0]):
-        par = rows[r]
-        z = int(par[kn.P_Z])
-        for j in range(z):
-            bo = ballout[r, j]
-            qi = bo[2]
-            qo = bo[3]
-            if qi > 0.0:
-                pi_max = max(pi_max, par[kn.P_CPI] * qi ** (1.0 / 3.0))
-                ai = math.atan2(bo[8], bo[9])
-                ai_min = min(ai_min, ai)
-                ai_max = max(ai_max, ai)
-            if qo > 0.0:
-                po_max = max(po_max, par[kn.P_CPO] * qo ** (1.0 / 3.0))
-                ao = math.atan2(bo[10], bo[11])
-                ao_min = min(ao_min, ao)
-                ao_max = max(ao_max, ao)
-    if ai_min > ai_max:
-        ai_min = math.nan
-        ai_max = math.nan
-    if ao_min > ao_max:
-        ao_min = math.nan
-        ao_max = math.nan
-    out[0] = pi_max
-    out[1] = po_max
-    out[2] = ai_min
-    out[3] = ai_max
-    out[4] = ao_min
-    out[5] = ao_max
+def _contact_extremes(ballout, r, z, iq, isin, icos, acc):
+    """Largest load and contact-angle extremes of one contact type of row r, merged into acc.
+
+    acc float[3] = (largest load [N], smallest angle [rad], largest angle [rad]); columns iq, isin, icos
+    of ``ballout`` hold the load and sin α, cos α.  The angles atan2(sin α, cos α) are taken only at the
+    balls of extreme tan α when cos α > 0 (atan2 of the ball otherwise): a few atan2 per row, the same numbers.
+    """
+    j_lo = -1
+    j_hi = -1
+    t_lo = 0.0
+    t_hi = 0.0
+    for j in range(z):
+        bo = ballout[r, j]
+        if not bo[iq] > 0.0:
+            continue
+        acc[0] = max(acc[0], bo[iq])
+        if bo[icos] > 0.0:
+            t = bo[isin] / bo[icos]
+            if j_lo < 0 or t < t_lo:
+                t_lo = t
+                j_lo = j
+            if j_hi < 0 or t > t_hi:
+                t_hi = t
+                j_hi = j
+        else:
+            a = math.atan2(bo[isin], bo[icos])
+            acc[1] = min(acc[1], a)
+            acc[2] = max(acc[2], a)
+    if j_lo >= 0:
+        acc[1] = min(acc[1], math.atan2(ballout[r, j_lo, isin], ballout[r, j_lo, icos]))
+        acc[2] = max(acc[2], math.atan2(ballout[r, j_hi, isin], ballout[r, j_hi, icos]))
 
 
 @njit(cache=True)
+def _summarise(rows, ballout, out):
+    """Max pressures and contact-angle extremes of the loaded balls → out[6] (p_max = C_p Q^(1/3) at the
+    largest load of each row; angles by :func:`_contact_extremes`)."""
+    inner = np.empty(3)
+    outer = np.empty(3)
+    pi_max = 0.0
+    po_max = 0.0
+    inner[1] = outer[1] = 1e9
+    inner[2] = outer[2] = -1e9
+    for r in range(rows.shape[0]):
+        par = rows[r]
+        z = int(par[kn.P_Z])
+        inner[0] = 0.0
+        outer[0] = 0.0
+        _contact_extremes(ballout, r, z, 2, 8, 9, inner)
+        _contact_extremes(ballout, r, z, 3, 10, 11, outer)
+        if inner[0] > 0.0:
+            pi_max = max(pi_max, par[kn.P_CPI] * inner[0] ** (1.0 / 3.0))
+        if outer[0] > 0.0:
+            po_max = max(po_max, par[kn.P_CPO] * outer[0] ** (1.0 / 3.0))
+    out[0] = pi_max
+    out[1] = po_max
+    out[2], out[3] = (inner[1], inner[2]) if inner[1] <= inner[2] else (math.nan, math.nan)
+    out[4], out[5] = (outer[1], outer[2]) if outer[1] <= outer[2] else (math.nan, math.nan)
+
+
+@njit(cache=True, nogil=True)
 def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters, resid, summ,
                 tol_ball, tol_ring, maxit_ball, maxit_ring, predictor):
     """Solve every operating point i (loads[i], omega[i]) in order, warm-starting from point i−1;
@@ -89,7 +110,10 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
     one (grid rows), the previous point's deviation from its own tangent prediction.  Ball positions
     start from X + dX/dA ΔA (tangents kept in ``xb``, see :func:`_kernels.ring_assemble`).  Points with
     status 3 (a converged equilibrium outside the model) are valid starts for the next point.  The
-    start only changes the path: every point is converged to the same tolerances.
+    start only changes the path: every point is converged to the same tolerances.  Each point is solved
+    by :func:`_kernels.solve_ring_coupled` (Newton on the ring and ball unknowns together, one ball
+    evaluation per iteration, :func:`_kernels.solve_ring` as its safeguard); ``iters`` counts the
+    iterations of both.
 
     rows : float[nrow, NPAR]; loads : float[n, 5] [N, N·m]; omega : float[n] [rad/s]
     control : kernel control code; q_cold : float[5] cold start [m, rad]
@@ -104,6 +128,11 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
     lam0 = 1 if control == kn.CONTROL_INNER else 0
     lam = np.full((nrow, zmax), lam0, dtype=np.int64)
     xb = np.zeros((nrow, zmax, 8))  # positions and their tangents (ring_assemble's warm start)
+    xs = np.zeros((nrow, zmax, 8))  # workspaces of solve_ring_coupled (no allocation per point)
+    wk = np.zeros(64)
+    wk2 = np.zeros(96)
+    trig = np.zeros((nrow, zmax, 2))  # ball azimuths, once per batch
+    kn.azimuth_table(rows, trig)
     kmat = np.zeros((5, 5))
     ballout = np.zeros((nrow, zmax, 12))
     q = q_cold.copy()
@@ -166,8 +195,8 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
                     tangent = True
                     for k in range(5):
                         dlnow[k] = dl[k]
-        st, it, rn, bconv = kn.solve_ring(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
-                                          tol_ball, tol_ring, maxit_ball, maxit_ring, sc)
+        st, it, rn, bconv = kn.solve_ring_coupled(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
+                                          tol_ball, tol_ring, maxit_ball, maxit_ring, sc, xs, wk, wk2, trig)
         tot = it
         if st == 1 or st == 2:
             # cold start
@@ -175,8 +204,8 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
                 qtry[k] = q_cold[k]
             lam[:, :] = lam0
             xb[:, :, :] = 0.0
-            st, it, rn, bconv = kn.solve_ring(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
-                                              tol_ball, tol_ring, maxit_ball, maxit_ring, sc)
+            st, it, rn, bconv = kn.solve_ring_coupled(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
+                                              tol_ball, tol_ring, maxit_ball, maxit_ring, sc, xs, wk, wk2, trig)
             tot += it
         if st == 0 and not bconv:
             st = 4

@@ -1,7 +1,10 @@
 """Numba kernels of the Jones–Harris quasi-static model (plain float arrays in, floats out).
 
 Orchestration, checks and packaging live in :mod:`bearingsim.statics.jones_harris`;
-this module holds only the per-ball and per-ring arithmetic.
+this module holds only the per-ball and per-ring arithmetic.  Two ring solvers: :func:`solve_ring`
+(Newton on the ring displacement, every ball solved to convergence at each trial) and
+:func:`solve_ring_coupled` (the batch solver: Newton on the ring and ball unknowns together, with
+:func:`solve_ring` as its safeguard).
 
 Model (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3, eqs. 3.22–3.61; seed 000 eqs. 6–16).
 Each row is described by a parameter vector (indices below).  For ball j at azimuth ψ_j,
@@ -351,6 +354,64 @@ def ball_total_derivative(jac, dfa):
 
 
 @njit(cache=True)
+def control_weights(inner_ctrl):
+    """(λ_i, λ_o) of the gyroscopic-moment share for raceway control: inner (1, 1) or outer (0, 2) (Harris)."""
+    if inner_ctrl == 1:
+        return 1.0, 1.0
+    return 0.0, 2.0
+
+
+@njit(cache=True)
+def _ball_row_out(bo, a1, a2, xl, out, g):
+    """One ball's row of the ``ballout`` table (layout in :func:`ring_assemble`): groove-centre offsets
+    (A1, A2) [m], loads, approaches and kinematic terms from the ball solve ``out``, the gyroscopic
+    factor g, and sin/cos of the inner and outer contact angles from the ball position xl [m]."""
+    li = math.sqrt((a1 - xl[0]) ** 2 + (a2 - xl[1]) ** 2)
+    lo = math.sqrt(xl[0] ** 2 + xl[1] ** 2)
+    bo[0] = a1
+    bo[1] = a2
+    bo[2] = out[4]
+    bo[3] = out[5]
+    bo[4] = out[6]
+    bo[5] = out[7]
+    bo[6] = g
+    bo[7] = out[9]
+    bo[8] = (a1 - xl[0]) / li
+    bo[9] = (a2 - xl[1]) / li
+    bo[10] = xl[0] / lo
+    bo[11] = xl[1] / lo
+
+
+@njit(cache=True)
+def _groove_offsets(par, s, ric, xg, cp, sp, qv, ta1, ta2, gw):
+    """(A1, A2) [m] of a ball at azimuth ψ (cp, sp = cos ψ, sin ψ) for ring displacement qv, and their
+    gradients: ta1, ta2 ← d(A1)/dq, d(A2)/dq (small rotations about y and z of the inner groove-centre
+    point at axial position xg, radius ric, row sign s), gw ← the ring's rotation about the ball's
+    tangential axis per unit q (maps a moment in the ball's plane onto the ring tilts)."""
+    ta1[0] = s
+    ta1[1] = 0.0
+    ta1[2] = 0.0
+    ta1[3] = s * ric * sp
+    ta1[4] = -s * ric * cp
+    ta2[0] = 0.0
+    ta2[1] = cp
+    ta2[2] = sp
+    ta2[3] = -xg * sp
+    ta2[4] = xg * cp
+    gw[0] = 0.0
+    gw[1] = 0.0
+    gw[2] = 0.0
+    gw[3] = s * sp
+    gw[4] = -s * cp
+    a1 = par[P_DX0] + par[P_AXOFF]
+    a2 = par[P_DR0]
+    for k in range(5):
+        a1 += ta1[k] * qv[k]
+        a2 += ta2[k] * qv[k]
+    return a1, a2
+
+
+@njit(cache=True)
 def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, ballout, tol, maxit):
     """Solve every ball for the ring displacement qv and assemble residual and stiffness.
 
@@ -403,26 +464,7 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
             cp = math.cos(psi)
             sp = math.sin(psi)
             # d(A1)/dq and d(A2)/dq (small rotations about y and z of the groove-centre point)
-            ta1[0] = s
-            ta1[1] = 0.0
-            ta1[2] = 0.0
-            ta1[3] = s * ric * sp
-            ta1[4] = -s * ric * cp
-            ta2[0] = 0.0
-            ta2[1] = cp
-            ta2[2] = sp
-            ta2[3] = -xg * sp
-            ta2[4] = xg * cp
-            gw[0] = 0.0
-            gw[1] = 0.0
-            gw[2] = 0.0
-            gw[3] = s * sp
-            gw[4] = -s * cp
-            a1 = par[P_DX0] + par[P_AXOFF]
-            a2 = par[P_DR0]
-            for k in range(5):
-                a1 += ta1[k] * qv[k]
-                a2 += ta2[k] * qv[k]
+            a1, a2 = _groove_offsets(par, s, ric, xg, cp, sp, qv, ta1, ta2, gw)
             xl[0] = xb[r, j, 0]
             xl[1] = xb[r, j, 1]
             if ext_pred:
@@ -433,12 +475,7 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
                 xl[1] += xb[r, j, 6] * da1 + xb[r, j, 7] * da2
             for _pass in range(4):
                 inner_ctrl = lam_state[r, j]
-                if inner_ctrl == 1:
-                    lam_i = 1.0
-                    lam_o = 1.0
-                else:
-                    lam_i = 0.0
-                    lam_o = 2.0
+                lam_i, lam_o = control_weights(inner_ctrl)
                 conv, its = ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, xl, out, jac, tol, maxit)
                 if control != CONTROL_AUTO or omega == 0.0:
                     break
@@ -495,21 +532,7 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
                         dgq = dfa[2, 0] * ta1[k] + dfa[2, 1] * ta2[k]
                         for m in range(5):
                             kmat[m, k] += ta1[m] * dfxq + ta2[m] * dfrq - lam_i * par[P_GRI] * gw[m] * dgq
-            bo = ballout[r, j]
-            li = math.sqrt((a1 - xl[0]) ** 2 + (a2 - xl[1]) ** 2)
-            lo = math.sqrt(xl[0] ** 2 + xl[1] ** 2)
-            bo[0] = a1
-            bo[1] = a2
-            bo[2] = out[4]
-            bo[3] = out[5]
-            bo[4] = out[6]
-            bo[5] = out[7]
-            bo[6] = g
-            bo[7] = out[9]
-            bo[8] = (a1 - xl[0]) / li
-            bo[9] = (a2 - xl[1]) / li
-            bo[10] = xl[0] / lo
-            bo[11] = xl[1] / lo
+            _ball_row_out(ballout[r, j], a1, a2, xl, out, g)
     return allconv, maxits
 
 
@@ -589,6 +612,9 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
     it = 0
     status = 1
     if rn <= tol_ring * load_scale:
+        # the start is already an equilibrium: it gets the same validity check as any other
+        if contact_beyond_groove_bottom(rows, ballout):
+            return 3, 0, rn, bconv
         return 0, 0, rn, bconv
     # displacement scale for step limiting: a fraction of the groove-centre distance
     amax = 0.0
@@ -679,3 +705,241 @@ def contact_beyond_groove_bottom(rows, ballout):
             if bo[2] > 0.0 and (bo[8] < 0.0 or bo[10] < 0.0):
                 return True
     return False
+
+
+@njit(cache=True)
+def azimuth_table(rows, trig):
+    """trig[r, j] ← (cos ψ_j, sin ψ_j), ψ_j = ψ₀ + 2π j / Z: the ball azimuths of every row, computed
+    once per batch instead of once per ball evaluation (same expression as :func:`ring_assemble`)."""
+    for r in range(rows.shape[0]):
+        par = rows[r]
+        z = int(par[P_Z])
+        for j in range(z):
+            psi = par[P_PSI0] + 2.0 * math.pi * j / z
+            trig[r, j, 0] = math.cos(psi)
+            trig[r, j, 1] = math.sin(psi)
+
+
+@njit(cache=True)
+def ring_assemble_coupled(rows, qv, omega, lam_state, xb, loads, res, resc, kmat, ballout, tol, maxit, out, jac,
+                          dfa, xl, ta1, ta2, gw, trig):
+    """One Newton pass on the coupled ring–ball system (q and every ball's X₁, X₂): one ball evaluation each.
+
+    :func:`ring_assemble` solves every ball's balance R(X, A) = 0 to convergence at each trial ring
+    position.  Here each ball is evaluated once, at its tangent prediction X* = X + (dX/dA) ΔA (xb
+    columns 2–7), and its force on the ring is also given corrected to first order for the ball
+    residual left at X* (static condensation of the ball unknowns):
+
+        F_c = F(X*) − ∂F/∂X (∂R/∂X)⁻¹ R(X*),    X ← X* − (∂R/∂X)⁻¹ R(X*),
+
+    so that a ring step K⁻¹ res_c with the condensed stiffness K (the same as :func:`ring_assemble`'s,
+    :func:`ball_total_derivative`) is Newton's step on all unknowns together (Harris & Kotzalas 2007
+    vol. 2 §3 equations, solved as one system).  Balls without both contacts loaded, or with a
+    singular 2x2 balance, are solved in full by :func:`ball_solve` instead.
+
+    res ← loads + ball forces at X* (the true residual of the current iterate); resc ← the same
+    with the condensed forces; kmat ← stiffness; ballout ← per-ball table at X* (as ring_assemble).
+    Returns True when every ball meets the ball tolerance at X* (|R| ≤ tol (F_c + 1) [N] or a Newton
+    correction ≤ tol D, the criteria of :func:`ball_solve`).  ``xb`` float[nrow, zmax, 8] is updated
+    to the corrected positions and their tangents; ``omega`` > 0 and ``lam_state`` fixed (outer or
+    inner control).  out, jac, dfa, xl, ta1, ta2, gw: workspaces (float[10], [5,4], [3,2], [2], [5]x3);
+    trig : float[nrow, zmax, 2] cos ψ_j, sin ψ_j of the ball azimuths (:func:`azimuth_table`).
+    """
+    nrow = rows.shape[0]
+    for k in range(5):
+        res[k] = loads[k]
+        resc[k] = loads[k]
+        for m in range(5):
+            kmat[k, m] = 0.0
+    w2 = omega * omega
+    allconv = True
+    for r in range(nrow):
+        par = rows[r]
+        z = int(par[P_Z])
+        s = par[P_SIGN]
+        ric = par[P_RIC]
+        xg = par[P_XROW] + s * (par[P_XIC] + par[P_AXOFF])
+        d = par[P_D]
+        dm = par[P_DM]
+        cg = par[P_JB] * w2 * dm / (d * d)
+        cf = 0.5 * par[P_MASS] * dm * w2
+        ri = par[P_RI]
+        ro = par[P_RO]
+        ki = par[P_KI]
+        ko = par[P_KO]
+        gri = par[P_GRI]
+        gam = d / dm
+        for j in range(z):
+            cp = trig[r, j, 0]
+            sp = trig[r, j, 1]
+            a1, a2 = _groove_offsets(par, s, ric, xg, cp, sp, qv, ta1, ta2, gw)
+            xbr = xb[r, j]
+            da1 = a1 - xbr[2]
+            da2 = a2 - xbr[3]
+            xl[0] = xbr[0] + xbr[4] * da1 + xbr[5] * da2
+            xl[1] = xbr[1] + xbr[6] * da1 + xbr[7] * da2
+            inner_ctrl = lam_state[r, j]
+            lam_i, lam_o = control_weights(inner_ctrl)
+            single = False
+            det = 0.0
+            if xl[0] * xl[0] + xl[1] * xl[1] > ro * ro:
+                ball_eval(xl[0], xl[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+                det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
+                single = out[4] > 0.0 and out[5] > 0.0 and det != 0.0 and math.isfinite(det)
+            e0 = 0.0
+            e1 = 0.0
+            if single:
+                e0 = (jac[1, 1] * out[0] - jac[0, 1] * out[1]) / det
+                e1 = (-jac[1, 0] * out[0] + jac[0, 0] * out[1]) / det
+                if not (math.hypot(out[0], out[1]) <= tol * (cf + 1.0) or math.hypot(e0, e1) <= tol * d):
+                    allconv = False
+            else:
+                conv, _its = ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, xl, out, jac, tol, maxit)
+                if not conv:
+                    allconv = False
+                det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
+            fx = out[2]
+            fr = out[3]
+            g = out[8]
+            fxc = fx - (jac[2, 0] * e0 + jac[2, 1] * e1)
+            frc = fr - (jac[3, 0] * e0 + jac[3, 1] * e1)
+            gc = g - (jac[4, 0] * e0 + jac[4, 1] * e1)
+            mg = lam_i * gri
+            for k in range(5):
+                res[k] -= fx * ta1[k] + fr * ta2[k] - mg * g * gw[k]
+                resc[k] -= fxc * ta1[k] + frc * ta2[k] - mg * gc * gw[k]
+            okdet = det != 0.0 and math.isfinite(det)
+            if (out[4] > 0.0 or out[5] > 0.0) and okdet:
+                ball_total_derivative(jac, dfa)
+                for k in range(5):
+                    dfxq = dfa[0, 0] * ta1[k] + dfa[0, 1] * ta2[k]
+                    dfrq = dfa[1, 0] * ta1[k] + dfa[1, 1] * ta2[k]
+                    dgq = mg * (dfa[2, 0] * ta1[k] + dfa[2, 1] * ta2[k])
+                    for m in range(5):
+                        kmat[m, k] += ta1[m] * dfxq + ta2[m] * dfrq - gw[m] * dgq
+            _ball_row_out(ballout[r, j], a1, a2, xl, out, g)
+            xbr[0] = xl[0] - e0
+            xbr[1] = xl[1] - e1
+            xbr[2] = a1
+            xbr[3] = a2
+            if okdet:
+                xbr[4] = -(jac[1, 1] * jac[0, 2] - jac[0, 1] * jac[1, 2]) / det
+                xbr[5] = -(jac[1, 1] * jac[0, 3] - jac[0, 1] * jac[1, 3]) / det
+                xbr[6] = -(-jac[1, 0] * jac[0, 2] + jac[0, 0] * jac[1, 2]) / det
+                xbr[7] = -(-jac[1, 0] * jac[0, 3] + jac[0, 0] * jac[1, 3]) / det
+            else:
+                xbr[4] = 0.0
+                xbr[5] = 0.0
+                xbr[6] = 0.0
+                xbr[7] = 0.0
+    return allconv
+
+
+@njit(cache=True)
+def _scaled_norm(res, dm):
+    rn = 0.0
+    for k in range(5):
+        rn = max(rn, abs(res[k]) * (1.0 if k < 3 else 2.0 / dm))
+    return rn
+
+
+
+
+#: trials of the coupled step (full, then halved) before handing over to solve_ring
+NLS = 4
+
+
+@njit(cache=True)
+def solve_ring_coupled(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball, tol_ring,
+                       maxit_ball, maxit_ring, load_scale, xs, wk, wk2, trig):
+    """Ring equilibrium by Newton on the coupled ring–ball system, :func:`solve_ring` as the safeguard.
+
+    Used when ``omega`` > 0 and the raceway control is fixed (outer or inner; at rest the ball solve
+    is closed form and :func:`solve_ring` is used).  Each coupled step K⁻¹ res_c is limited as in
+    :func:`solve_ring` and halved up to NLS − 1 times until the condensed residual decreases; when it
+    does not, the point continues with :func:`solve_ring` from the last accepted state.  A point is
+    converged when, at the current iterate, every ball meets the ball tolerance and the ring residual
+    (uncondensed) meets the ring tolerance — the criteria of :func:`solve_ring` — and then gets the
+    groove-bottom check, so the status codes keep their meaning (0, 1, 2, 3).  Same equations
+    (module docstring; seed 000 eqs. 6–13), fewer ball evaluations: one per ball and iteration.
+    xs : float[nrow, zmax, 8] workspace (saved ball state); wk : float[≥ 47]; wk2 : float[≥ 81] workspaces;
+    trig : float[nrow, zmax, 2] from :func:`azimuth_table`.
+    Returns (status, iterations, residual, ball_converged) as :func:`solve_ring`.
+    """
+    if omega == 0.0 or control == CONTROL_AUTO or xb.shape[2] < 8:
+        return solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball, tol_ring,
+                          maxit_ball, maxit_ring, load_scale)
+    res = wk[0:5]
+    resc = wk[5:10]
+    dq = wk[10:15]
+    qs = wk[15:20]
+    out = wk[20:30]
+    xl = wk[30:32]
+    ta1 = wk[32:37]
+    ta2 = wk[37:42]
+    gw = wk[42:47]
+    kk = wk2[0:25].reshape((5, 5))
+    jac = wk2[25:45].reshape((5, 4))
+    dfa = wk2[45:51].reshape((3, 2))
+    wsol = wk2[51:81].reshape((5, 6))
+    dm = rows[0, P_DM]
+    amax = 0.0
+    for r in range(rows.shape[0]):
+        amax = max(amax, rows[r, P_RI] + rows[r, P_RO])
+    bconv = ring_assemble_coupled(rows, qv, omega, lam_state, xb, loads, res, resc, kmat, ballout, tol_ball,
+                                  maxit_ball, out, jac, dfa, xl, ta1, ta2, gw, trig)
+    rn = _scaled_norm(res, dm)
+    rc = _scaled_norm(resc, dm)
+    it = 0
+    while True:
+        if bconv and rn <= tol_ring * load_scale:
+            if contact_beyond_groove_bottom(rows, ballout):
+                return 3, it, rn, bconv
+            return 0, it, rn, bconv
+        if it >= maxit_ring:
+            break
+        ok = True
+        for k in range(5):
+            if not (kmat[k, k] > 0.0) or not math.isfinite(kmat[k, k]):
+                ok = False
+        if not ok or not solve_small(kmat, resc, dq, wsol):
+            break
+        smax = 0.0
+        for k in range(5):
+            smax = max(smax, abs(dq[k]) * (1.0 if k < 3 else dm / 2.0))
+        if smax > 0.1 * amax:
+            # the step limit of solve_ring
+            for k in range(5):
+                dq[k] *= 0.1 * amax / smax
+        for k in range(5):
+            qs[k] = qv[k]
+        xs[:, :, :] = xb
+        lam = 1.0
+        accepted = False
+        for _ls in range(NLS):
+            for k in range(5):
+                qv[k] = qs[k] + lam * dq[k]
+            bc = ring_assemble_coupled(rows, qv, omega, lam_state, xb, loads, res, resc, kk, ballout, tol_ball,
+                                       maxit_ball, out, jac, dfa, xl, ta1, ta2, gw, trig)
+            rnt = _scaled_norm(res, dm)
+            rct = _scaled_norm(resc, dm)
+            if rct < rc or (bc and rnt <= tol_ring * load_scale):
+                accepted = True
+                break
+            lam *= 0.5
+            xb[:, :, :] = xs
+        if not accepted:
+            # no progress: back to the last accepted state, finish with the safeguarded solver
+            for k in range(5):
+                qv[k] = qs[k]
+            break
+        it += 1
+        bconv = bc
+        rn = rnt
+        rc = rct
+        for k in range(5):
+            for m in range(5):
+                kmat[k, m] = kk[k, m]
+    st, it2, rn2, bc2 = solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball,
+                                   tol_ring, maxit_ball, maxit_ring, load_scale)
+    return st, it + it2, rn2, bc2
