@@ -39,7 +39,7 @@ class Stepper:
     tol: float = 1e-6
     h_min: float = 1e-13
     method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit per ball, for stiff traction)
-    jac_every: int = 20
+    jac_every: int = 80  #: steps between Jacobian refreshes (also refreshed at every call and after two rejections)
     max_steps_per_interval: int = 10_000_000
     steps: int = 0
     rejected: int = 0
