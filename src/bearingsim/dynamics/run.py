@@ -262,6 +262,11 @@ class Results:
 
     BLOCK = 20_000  #: rows read at a time from an output file
 
+    def read(self, *names: str) -> list[np.ndarray]:
+        """The given output variables (SI arrays), read from the file without loading the others."""
+        with self._columns() as read:
+            return [np.asarray(read(n)) for n in names]
+
     @contextmanager
     def _columns(self):
         """Yield read(name, start=0, stop=None) -> rows of one output variable, from memory or the file."""
@@ -282,8 +287,9 @@ class Results:
         the falling crossing minus that at the rising one (linear interpolation between samples);
         positive when the tilt lags the moment.  Seed 001 evaluates it at 0.3 kN·m.
         """
-        m = self.data["applied_load"][:, load] - moment
-        g = self.data["inner_ring_displacement"][:, dof]
+        with self._columns() as read:  # only the two variables, not the whole run
+            m = read("applied_load")[:, load] - moment
+            g = read("inner_ring_displacement")[:, dof]
         out = []
         rising = math.nan
         for i in range(1, len(m)):

@@ -186,12 +186,10 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
             res = simulate(case, out=out, progress=progress, console=console)
             wall = time.perf_counter() - t0
             widths = res.loop_widths(moment)
-            t = res.data["time"]
+            t, load, disp = res.read("time", "applied_load", "inner_ring_displacement")
             last = t >= t[-1] - 1.0 / f
             cells.append(HysteresisCell(float(v), float(f), widths[1:] if len(widths) > 1 else widths[:0], wall,
-                                        int(res.summary.get("steps", 0)),
-                                        res.data["applied_load"][last, 4].copy(),
-                                        res.data["inner_ring_displacement"][last, 4].copy()))
+                                        int(res.summary.get("steps", 0)), load[last, 4].copy(), disp[last, 4].copy()))
     return HysteresisStudy(cells, moment)
 
 
