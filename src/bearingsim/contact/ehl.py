@@ -151,6 +151,12 @@ def regime_code(U, G, W, rx, ry):
     if U <= 0.0:
         return PE
     h_ir, h_pr, h_ie, h_pe, gv, ge = regime_films(U, G, W, rx, ry)
+    return select_regime(h_ir, h_pr, h_ie, h_pe)
+
+
+@njit(cache=True)
+def select_regime(h_ir, h_pr, h_ie, h_pe):
+    """Regime code from the four regime films ĥ [-] (selection rule of the module docstring, not confirmed)."""
     if h_ir >= h_pr and h_ir >= h_ie:
         return IR
     if h_ie >= h_ir:

@@ -273,12 +273,7 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
         h_pr = 1.66 * math.exp((2.0 / 3.0) * ln_gv) * fk_min
         h_ie = 8.70 * math.exp(0.67 * ln_ge) * (1.0 - 0.85 * math.exp(-0.31 * k_hd))
         h_pe = 3.42 * math.exp(0.49 * ln_gv + 0.17 * ln_ge) * fk_min
-        if h_ir >= h_pr and h_ir >= h_ie:
-            reg = 0
-        elif h_ie >= h_ir:
-            reg = 3 if h_pe >= h_ie else 2
-        else:
-            reg = 3 if h_pe <= h_pr else 1
+        reg = ehl.select_regime(h_ir, h_pr, h_ie, h_pe)
     theta = 0.0
     if thermal:
         theta = hc / (12.0 * lub[L_KOIL])
@@ -758,16 +753,7 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
         w = 1.0
     else:
         w = traction.mixed_weight.py_func(hmin / sigma, lub[L_LAM1], lub[L_LAM2]) if sigma > 0 else 1.0
-    reg = 3
-    if u0 > 0:
-        U, G, W = eta0 * u0 / (e_eff * rx), alpha * e_eff, q / (e_eff * rx * rx)
-        h_ir, h_pr, h_ie, h_pe, _, _ = ehl.regime_films.py_func(U, G, W, rx, ry)
-        if h_ir >= h_pr and h_ir >= h_ie:
-            reg = 0
-        elif h_ie >= h_ir:
-            reg = 3 if h_pe >= h_ie else 2
-        else:
-            reg = 3 if h_pe <= h_pr else 1
+    reg = ehl.regime_code.py_func(eta0 * u0 / (e_eff * rx), alpha * e_eff, q / (e_eff * rx * rx), rx, ry)
     theta = 0.0
     if lub[L_THERMAL] != 0:
         theta = hc / (12 * lub[L_KOIL]) + (0.5 * _FLASH * math.sqrt(2 * b / u0) / lub[L_EFFUS] if u0 > 0 else 0.0)

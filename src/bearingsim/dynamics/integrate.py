@@ -106,6 +106,14 @@ def _error_norm(e, y, ynew, atol, rtol, info):
 
 
 @njit
+def _clip_step(t, h, t_end):
+    """(step [s], last) with the step shortened to land exactly on t_end [s]; last is True when it does."""
+    if t + h >= t_end:
+        return t_end - t, True
+    return h, False
+
+
+@njit
 def advance(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
     """Integrate y' = fun(t, y) from t to t_end in place with DOPRI5 and error control.
 
@@ -139,11 +147,7 @@ def advance(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
         if nacc + nrej >= max_steps:
             status = MAX_STEPS
             break
-        last = False
-        hs = h
-        if t + h >= t_end:
-            hs = t_end - t
-            last = True
+        hs, last = _clip_step(t, h, t_end)
         _stages(fun, args, t, y, hs, k1, k2, k3, k4, k5, k6, k7, ytmp, ynew)
         for i in range(n):
             evec[i] = hs * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
@@ -250,11 +254,7 @@ def advance_ros2(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, 
         if nacc + nrej >= max_steps:
             status = MAX_STEPS
             break
-        last = False
-        hs = h
-        if t + h >= t_end:
-            hs = t_end - t
-            last = True
+        hs, last = _clip_step(t, h, t_end)
         fun(t, y, f0, args)
         if need_jac or since >= jac_every:
             _block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
@@ -485,11 +485,7 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
         if nacc + nrej >= max_steps:
             status = MAX_STEPS
             break
-        last = False
-        hs = h
-        if t + h >= t_end:
-            hs = t_end - t
-            last = True
+        hs, last = _clip_step(t, h, t_end)
         if not have_f0:
             fun(t, y, f0, args)
             have_f0 = True
