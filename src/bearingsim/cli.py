@@ -14,7 +14,8 @@ from typing import Optional
 
 import typer
 
-from .clitools import parse_loads
+from .clitools import (BearingArg, ControlOpt, FaOpt, FrOpt, FzOpt, MomentOpt, MyOpt, SpeedOpt,  # noqa: F401
+                       parse_loads)
 from .errors import BearingSimError, InputError
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
@@ -47,14 +48,14 @@ def catalog():
 
 @app.command()
 def static(
-    bearing: str = typer.Argument(..., help="Catalogue name or TOML file"),
-    fa: Optional[str] = typer.Option(None, "--fa", help='Axial load along +x, e.g. "1000 N"'),
-    fr: Optional[str] = typer.Option(None, "--fr", help="Radial load along +y"),
-    fz: Optional[str] = typer.Option(None, "--fz", help="Radial load along +z"),
-    moment: Optional[str] = typer.Option(None, "--moment", help='Moment about z, e.g. "1 N*m"'),
-    my: Optional[str] = typer.Option(None, "--my", help="Moment about y"),
-    speed: Optional[str] = typer.Option(None, "--speed", help='Inner-ring speed, e.g. "11200 rpm"'),
-    control: str = typer.Option("outer", "--control", help="Raceway control: outer, inner or auto"),
+    bearing: BearingArg,
+    fa: FaOpt = None,
+    fr: FrOpt = None,
+    fz: FzOpt = None,
+    moment: MomentOpt = None,
+    my: MyOpt = None,
+    speed: SpeedOpt = None,
+    control: ControlOpt = "outer",
     as_json: bool = typer.Option(False, "--json", help="Print one JSON object in SI units"),
 ):
     """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment)."""

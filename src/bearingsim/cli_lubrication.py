@@ -14,18 +14,19 @@ from typing import Optional
 
 import typer
 
-from .clitools import parse_loads
+from .clitools import (BearingArg, ControlOpt, FaOpt, FrOpt, FzOpt, MomentOpt, MyOpt, SpeedOpt,  # noqa: F401
+                       parse_loads)
 
 
 def lubrication(
-    bearing: str = typer.Argument(..., help="Catalogue name or TOML file"),
-    fa: Optional[str] = typer.Option(None, "--fa", help='Axial load along +x, e.g. "1000 N"'),
-    fr: Optional[str] = typer.Option(None, "--fr", help="Radial load along +y"),
-    fz: Optional[str] = typer.Option(None, "--fz", help="Radial load along +z"),
-    moment: Optional[str] = typer.Option(None, "--moment", help='Moment about z, e.g. "1 N*m"'),
-    my: Optional[str] = typer.Option(None, "--my", help="Moment about y"),
-    speed: Optional[str] = typer.Option(None, "--speed", help='Inner-ring speed, e.g. "3000 rpm"'),
-    control: str = typer.Option("outer", "--control", help="Raceway control: outer, inner or auto"),
+    bearing: BearingArg,
+    fa: FaOpt = None,
+    fr: FrOpt = None,
+    fz: FzOpt = None,
+    moment: MomentOpt = None,
+    my: MyOpt = None,
+    speed: SpeedOpt = None,
+    control: ControlOpt = "outer",
     lubricant: str = typer.Option("iso-vg-68", "--lubricant", help="Library name (bearingsim lubricants) or TOML"),
     temperature: str = typer.Option("60 degC", "--temperature", help='Oil inlet temperature, e.g. "60 degC"'),
     roughness: str = typer.Option("0.1 um", "--roughness", help='Composite rms roughness, e.g. "0.05 um"'),

@@ -2,6 +2,21 @@
 
 from __future__ import annotations
 
+from typing import Annotated, Optional
+
+import typer
+
+# Options shared by the commands that take one operating point (static, lubrication); strings with units,
+# bare numbers in N, N·m and rpm (parse_loads).
+BearingArg = Annotated[str, typer.Argument(help="Catalogue name or TOML file")]
+FaOpt = Annotated[Optional[str], typer.Option("--fa", help='Axial load along +x, e.g. "1000 N"')]
+FrOpt = Annotated[Optional[str], typer.Option("--fr", help="Radial load along +y")]
+FzOpt = Annotated[Optional[str], typer.Option("--fz", help="Radial load along +z")]
+MomentOpt = Annotated[Optional[str], typer.Option("--moment", help='Moment about z, e.g. "1 N*m"')]
+MyOpt = Annotated[Optional[str], typer.Option("--my", help="Moment about y")]
+SpeedOpt = Annotated[Optional[str], typer.Option("--speed", help='Inner-ring speed, e.g. "11200 rpm"')]
+ControlOpt = Annotated[str, typer.Option("--control", help="Raceway control: outer, inner or auto")]
+
 
 def make_console(stderr: bool = False):
     """A rich Console; 160 columns wide when the output is not a terminal (pipes, files, CI logs),
