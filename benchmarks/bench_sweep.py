@@ -2,13 +2,14 @@
 
     python benchmarks/bench_sweep.py            # all
     python benchmarks/bench_sweep.py --quick    # skip the 1,000,000-point map
+    python benchmarks/bench_sweep.py --dask     # only Dask 2 workers vs 1 (with the machine control)
 
 Figures: operating points per second on one core (batch kernel, warm starts) for the SKF 7011 grid
 with inertia (41 speeds x 9 axial loads), a 10,000-point random combined-load set, and the hub unit
 (wall and CPU-time rates); map_grid in-process and with 1 and 2 pre-warmed Dask workers on two
 10,000-point grids (the 7011 combined-load grid at 3000 rpm, and the same number of dearer points of
-the 7011 DB pair over speed), with a control of the machine's parallel efficiency; time and peak memory
-of a 1,000,000-point map streamed to netCDF.
+the 7011 DB pair over speed), beside the machine's own two-process speed-up measured in the same
+rounds; time and peak memory of a 1,000,000-point map streamed to netCDF.
 """
 
 from __future__ import annotations
@@ -46,26 +47,81 @@ def cpu():
     return f"[CPU time: {CPU_RATE[0]:,.0f} points/s]"
 
 
-def _spin(n):
-    s = 0
-    for i in range(n):
-        s += i * i
-    return s
+CHUNK = 2400  # points per block: 5 blocks (4 x 2,400 + 400) for the 10,000-point grids
+#: the 10,000-point grids of the Dask comparison: the cheapest points (one 7011 at one speed) and dearer
+#: ones (the preloaded DB pair, 2 x 21 balls, over speed)
+GRIDS = (("7011, 25 Fa x 20 Fr x 20 M at 3000 rpm", "skf-7011-cdga-hc",
+          dict(fa="500:5000:25", fr="0:2000:20", moment="-20:20:20", speed="3000", chunk_points=CHUNK)),
+         ("7011 DB pair, 25 Fa x 20 Fr x 20 speeds", "skf-7011-cdga-hc-db",
+          dict(fa="500:5000:25", fr="0:2000:20", speed="1000:11200:20", chunk_points=CHUNK)))
 
 
-def machine_parallel_efficiency() -> float:
-    """Control: speed-up of two pure-Python tasks in two processes (2.0 on two idle cores)."""
+def _serial_map(name, kw):
+    """One in-process map in a plain worker process; returns its wall time [s]."""
+    from bearingsim.sweep import map_grid
+
+    t = time.perf_counter()
+    map_grid(name, workers=1, **kw)
+    return time.perf_counter() - t
+
+
+def _quartiles(x):
+    q1, q2, q3 = np.percentile(x, [25, 50, 75])
+    return f"{q2:.2f} x (quartiles {q1:.2f}-{q3:.2f})"
+
+
+def dask_scaling(rounds: int = 9):
+    """Dask 2 workers vs 1 worker on 10,000-point grids, with the machine's own ceiling measured alongside.
+
+    This machine's two vCPUs are shared: the same map alone takes 0.18-0.25 s from one minute to the
+    next, and two independent processes scale by 1.6-2.1.  So every round times, back to back, (a) the
+    control: one map alone, then two maps at once in two plain processes (no Dask; speed-up =
+    2 t_one / t_two, the most two cores give this work right now), (b) the map on 1 Dask worker and (c)
+    on 2; the figures are the medians of the per-round ratios.  Two kinds of LocalCluster are measured:
+    one process per worker (Dask's default for processes=True) and one thread per worker in this process
+    (the batch kernel releases the GIL, so threads compute in parallel and results do not cross a
+    socket).  Clusters are started and pre-warmed (client.run(warm_up)) before timing; the main process
+    hosts the scheduler and assembles the Dataset, as a user's session would.
+    """
     from concurrent.futures import ProcessPoolExecutor
 
-    with ProcessPoolExecutor(2) as ex:
-        list(ex.map(_spin, [10, 10]))
-        t = time.perf_counter()
-        list(ex.map(_spin, [4_000_000]))
-        t1 = time.perf_counter() - t
-        t = time.perf_counter()
-        list(ex.map(_spin, [4_000_000, 4_000_000]))
-        t2 = time.perf_counter() - t
-    return 2 * t1 / t2
+    from distributed import Client, LocalCluster
+
+    from bearingsim.io import load_bearing
+    from bearingsim.sweep import map_grid, warm_up
+
+    print(f"Dask 2 workers vs 1 worker, 10,000-point grids, {rounds} interleaved rounds (medians of per-round "
+          "ratios; control = two plain processes each running the map, vs one):")
+    with ProcessPoolExecutor(2) as pool:
+        for label, name, kw in GRIDS:
+            brg = load_bearing(name)
+            ref = map_grid(brg, workers=1, **kw)
+            list(pool.map(_serial_map, [name] * 2, [kw] * 2))  # imports and kernels loaded
+            for kind, processes in (("a process per worker", True), ("a thread per worker", False)):
+                with LocalCluster(n_workers=1, threads_per_worker=1, processes=processes,
+                                  dashboard_address=None) as cl1, Client(cl1) as c1, \
+                        LocalCluster(n_workers=2, threads_per_worker=1, processes=processes,
+                                     dashboard_address=None) as cl2, Client(cl2) as c2:
+                    for client in (c1, c2):
+                        client.run(warm_up)
+                        map_grid(brg, scheduler=client, **kw)  # first map: connections and imports
+                    ctrl, dsk, walls = [], [], {1: [], 2: []}
+                    same = True
+                    for _ in range(rounds):
+                        t_one = pool.submit(_serial_map, name, kw).result()
+                        t_two = max(pool.map(_serial_map, [name] * 2, [kw] * 2))
+                        ctrl.append(2 * t_one / t_two)
+                        for nw, client in ((1, c1), (2, c2)):
+                            t = time.perf_counter()
+                            ds = map_grid(brg, scheduler=client, **kw)
+                            walls[nw].append(time.perf_counter() - t)
+                            same = same and all(np.array_equal(ref[v].values, ds[v].values) for v in ref.data_vars)
+                        dsk.append(walls[1][-1] / walls[2][-1])
+                    eff = np.array(dsk) / np.array(ctrl)
+                    print(f"  {label}; {kind}: 1 worker {10000 / np.median(walls[1]):,.0f} points/s, 2 workers "
+                          f"{10000 / np.median(walls[2]):,.0f} points/s (medians)")
+                    print(f"     speed-up 2/1 workers {_quartiles(dsk)}; control {_quartiles(ctrl)}; "
+                          f"Dask / control {_quartiles(eff)}; identical to serial: {same}")
 
 
 def main(quick=False):  # noqa: C901
@@ -120,76 +176,19 @@ def main(quick=False):  # noqa: C901
     r, out = rate(lambda: run_batch(hub, loads[sel], om[sel]), int(sel.sum()))
     print(f"hub unit at rest, 121 moments, 1 core: {r:,.0f} points/s (converged {out['converged'].mean():.1%}) {cpu()}")
 
-    # 4. map_grid: in-process vs Dask LocalCluster with 1 and 2 workers, 10,000-point grid
-    from distributed import Client, LocalCluster
+    # 4. map_grid in-process, then Dask with 1 and 2 workers on 10,000-point grids
+    from bearingsim.sweep import map_grid
 
-    from bearingsim.sweep import _blocks, map_grid, warm_up
-
-    print(f"control: two pure-Python tasks on two processes run {machine_parallel_efficiency():.2f} x faster "
-          "than one (2.0 on two idle cores; less when other jobs share the machine)")
-    # 10,000 combined-load points (25 Fa x 20 Fr x 20 M at 3000 rpm) in 5 blocks (4 x 2,400 + 400 points,
-    # 35-55 ms each): few tasks, because the ~5 ms of scheduler/client CPU per task on the main process is
-    # taken from the workers on a 2-core machine, and about even shares for 2 workers (the dearest block,
-    # low Fa with many status-3 points, first; the small one last)
-    chunk = 2400
-    kw = dict(fa="500:5000:25", fr="0:2000:20", moment="-20:20:20", speed="3000", chunk_points=chunk)
-    nblk = len(_blocks((25, 20, 20), chunk))
+    kw = dict(fa="500:5000:25", fr="0:2000:20", moment="-20:20:20", speed="3000", chunk_points=CHUNK)
     map_grid(b7011, workers=1, **kw)  # imports (xarray) and kernels loaded before timing
     t = time.perf_counter()
     c = time.process_time()
     ser = map_grid(b7011, workers=1, **kw)
     t_ser = time.perf_counter() - t
     c_ser = time.process_time() - c
-    print(f"map_grid 10,000 combined-load points in-process ({nblk} blocks): {10000 / t_ser:,.0f} points/s "
+    print(f"map_grid 10,000 combined-load points in-process: {10000 / t_ser:,.0f} points/s "
           f"[CPU time: {10000 / c_ser:,.0f} points/s] (converged {float(ser.converged.mean()):.1%})")
-    print("Dask: wall time of map_grid(scheduler=client) on LocalClusters of 1 and 2 single-threaded worker "
-          "processes, started and pre-warmed before timing (client.run(warm_up) loads the compiled kernels in "
-          "every worker); results gathered into the in-memory Dataset by the main process (which also hosts the "
-          "scheduler); runs alternate between the two clusters, 5 runs each")
-
-    def _cpu():
-        return time.process_time()
-
-    with LocalCluster(n_workers=1, threads_per_worker=1, processes=True, dashboard_address=None) as cl1, \
-            Client(cl1) as c1, \
-            LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cl2, \
-            Client(cl2) as c2:
-        for client in (c1, c2):
-            client.run(warm_up)
-        db = load_bearing("skf-7011-cdga-hc-db")
-        cases = [("7011, 25 Fa x 20 Fr x 20 M at 3000 rpm", b7011, kw, ser),
-                 # the same number of points, each dearer (a preloaded pair, 2 x 21 balls, speeds to 11,200 rpm)
-                 ("7011 DB pair, 25 Fa x 20 Fr x 20 speeds", db,
-                  dict(fa="500:5000:25", fr="0:2000:20", speed="1000:11200:20", chunk_points=chunk), None)]
-        for label, brg, kwc, ref in cases:
-            if ref is None:
-                ref = map_grid(brg, workers=1, **kwc)
-            walls = {1: [], 2: []}
-            cpus = {1: [], 2: []}
-            same = True
-            for client in (c1, c2):
-                map_grid(brg, scheduler=client, **kwc)  # first map: connections and imports
-            for _ in range(5):
-                for nw, client in ((1, c1), (2, c2)):
-                    w0 = client.run(_cpu)
-                    m0 = time.process_time()
-                    t = time.perf_counter()
-                    ds = map_grid(brg, scheduler=client, **kwc)
-                    walls[nw].append(time.perf_counter() - t)
-                    m1 = time.process_time()
-                    w1 = client.run(_cpu)
-                    cpus[nw].append((sum(w1[k] - w0[k] for k in w0), m1 - m0))
-                    same = same and all(np.array_equal(ref[v].values, ds[v].values) for v in ref.data_vars)
-            print(f"map_grid {label} (10,000 points, {nblk} blocks of <= {chunk}):")
-            for nw in (1, 2):
-                wc = np.median([x[0] for x in cpus[nw]])
-                mc = np.median([x[1] for x in cpus[nw]])
-                print(f"   Dask {nw} worker(s): best {10000 / min(walls[nw]):,.0f} points/s, median "
-                      f"{10000 / np.median(walls[nw]):,.0f} points/s; CPU per map: workers {wc:.3f} s, main process "
-                      f"{mc:.3f} s")
-            print(f"   speed-up 2 workers / 1 worker: {min(walls[1]) / min(walls[2]):.2f} x (best of 5), "
-                  f"{np.median(walls[1]) / np.median(walls[2]):.2f} x (median); identical to serial: {same} "
-                  f"(machine has {os.cpu_count()} cores)")
+    dask_scaling()
 
     if quick:
         return
@@ -219,4 +218,7 @@ def main(quick=False):  # noqa: C901
 
 
 if __name__ == "__main__":
-    main(quick="--quick" in sys.argv)
+    if "--dask" in sys.argv:
+        dask_scaling()
+    else:
+        main(quick="--quick" in sys.argv)

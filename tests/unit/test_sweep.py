@@ -59,11 +59,15 @@ def test_map_grid_dataset_and_serial_equals_process_pool():
         np.testing.assert_array_equal(a[v].values, b[v].values)
 
 
-def test_local_cluster_equals_serial_exactly(tmp_path):
+@pytest.mark.parametrize("processes", [True, False], ids=["process-workers", "thread-workers"])
+def test_local_cluster_equals_serial_exactly(tmp_path, processes):
+    """Dask workers as processes, and as threads of one process (the batch kernel releases the GIL, so
+    two thread workers solve blocks at the same time): both give the serial map bit for bit."""
     distributed = pytest.importorskip("distributed")
     kw = dict(fa="0:1500:3", fr="0:1000:2", preload="100:200:2", speed="0:6000:3", chunk_points=3)
     serial = sweep.map_grid("skf-7011-cdga-hc-db", workers=1, **kw)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cl, \
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=processes,
+                                  dashboard_address=None) as cl, \
             distributed.Client(cl) as client:
         ds = sweep.map_grid("skf-7011-cdga-hc-db", scheduler=client, out=tmp_path / "m.nc", **kw)
         for v in serial.data_vars:
