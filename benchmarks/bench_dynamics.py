@@ -29,7 +29,7 @@ CASES = {"a": ROOT / "examples" / "spindle-7011.toml", "b": ROOT / "examples" / 
 
 
 def run(name: str, duration: float | None, traction: str | None, profile: bool, integrator: str | None = None,
-        tolerance: float | None = None, n_slices: int | None = None, keep=None) -> dict:
+        tolerance: float | None = None, n_slices: int | None = None, keep=None, cage_modes: int = 0) -> dict:
     from bearingsim.dynamics.case import load_case
     from bearingsim.dynamics.run import simulate
 
@@ -42,6 +42,9 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
         case = dataclasses.replace(case, tolerance=tolerance)
     if n_slices:
         case = dataclasses.replace(case, n_slices=n_slices)
+    if cage_modes:
+        cage = {k: v for k, v in case.cage.items() if k != "mass"}  # an elastic cage's mass is its ring's
+        case = dataclasses.replace(case, cage={**cage, "n_modes": cage_modes})
     with tempfile.TemporaryDirectory() as d:
         warm = dataclasses.replace(case, duration=max(case.output_interval, 5e-5), output_interval=min(
             case.output_interval, 5e-5))
@@ -65,7 +68,7 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
             ds.close()
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     out = {"case": name, "traction": full.traction, "integrator": full.method, "tolerance": full.tolerance,
-           "n_slices": full.n_slices, "simulated_s": full.duration, "wall_s": wall,
+           "n_slices": full.n_slices, "cage_modes": cage_modes, "simulated_s": full.duration, "wall_s": wall,
            "wall_per_simulated_s": wall / full.duration, "steps": res.summary["steps"],
            "rejected": res.summary["rejected_steps"], "peak_rss_MB": peak}
     return out
@@ -113,6 +116,7 @@ def main(argv=None):
     ap.add_argument("--tolerance", type=float, default=None, help="integrator tolerance (default: the case file)")
     ap.add_argument("--n-slices", type=int, default=None, help="slices per contact ellipse (default: the case file)")
     ap.add_argument("--accuracy", action="store_true", help="compare with a DOPRI5 run at tolerance 1e-7")
+    ap.add_argument("--cage-modes", type=int, default=0, help="elastic cages with this many modes each (default rigid)")
     ap.add_argument("--profile", action="store_true", help="cProfile the run")
     ap.add_argument("--kernel", action="store_true", help="time one right-hand side per traction model and "
                     "report what limits the step (numba profiling)")
@@ -126,16 +130,16 @@ def main(argv=None):
     dur = parse_quantity(a.duration, "time", "--duration") if a.duration else None
     for name in (["a", "b"] if a.case == "both" else [a.case]):
         keep = [] if a.accuracy else None
-        r = run(name, dur, a.traction, a.profile, a.integrator, a.tolerance, a.n_slices, keep)
+        r = run(name, dur, a.traction, a.profile, a.integrator, a.tolerance, a.n_slices, keep, a.cage_modes)
         print(f"case ({r['case']}) traction={r['traction']} integrator={r['integrator']} tol={r['tolerance']:g} "
-              f"n_slices={r['n_slices']}: {r['simulated_s'] * 1e3:.4g} ms simulated in "
+              f"n_slices={r['n_slices']} cage_modes={r['cage_modes']}: {r['simulated_s'] * 1e3:.4g} ms simulated in "
               f"{r['wall_s']:.3g} s -> {r['wall_per_simulated_s']:.4g} wall s per simulated s; "
               f"{r['steps']} steps ({r['rejected']} rejected); peak RSS {r['peak_rss_MB']:.0f} MB")
         sys.stdout.flush()
         if a.accuracy:
             import numpy as np
 
-            run(name, dur, a.traction, False, "dopri5", 1e-7, None, keep)
+            run(name, dur, a.traction, False, "dopri5", 1e-7, None, keep, a.cage_modes)
             test, ref = keep
             span = np.ptp(ref, axis=0) + 1e-30
             dev = np.abs(test - ref).max(axis=0) / span

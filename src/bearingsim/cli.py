@@ -128,8 +128,9 @@ def reproduce_spindle(
     _console().print(f"wrote {csv} and {png}")
 
 
-from . import cli_dynamics, cli_lubrication, cli_sweep  # noqa: E402  (commands of the topic modules)
+from . import cli_cage, cli_dynamics, cli_lubrication, cli_sweep  # noqa: E402  (commands of the topic modules)
 
+cli_cage.register(app)
 cli_lubrication.register(app)
 cli_sweep.register(app, reproduce_app)
 cli_dynamics.register(app, reproduce_app)

@@ -35,6 +35,17 @@ Example (``examples/spindle-7011.toml``)::
     guidance = "balls"                  # balls, outer-land, inner-land
     land_clearance = "0.2 mm"
     pocket_shape = "sphere"
+    # elastic cage (mode synthesis; then give no mass: it comes from the ring): the n lowest
+    # free-free modes of a finite-element ring (bearingsim.cage_modes), modal damping ratio, and
+    # optional ring data overriding the assumed window cage
+    # n_modes = 20
+    # modal_damping = 0.02
+    # axial_width = "13 mm"
+    # radial_thickness = "3 mm"
+    # pocket_diameter = "11.5 mm"
+    # young_modulus = "206 GPa"
+    # poisson = 0.3
+    # density = "7850 kg/m^3"
 """
 
 from __future__ import annotations
@@ -133,7 +144,13 @@ class Case:
                     cage_mass=c.get("mass"), pocket_clearance=c.get("pocket_clearance"),
                     cage_mu=c.get("friction", 0.06), guidance=c.get("guidance", "balls"),
                     land_clearance=c.get("land_clearance", 2e-4), pocket_shape=c.get("pocket_shape", "sphere"),
-                    cage=c.get("enabled", True))
+                    cage=c.get("enabled", True), cage_modes=c.get("n_modes", 0), cage_ring=c.get("ring"),
+                    modal_damping=c.get("modal_damping"))
+
+
+#: elastic-cage ring data in [cage] (bearingsim.cage_modes.CageRing fields) and their dimensions
+_CAGE_RING = {"axial_width": "length", "radial_thickness": "length", "pocket_diameter": "length",
+              "young_modulus": "pressure", "poisson": "dimensionless", "density": "density"}
 
 
 def _inertia(value, fname: str) -> float:
@@ -181,10 +198,11 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
                    _inertia(ring["polar_inertia"], "inner_ring.polar_inertia"))
     cage_in = data.get("cage", {})
     unknown = set(cage_in) - {"mass", "pocket_clearance", "friction", "guidance", "land_clearance", "pocket_shape",
-                              "enabled"}
+                              "enabled", "n_modes", "modal_damping"} - set(_CAGE_RING)
     if unknown:
         raise InputError(f"cage.{sorted(unknown)[0]}", "unknown key",
-                         "use mass, pocket_clearance, friction, guidance, land_clearance, pocket_shape, enabled")
+                         "use mass, pocket_clearance, friction, guidance, land_clearance, pocket_shape, enabled, "
+                         "n_modes, modal_damping, " + ", ".join(_CAGE_RING))
     cage = {}
     if "mass" in cage_in:
         cage["mass"] = parse_quantity(cage_in["mass"], "mass", "cage.mass")
@@ -196,9 +214,14 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
         cage["land_clearance"] = parse_quantity(cage_in["land_clearance"], "length", "cage.land_clearance")
     if "friction" in cage_in:
         cage["friction"] = parse_quantity(cage_in["friction"], "dimensionless", "cage.friction")
-    for k in ("guidance", "pocket_shape", "enabled"):
+    for k in ("guidance", "pocket_shape", "enabled", "n_modes"):
         if k in cage_in:
             cage[k] = cage_in[k]
+    if "modal_damping" in cage_in:
+        cage["modal_damping"] = parse_quantity(cage_in["modal_damping"], "dimensionless", "cage.modal_damping")
+    ring = {k: parse_quantity(cage_in[k], dim, f"cage.{k}") for k, dim in _CAGE_RING.items() if k in cage_in}
+    if ring:
+        cage["ring"] = ring
     grav = data.get("gravity", (0.0, 0.0, 0.0))
     if not (isinstance(grav, (list, tuple)) and len(grav) == 3):
         raise InputError("gravity", "expected three components", 'e.g. ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]')

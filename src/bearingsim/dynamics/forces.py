@@ -50,8 +50,9 @@ from . import model as md
 D_QI, D_QO, D_AI, D_AO, D_DI, D_DO, D_WM, D_WR, D_SRI, D_SRO, D_PI, D_PO, D_QC, D_PC, D_BETA = range(15)
 NDB = 15
 # global diagnostics
-(GD_FA, GD_FRY, GD_FRZ, GD_MY, GD_MZ, GD_TQI, GD_TQO, GD_PI, GD_PO, GD_PC, GD_PL, GD_W, GD_EPOT) = range(13)
-NDG = 13
+(GD_FA, GD_FRY, GD_FRZ, GD_MY, GD_MZ, GD_TQI, GD_TQO, GD_PI, GD_PO, GD_PC, GD_PL, GD_W, GD_EPOT,
+ GD_ECAGE) = range(14)
+NDG = 14
 
 
 @njit(cache=True)
@@ -359,7 +360,7 @@ def pocket_point(shape, par, radius, ut, ur, ux):
 
 
 @njit(cache=True)
-def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
+def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag):
     """Time derivative of the state (equations of motion, inertial frame).
 
     Inner ring (seed 001 Table 3; Lagrange with constant mass matrix):
@@ -372,6 +373,16 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
     from the motion itself): m v̇ = F + m g, J ω̇ = M.
     Cage: m v̇ = F + m g; I_p θ̈ = M·(R_y R_z e_x); I_t β̈y = M·e_y − I_p θ̇ β̇z;
     I_t β̈z = M·R_y e_z + I_p θ̇ β̇y.
+    Elastic cage (mode synthesis, seed 001 Table 3; Craig 1981 ch. 17): the pockets move in the cage
+    frame by u_j = Σ η_k φ_k^u(j) and turn by ρ_j = Σ η_k φ_k^ρ(j) (free–free mass-normalised modes,
+    :mod:`bearingsim.cage_modes`); η̈_k + 2 ζ_k ω_k η̇_k + ω_k² η_k = Σ_j (φ_k^u(j)·F_j + φ_k^ρ(j)·(r_j × F_j))
+    with F_j the pocket force on the cage (cage frame) and r_j its point from the deformed pocket
+    centre.  The modes are orthogonal to the rigid motions, so the rigid and elastic inertias decouple
+    to first order; the cage's spin couples them only through centrifugal and Coriolis terms of
+    relative size (θ̇/ω_1)², neglected (docs/dynamics.md).
+
+    cm (n_cages × n_max_modes × (2 + 6 Z)): per mode ω_k [rad/s], 2 ζ_k ω_k [1/s], then the six
+    shape components (u_x, u_y, u_z [m], ρ_x, ρ_y, ρ_z [rad] per unit η, cage frame) of every pocket.
 
     lubs (2 n_rows × L_SIZE): lubrication parameters of the inner (2r) and outer (2r+1)
     contacts of row r for the sliced-ellipse kernel.
@@ -534,9 +545,24 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
     ff = np.empty(3)
     ftot = np.empty(3)
     half = np.empty(3)
+    ud = np.zeros(3)
+    rho = np.zeros(3)
+    udd = np.zeros(3)
+    rhod = np.zeros(3)
+    wpk = np.empty(3)
+    rpk = np.empty(3)
+    nlc = np.empty(3)
+    fcl = np.empty(3)
+    mcl = np.empty(3)
+    fm = np.empty(cm.shape[1])
+    e_cage = 0.0
     for ci in range(ncage):
         o = oc0 + md.N_CAGE * ci
         cpar = cp[ci]
+        nm = int(cpar[md.C_NMODES])
+        om0 = int(cpar[md.C_MODE0])
+        for kk in range(nm):
+            fm[kk] = 0.0
         th = y[o + 6]
         by_ = y[o + 7]
         bz_ = y[o + 8]
@@ -585,15 +611,43 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
                     tmp[i] = b[i] - occ[i]
                 for i in range(3):
                     bp[i] = rcm[0, i] * tmp[0] + rcm[1, i] * tmp[1] + rcm[2, i] * tmp[2]
-                # ball centre in the pocket frame (t, r, x)
-                u0 = bp[1] - rp * cph
-                u1 = bp[2] - rp * sph
-                ut = -u0 * sph + u1 * cph
-                ur = u0 * cph + u1 * sph
-                ux = bp[0]
-                # no point of a pocket of radius D/2 + clr can touch a ball this close to the centre
-                if math.sqrt(ut * ut + ux * ux + ur * ur) <= clr:
+                # ball centre from the pocket centre, cage frame
+                wpk[0] = bp[0]
+                wpk[1] = bp[1] - rp * cph
+                wpk[2] = bp[2] - rp * sph
+                # no point of a pocket of radius D/2 + clr can touch a ball this close to the centre (an
+                # elastic cage: within half the clearance, as its pockets move by far less than that)
+                wn = math.sqrt(wpk[0] * wpk[0] + wpk[1] * wpk[1] + wpk[2] * wpk[2])
+                if wn <= (clr if nm == 0 else 0.5 * clr):
                     continue
+                if nm > 0:
+                    # the pocket's elastic displacement and small rotation (cage frame), and their rates
+                    for i in range(3):
+                        ud[i] = 0.0
+                        rho[i] = 0.0
+                        udd[i] = 0.0
+                        rhod[i] = 0.0
+                    sb = 2 + 6 * j
+                    for kk in range(nm):
+                        et = y[om0 + kk]
+                        ed = y[om0 + nm + kk]
+                        for i in range(3):
+                            s1 = cm[ci, kk, sb + i]
+                            s2 = cm[ci, kk, sb + 3 + i]
+                            ud[i] += et * s1
+                            rho[i] += et * s2
+                            udd[i] += ed * s1
+                            rhod[i] += ed * s2
+                    # ball centre in the displaced and turned pocket frame: R(ρ)ᵀ (w − u) ≈ (w − u) − ρ × (w − u)
+                    for i in range(3):
+                        wpk[i] -= ud[i]
+                    _cross(rho, wpk, tmp)
+                    for i in range(3):
+                        wpk[i] -= tmp[i]
+                # ball centre in the pocket frame (t, r, x)
+                ut = -wpk[1] * sph + wpk[2] * cph
+                ur = wpk[1] * cph + wpk[2] * sph
+                ux = wpk[0]
                 # nearest point of the pocket surface to the ball centre (closed form) and the penetration
                 qt, qr, qx = pocket_point(int(cpar[md.C_SHAPE]), cpar[md.C_POCKET], half_d + clr, ut, ur, ux)
                 e0 = ut - qt
@@ -603,15 +657,33 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
                 best = half_d - dd
                 if not (best > 0.0 and dd > 0.0):
                     continue
-                # normal (point → ball centre) and contact point in the cage frame
-                nl0 = e2 / dd
-                nl1 = (e1 * cph - e0 * sph) / dd
-                nl2 = (e1 * sph + e0 * cph) / dd
-                pl0 = qx
-                pl1 = rp * cph + qr * cph - qt * sph
-                pl2 = rp * sph + qr * sph + qt * cph
+                # normal (point → ball centre) and contact point from the pocket centre, cage frame
+                nlc[0] = e2 / dd
+                nlc[1] = (e1 * cph - e0 * sph) / dd
+                nlc[2] = (e1 * sph + e0 * cph) / dd
+                rpk[0] = qx
+                rpk[1] = qr * cph - qt * sph
+                rpk[2] = qr * sph + qt * cph
+                if nm > 0:
+                    # turned with the pocket; the point's elastic velocity u̇ + ρ̇ × r (cage frame) in fcl
+                    _cross(rho, nlc, tmp)
+                    for i in range(3):
+                        nlc[i] += tmp[i]
+                    _cross(rho, rpk, tmp)
+                    for i in range(3):
+                        rpk[i] += tmp[i]
+                    _cross(rhod, rpk, fcl)
+                    for i in range(3):
+                        fcl[i] += udd[i]
+                    pl0 = rpk[0] + ud[0]
+                    pl1 = rp * cph + rpk[1] + ud[1]
+                    pl2 = rp * sph + rpk[2] + ud[2]
+                else:
+                    pl0 = rpk[0]
+                    pl1 = rp * cph + rpk[1]
+                    pl2 = rp * sph + rpk[2]
                 for i in range(3):
-                    nvec[i] = rcm[i, 0] * nl0 + rcm[i, 1] * nl1 + rcm[i, 2] * nl2
+                    nvec[i] = rcm[i, 0] * nlc[0] + rcm[i, 1] * nlc[1] + rcm[i, 2] * nlc[2]
                     pc[i] = occ[i] + rcm[i, 0] * pl0 + rcm[i, 1] * pl1 + rcm[i, 2] * pl2
                     pw[i] = pc[i] - b[i]
                     half[i] = pc[i] - occ[i]
@@ -620,6 +692,9 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
                 for i in range(3):
                     vbp[i] += v[i]
                     vcp[i] += vc[i]
+                if nm > 0:
+                    for i in range(3):
+                        vcp[i] += rcm[i, 0] * fcl[0] + rcm[i, 1] * fcl[1] + rcm[i, 2] * fcl[2]
                 ddot = -(nvec[0] * (v[0] - vcp[0]) + nvec[1] * (v[1] - vcp[1]) + nvec[2] * (v[2] - vcp[2]))
                 qn = kcg * best * math.sqrt(best) * (1.0 + 1.5 * alpha * ddot)
                 if qn <= 0.0:
@@ -647,6 +722,18 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
                 for i in range(3):
                     fc[i] -= ftot[i]
                     mc[i] -= tmp[i]
+                if nm > 0:
+                    # generalized modal forces of the pocket force on the cage (cage frame) and of its
+                    # moment about the deformed pocket centre
+                    for i in range(3):
+                        fcl[i] = -(rcm[0, i] * ftot[0] + rcm[1, i] * ftot[1] + rcm[2, i] * ftot[2])
+                    _cross(rpk, fcl, mcl)
+                    sb = 2 + 6 * j
+                    for kk in range(nm):
+                        acc = 0.0
+                        for i in range(3):
+                            acc += cm[ci, kk, sb + i] * fcl[i] + cm[ci, kk, sb + 3 + i] * mcl[i]
+                        fm[kk] += acc
                 if want:
                     diag[k, D_QC] = qn
                     diag[k, D_PC] = ploss
@@ -727,6 +814,14 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
         dy[o + 9] = (mc[0] * rm[0, 0] + mc[1] * rm[1, 0] + mc[2] * rm[2, 0]) / ip
         dy[o + 10] = (mc[1] - ip * thd * bzd) / itc
         dy[o + 11] = (mc[0] * syb + mc[2] * cyb + ip * thd * byd) / itc
+        # modal coordinates of an elastic cage
+        for kk in range(nm):
+            et = y[om0 + kk]
+            ed = y[om0 + nm + kk]
+            wk = cm[ci, kk, 0]
+            dy[om0 + kk] = ed
+            dy[om0 + nm + kk] = fm[kk] - cm[ci, kk, 1] * ed - wk * wk * et
+            e_cage += 0.5 * wk * wk * et * et
     # ---- inner ring
     xl = gp[md.G_XL]
     if gp[md.G_RING_FIXED] > 0.0:
@@ -762,6 +857,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, lubs, loadspec, diag, gdiag):
         gdiag[GD_PL] = p_land
         gdiag[GD_W] = omega
         gdiag[GD_EPOT] = epot
+        gdiag[GD_ECAGE] = e_cage
 
 
 def pack_loads(channels) -> np.ndarray:
@@ -803,15 +899,15 @@ def evaluate(model, t, y, loadspec, want_diag=True):
     dy = np.zeros_like(y)
     diag = np.zeros((model.n_balls if want_diag else 0, NDB))
     gdiag = np.zeros(NDG)
-    rhs(t, y, dy, model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.lub_array(), loadspec, diag,
-        gdiag)
+    rhs(t, y, dy, model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.cage_modes, model.lub_array(),
+        loadspec, diag, gdiag)
     return dy, diag, gdiag
 
 
 @njit(cache=True)
 def rhs_args(t, y, dy, a):
     """:func:`rhs` with its arrays in one tuple (the integrator's calling convention)."""
-    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8])
+    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9])
 
 
 def args_of(model, loadspec, diag=None, gdiag=None):
@@ -820,4 +916,5 @@ def args_of(model, loadspec, diag=None, gdiag=None):
         diag = np.zeros((0, NDB))
     if gdiag is None:
         gdiag = np.zeros(NDG)
-    return (model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.lub_array(), loadspec, diag, gdiag)
+    return (model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.cage_modes, model.lub_array(), loadspec,
+            diag, gdiag)

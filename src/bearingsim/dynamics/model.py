@@ -9,8 +9,8 @@ Bodies (inertial frame, x the bearing axis, ψ = 0 on +y, outer ring fixed):
   inertial frame (a sphere's orientation does not enter the forces);
 * one rigid cage per row: centre position (3), velocity (3), orientation
   R_y(βy) R_z(βz) R_x(θ) (θ, βy, βz), spin rate θ̇ and tilt rates (β̇y, β̇z).
-  The cage block ends with ``2 n_modes`` slots reserved for modal coordinates of an
-  elastic cage (0 now, see :mod:`.cage`).
+  An elastic cage adds n_c modal coordinates η and their rates η̇ (mode synthesis, see
+  :mod:`.cage`), stored after all bodies so that every other offset stays fixed.
 
 State vector y (float64), in this order::
 
@@ -18,8 +18,9 @@ State vector y (float64), in this order::
     [5:10]   q̇                                            [m/s, rad/s]
     [10 + 9k : 10 + 9k + 9]  ball k: r(3) [m], v(3) [m/s], ω(3) [rad/s]
     [OC + 12c : OC + 12c + 12] cage c: r(3), v(3), θ, βy, βz, θ̇, β̇y, β̇z
+    [M_c : M_c + n_c], [M_c + n_c : M_c + 2 n_c]  η, η̇ of cage c (cp[c, C_MODE0] = M_c)
 
-with OC = 10 + 9 n_balls.  Geometry comes from the kernel row parameters of the
+with OC = 10 + 9 n_balls and M_0 = OC + 12 n_cages.  Geometry comes from the kernel row parameters of the
 statics (layout P_* in :mod:`bearingsim.statics._kernels`): per row the inner groove
 curvature centres lie on a circle of radius P_RIC at local axial position
 ξ = P_XIC + P_AXOFF in the inner-ring frame, the outer ones on a fixed circle of radius
@@ -100,7 +101,8 @@ C_BALL0 = 15  # index of the first ball of this cage
 C_NMODES = 16  # modal coordinates (0: rigid)
 C_SHAPE = 17  # pocket shape: 0 sphere, 1 cylinder (POCKET_SHAPES)
 C_POCKET = 18  # sphere: half-angle of the opening about the radial axis [rad]; cylinder: half-length [m]
-NCP = 19
+C_MODE0 = 19  # index in the state of the cage's first modal coordinate
+NCP = 20
 
 POCKET_SHAPES = {"sphere": 0, "cylinder": 1}
 
@@ -119,6 +121,14 @@ class Model:
     cp: np.ndarray  #: float[ncage, NCP]
     names: dict = field(default_factory=dict)
     lubs: np.ndarray | None = None  #: float[2 nrow, L_SIZE] lubrication parameters (inner, outer per row)
+    #: float[ncage, n_max_modes, 2 + 6 Z] modal data of elastic cages (see :func:`.forces.rhs`); None: rigid
+    cage_modes: np.ndarray | None = None
+    #: per cage the :class:`bearingsim.cage_modes.CageModes` behind ``cage_modes`` (None: rigid)
+    cage_fe: list | None = None
+
+    def __post_init__(self):
+        if self.cage_modes is None:
+            self.cage_modes = np.zeros((self.cp.shape[0], 0, 2))
 
     def lub_array(self) -> np.ndarray:
         if self.lubs is None:
@@ -136,8 +146,13 @@ class Model:
         return int(self.cp.shape[0])
 
     @property
+    def n_modes(self) -> int:
+        """Modal coordinates of all elastic cages."""
+        return int(self.cp[:, C_NMODES].sum()) if self.n_cages else 0
+
+    @property
     def n_state(self) -> int:
-        return N_RING + N_BALL * self.n_balls + N_CAGE * self.n_cages
+        return N_RING + N_BALL * self.n_balls + N_CAGE * self.n_cages + 2 * self.n_modes
 
     @property
     def cage_offset(self) -> int:
@@ -150,6 +165,11 @@ class Model:
     def cage_slice(self, c: int) -> slice:
         o = self.cage_offset + N_CAGE * c
         return slice(o, o + N_CAGE)
+
+    def mode_slices(self, c: int) -> tuple[slice, slice]:
+        """(η, η̇) of cage c in the state (empty for a rigid cage)."""
+        o, n = int(self.cp[c, C_MODE0]), int(self.cp[c, C_NMODES])
+        return slice(o, o + n), slice(o + n, o + 2 * n)
 
 
 def pocket_geometry(ball_diameter: float, shape: str = "sphere", opening_deg: float = 20.0) -> tuple[int, float]:
@@ -239,7 +259,8 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
                 cage: bool = True, cage_mass: float | None = None, pocket_clearance: float | None = None,
                 cage_mu: float = 0.06, guidance: str = "balls", land_clearance: float = 2e-4,
                 cage_stiffness: float | None = None, v_ref: float = 1e-3, pocket_shape: str = "sphere",
-                lubricant=None, temperature: float = 333.15, lubrication: dict | None = None) -> Model:
+                lubricant=None, temperature: float = 333.15, lubrication: dict | None = None,
+                cage_modes: int = 0, cage_ring: dict | None = None, modal_damping: float | None = None) -> Model:
     """Build the kernel arrays of a bearing (single row or an arrangement with ``rows_parameters``).
 
     Parameters (SI): ring_mass [kg]; ring_inertia (transverse, polar) [kg m²] (default:
@@ -250,7 +271,9 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
     for traction "slices"; load_point axial position of the load point [m]; speed (Ω₀, Ω₁, ramp) [rad/s, s];
     cage options: mass [kg] (default 10 % of the ball set), pocket clearance [m]
     (default 2 % of D), friction μ = 0.06 (seed 001 §3.2), guidance "balls",
-    "outer-land" or "inner-land" with a radial land clearance [m].
+    "outer-land" or "inner-land" with a radial land clearance [m]; cage_modes: elastic modes per
+    cage (0: rigid), with ``cage_ring`` overrides of the assumed ring [SI] and ``modal_damping`` ζ
+    (:func:`.cage.attach_elastic_cages`).
     """
     from ..statics.jones_harris import rows_of
 
@@ -339,8 +362,18 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
                                                              rowx[r, X_RYI], **(lubrication or {}))
             lubs[2 * r + 1] = slices.pack_lubrication_parameters(lubricant, temperature, rowx[r, X_EPO],
                                                                  rowx[r, X_RXO], rowx[r, X_RYO], **(lubrication or {}))
-    return Model(rows=rows, rowx=rowx, ball_row=ball_row, ball_psi=np.array(ball_psi), gp=gp, cp=cp,
-                 names={"bearing": getattr(bearing, "name", "bearing")}, lubs=lubs)
+    model = Model(rows=rows, rowx=rowx, ball_row=ball_row, ball_psi=np.array(ball_psi), gp=gp, cp=cp,
+                  names={"bearing": getattr(bearing, "name", "bearing")}, lubs=lubs)
+    if cage_modes or cage_ring or modal_damping is not None:
+        from .cage import DEFAULT_MODAL_DAMPING, attach_elastic_cages
+
+        if not cage_modes:
+            raise InputError("cage.n_modes", "cage ring data or modal damping given for a rigid cage",
+                             "set n_modes (e.g. 20) or drop the elastic-cage keys")
+        attach_elastic_cages(model, cage_modes, cage_ring,
+                             DEFAULT_MODAL_DAMPING if modal_damping is None else modal_damping,
+                             cage_mass_given=cage_mass is not None)
+    return model
 
 
 def initial_state(model: Model, static=None, speed: float | None = None) -> np.ndarray:
@@ -436,6 +469,12 @@ def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-
         atol[o + 9:o + 12] = tol * rate_scale
         rtol[o + 3:o + 6] = tol
         rtol[o + 9:o + 12] = tol
+        # modal coordinates (mass-normalised: a pocket moves by ≈ η / √m_cage)
+        eta, etad = model.mode_slices(c)
+        sm = math.sqrt(model.cp[c, C_MASS])
+        atol[eta] = alen * sm
+        atol[etad] = tol * speed_scale * sm
+        rtol[etad] = tol
     return atol, rtol
 
 
@@ -447,5 +486,11 @@ def describe_component(model: Model, i: int) -> str:
         k = (i - N_RING) // N_BALL
         part = ("position", "velocity", "angular velocity")[((i - N_RING) % N_BALL) // 3]
         return f"ball {k} (row {int(model.ball_row[k])}) {part}: its raceway or pocket contacts"
-    c = (i - model.cage_offset) // N_CAGE
-    return f"cage {c}: its pocket or land contacts"
+    if i < model.cage_offset + N_CAGE * model.n_cages:
+        c = (i - model.cage_offset) // N_CAGE
+        return f"cage {c}: its pocket or land contacts"
+    for c in range(model.n_cages):
+        eta, etad = model.mode_slices(c)
+        if eta.start <= i < etad.stop:
+            return f"cage {c} elastic mode {(i - eta.start) % max(1, eta.stop - eta.start)}: its pocket contacts"
+    return f"state component {i}"

@@ -106,6 +106,13 @@ def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: 
     cage = np.array([y[oc + md.N_CAGE * c + 9] for c in range(nc)])
     cage_angle = np.array([y[oc + md.N_CAGE * c + 6] for c in range(nc)])
     cage_pos = np.array([y[oc + md.N_CAGE * c:oc + md.N_CAGE * c + 3] for c in range(nc)])
+    deform = np.zeros(nc)
+    for c in range(nc):
+        eta, _ = model.mode_slices(c)
+        n, z = eta.stop - eta.start, int(model.cp[c, md.C_Z])
+        if n:
+            u = np.einsum("k,kjd->jd", y[eta], model.cage_modes[c, :n, 2:2 + 6 * z].reshape(n, z, 6)[:, :, :3])
+            deform[c] = np.sqrt((u * u).sum(axis=1)).max()
     return {
         "time": t,
         "inner_ring_displacement": y[0:5].copy(),
@@ -137,6 +144,8 @@ def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: 
         "power_loss_cage": gd[fo.GD_PC],
         "power_loss_land": gd[fo.GD_PL],
         "contact_potential_energy": gd[fo.GD_EPOT],
+        "cage_strain_energy": gd[fo.GD_ECAGE],
+        "cage_pocket_deformation": deform,
     }
 
 
@@ -173,6 +182,9 @@ VARIABLES = {
     "power_loss_rolling": (("time",), "W", "share of the raceway power loss due to rolling viscous resistance "
                            "(included in power_loss_inner/outer)"),
     "contact_potential_energy": (("time",), "J", "elastic energy stored in all contacts"),
+    "cage_strain_energy": (("time",), "J", "elastic strain energy of the cages' modes (0 for rigid cages)"),
+    "cage_pocket_deformation": (("time", "cage"), "m",
+                                "largest elastic displacement of a pocket centre (0 for a rigid cage)"),
 }
 
 
