@@ -65,6 +65,9 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
                           f"{ss['power_loss_cage']:.4g}, land {ss['power_loss_land']:.4g}; rolling resistance "
                           f"{ss['power_loss_rolling']:.4g} of the raceway terms); inner-ring friction torque "
                           f"{ss['inner_ring_friction_torque']:.4g} N·m; cage {ss['cage_angular_speed']:.5g} rad/s")
+                if ss.get("cage_pocket_deformation_max", 0.0) > 0:
+                    con.print(f"elastic cage: largest pocket displacement {ss['cage_pocket_deformation_max'] * 1e6:.3g} "
+                              "µm")
 
     if reproduce_app is None:
         return

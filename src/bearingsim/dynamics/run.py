@@ -246,8 +246,10 @@ class Results:
         """Friction torque and heat by contact type averaged over the last ``fraction`` of the run.
 
         Power loss per contact type [W] (ball–inner, ball–outer, ball–cage, cage land; the
-        rolling resistance is inside the raceway terms when the traction kernel provides it)
-        and the friction torque on the inner ring [N·m].
+        rolling resistance is inside the raceway terms when the traction kernel provides it),
+        the friction torque on the inner ring [N·m], and for elastic cages the largest elastic
+        pocket displacement over that part of the run, ``cage_pocket_deformation_max`` [m]
+        (0 for rigid cages).
         """
         names = ("power_loss_inner", "power_loss_outer", "power_loss_cage", "power_loss_land", "power_loss_rolling",
                  "inner_ring_friction_torque", "outer_ring_friction_torque")
@@ -262,6 +264,9 @@ class Results:
                 for a in range(i0, n, self.BLOCK):
                     total += float(np.sum(read(k, a, min(n, a + self.BLOCK))))
                 out[k] = total / max(n - i0, 1)
+            out["cage_pocket_deformation_max"] = max(
+                (float(np.max(read("cage_pocket_deformation", a, min(n, a + self.BLOCK)), initial=0.0))
+                 for a in range(i0, n, self.BLOCK)), default=0.0)
             # mean cage speed from its angle (the cage rattles in its pocket clearance)
             if n - i0 > 1:
                 dth = read("cage_angle", n - 1, n)[0] - read("cage_angle", i0, i0 + 1)[0]
