@@ -67,7 +67,7 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
                           f"{ss['inner_ring_friction_torque']:.4g} N·m; cage {ss['cage_angular_speed']:.5g} rad/s")
                 if ss.get("cage_pocket_deformation_max", 0.0) > 0:
                     con.print(f"elastic cage: largest pocket displacement {ss['cage_pocket_deformation_max'] * 1e6:.3g} "
-                              "µm")
+                              f"µm, largest normal stress {ss['cage_peak_stress_max'] / 1e6:.3g} MPa")
 
     if reproduce_app is None:
         return

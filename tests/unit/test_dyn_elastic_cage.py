@@ -243,3 +243,16 @@ def test_elastic_cage_case_runs_through_the_api(tmp_path):
     assert np.all(deform[0] == 0), "the run starts from the undeformed cage"
     ss = res.steady_state(fraction=0.5)
     assert ss["cage_pocket_deformation_max"] == float(deform[2:].max())
+    # the peak stress output is the stress recovered from the full FE displacement of the modal state
+    from bearingsim.cage_modes import element_end_forces, normal_stress
+
+    m = md.build_model(c.bearing, **c.model_options())
+    (stress,) = res.read("cage_peak_stress")
+    fe = m.cage_fe[0]
+    assert stress[0, 0] == 0.0, "the run starts from the unstressed cage"
+    rng = np.random.default_rng(1)
+    eta = rng.normal(size=6) * 1e-6
+    direct = np.abs(normal_stress(fe.fe, element_end_forces(fe.fe, fe.vectors @ eta))).max()
+    np.testing.assert_allclose(np.abs(np.tensordot(eta, m.cage_stress[0], (0, 0))).max(), direct, rtol=1e-10,
+                               err_msg="stress shapes = Navier stress of the recovered element forces")
+    assert stress[1:].max() > 0 and ss["cage_peak_stress_max"] == float(stress[2:].max())

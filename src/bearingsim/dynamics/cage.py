@@ -41,7 +41,9 @@ def attach_elastic_cages(model, n_modes: int, ring: dict | None = None,
         pocket count and first pocket azimuth always come from the bearing row.
     modal_damping : ζ [-] of every mode.
     The cage's mass and moments of inertia become those of the finite-element ring, so that the
-    rigid and elastic parts describe one body; giving a cage mass as well is refused.
+    rigid and elastic parts describe one body; giving a cage mass as well is refused.  The ring's
+    normal-stress shapes (:func:`bearingsim.cage_modes.stress_shapes`) are kept for the output
+    ``cage_peak_stress``.
     """
     from .. import cage_modes as cmod
 
@@ -71,11 +73,14 @@ def attach_elastic_cages(model, n_modes: int, ring: dict | None = None,
             raise InputError("cage", f"unknown cage ring field ({exc})",
                              "use axial_width, radial_thickness, pocket_diameter, young_modulus, poisson, density")
         if spec not in solved:  # the rows of a double-row unit usually share one cage design
-            solved[spec] = cmod.cage_modes(spec, n_modes)
+            modes = cmod.cage_modes(spec, n_modes)
+            solved[spec] = (modes, cmod.stress_shapes(modes))
         fes.append(solved[spec])
         zmax = max(zmax, z)
     cm = np.zeros((model.n_cages, n_modes, 2 + 6 * zmax))
     m0 = N_RING + N_BALL * model.n_balls + N_CAGE * model.n_cages
+    model.cage_stress = [s for _, s in fes]
+    fes = [f for f, _ in fes]
     for c, fe in enumerate(fes):
         z = int(cp[c, C_Z])
         cm[c, :, 0] = fe.omega

@@ -615,11 +615,6 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
                 wpk[0] = bp[0]
                 wpk[1] = bp[1] - rp * cph
                 wpk[2] = bp[2] - rp * sph
-                # no point of a pocket of radius D/2 + clr can touch a ball this close to the centre (an
-                # elastic cage: within half the clearance, as its pockets move by far less than that)
-                wn = math.sqrt(wpk[0] * wpk[0] + wpk[1] * wpk[1] + wpk[2] * wpk[2])
-                if wn <= (clr if nm == 0 else 0.5 * clr):
-                    continue
                 if nm > 0:
                     # the pocket's elastic displacement and small rotation (cage frame), and their rates
                     for i in range(3):
@@ -644,6 +639,9 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
                     _cross(rho, wpk, tmp)
                     for i in range(3):
                         wpk[i] -= tmp[i]
+                # no point of a pocket of radius D/2 + clr can touch a ball this close to its centre
+                if math.sqrt(wpk[0] * wpk[0] + wpk[1] * wpk[1] + wpk[2] * wpk[2]) <= clr:
+                    continue
                 # ball centre in the pocket frame (t, r, x)
                 ut = -wpk[1] * sph + wpk[2] * cph
                 ur = wpk[1] * cph + wpk[2] * sph

@@ -125,6 +125,8 @@ class Model:
     cage_modes: np.ndarray | None = None
     #: per cage the :class:`bearingsim.cage_modes.CageModes` behind ``cage_modes`` (None: rigid)
     cage_fe: list | None = None
+    #: per cage its normal-stress shapes float[n_modes, E, 2, 8] [Pa per unit η] (None: rigid)
+    cage_stress: list | None = None
 
     def __post_init__(self):
         if self.cage_modes is None:

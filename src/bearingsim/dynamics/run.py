@@ -107,12 +107,14 @@ def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: 
     cage_angle = np.array([y[oc + md.N_CAGE * c + 6] for c in range(nc)])
     cage_pos = np.array([y[oc + md.N_CAGE * c:oc + md.N_CAGE * c + 3] for c in range(nc)])
     deform = np.zeros(nc)
+    stress = np.zeros(nc)
     for c in range(nc):
         eta, _ = model.mode_slices(c)
         n, z = eta.stop - eta.start, int(model.cp[c, md.C_Z])
         if n:
             u = np.einsum("k,kjd->jd", y[eta], model.cage_modes[c, :n, 2:2 + 6 * z].reshape(n, z, 6)[:, :, :3])
             deform[c] = np.sqrt((u * u).sum(axis=1)).max()
+            stress[c] = np.abs(np.tensordot(y[eta], model.cage_stress[c], (0, 0))).max()
     return {
         "time": t,
         "inner_ring_displacement": y[0:5].copy(),
@@ -146,6 +148,7 @@ def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: 
         "contact_potential_energy": gd[fo.GD_EPOT],
         "cage_strain_energy": gd[fo.GD_ECAGE],
         "cage_pocket_deformation": deform,
+        "cage_peak_stress": stress,
     }
 
 
@@ -185,6 +188,9 @@ VARIABLES = {
     "cage_strain_energy": (("time",), "J", "elastic strain energy of the cages' modes (0 for rigid cages)"),
     "cage_pocket_deformation": (("time", "cage"), "m",
                                 "largest elastic displacement of a pocket centre (0 for a rigid cage)"),
+    "cage_peak_stress": (("time", "cage"), "Pa",
+                         "largest normal stress magnitude in the cage ring (Navier, recovered quasi-statically from "
+                         "the modal deformation; 0 for a rigid cage)"),
 }
 
 
@@ -248,8 +254,8 @@ class Results:
         Power loss per contact type [W] (ball–inner, ball–outer, ball–cage, cage land; the
         rolling resistance is inside the raceway terms when the traction kernel provides it),
         the friction torque on the inner ring [N·m], and for elastic cages the largest elastic
-        pocket displacement over that part of the run, ``cage_pocket_deformation_max`` [m]
-        (0 for rigid cages).
+        pocket displacement and normal stress over that part of the run,
+        ``cage_pocket_deformation_max`` [m] and ``cage_peak_stress_max`` [Pa] (0 for rigid cages).
         """
         names = ("power_loss_inner", "power_loss_outer", "power_loss_cage", "power_loss_land", "power_loss_rolling",
                  "inner_ring_friction_torque", "outer_ring_friction_torque")
@@ -264,9 +270,9 @@ class Results:
                 for a in range(i0, n, self.BLOCK):
                     total += float(np.sum(read(k, a, min(n, a + self.BLOCK))))
                 out[k] = total / max(n - i0, 1)
-            out["cage_pocket_deformation_max"] = max(
-                (float(np.max(read("cage_pocket_deformation", a, min(n, a + self.BLOCK)), initial=0.0))
-                 for a in range(i0, n, self.BLOCK)), default=0.0)
+            for k in ("cage_pocket_deformation", "cage_peak_stress"):
+                out[k + "_max"] = max((float(np.max(read(k, a, min(n, a + self.BLOCK)), initial=0.0))
+                                       for a in range(i0, n, self.BLOCK)), default=0.0)
             # mean cage speed from its angle (the cage rattles in its pocket clearance)
             if n - i0 > 1:
                 dth = read("cage_angle", n - 1, n)[0] - read("cage_angle", i0, i0 + 1)[0]
