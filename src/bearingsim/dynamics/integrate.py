@@ -22,7 +22,9 @@ the right-hand sides themselves are cached.
 
 Also here: the linearly implicit W-methods :func:`advance_ros2` (ROS2, second order) and
 :func:`advance_ros34` (ROS34PW2, third order; the default for the lubricated kernel), both with
-a block-diagonal per-ball Jacobian — see docs/dynamics.md for why and for the measurements.
+a block-diagonal per-ball Jacobian, ROS34PW2 also with the inner ring's block and the ring–ball
+coupling (an arrowhead W solved through the ring's Schur complement) — see docs/dynamics.md for
+why and for the measurements.
 
 Determinism: no randomness, fixed arithmetic order, and every call of :func:`advance`
 stops exactly at the requested time and returns the proposed next step, so a run
@@ -442,8 +444,182 @@ def _w_inverse(jac, hs, g, winv, wm):
         _invert_small(wm, winv[b])
 
 
+NR = 10  # inner-ring states (q, q̇) at the start of the state vector
+
+
 @njit
-def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every):
+def _ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1):
+    """Finite-difference ring columns of ∂f/∂y: the ring's own block J_rr (10 × 10) and the balls'
+    dependence on the ring J_br (per ball nbk × 10), one ring component perturbed at a time."""
+    for j in range(NR):
+        for i in range(y.shape[0]):
+            yt[i] = y[i]
+        e = 1e-7 * max(abs(y[j]), 1e4 * atol[j])
+        yt[j] = y[j] + e
+        fun(t, yt, f1, args)
+        for i in range(NR):
+            jrr[i, j] = (f1[i] - f0[i]) / e
+        for b in range(blk.shape[0]):
+            o = blk[b]
+            for i in range(nbk):
+                jbr[b, i, j] = (f1[o + i] - f0[o + i]) / e
+
+
+@njit
+def _ring_rows(jbr, rmass, bmass, jrb):
+    """The ring's dependence on the balls J_rb from J_br by the symmetry of the contact stiffness and
+    damping between two bodies (the force of a contact depends on the bodies' relative position and
+    sliding velocity, and the ring feels minus the ball's force): M_r ∂a_r/∂(x_b, v_b, ω_b) =
+    [M_b ∂a_b/∂(q_r, q̇_r, q̇_r)]ᵀ for the ring's accelerations (rows 5–9); its position rows do not
+    depend on the balls.  An approximation (it drops the asymmetric parts: spin, the ring's
+    gyroscopic terms, lever-arm changes), which a W-method tolerates without loss of order."""
+    for b in range(jbr.shape[0]):
+        mb = bmass[b, 0]
+        jb = bmass[b, 1]
+        for i in range(NR):
+            for j in range(9):
+                jrb[b, i, j] = 0.0
+        for i in range(5):
+            mr = rmass[i]
+            for j in range(3):
+                jrb[b, 5 + i, j] = mb / mr * jbr[b, 3 + j, i]  # positions ↔ ring positions
+                jrb[b, 5 + i, 3 + j] = mb / mr * jbr[b, 3 + j, 5 + i]  # velocities ↔ ring rates
+                jrb[b, 5 + i, 6 + j] = jb / mr * jbr[b, 6 + j, 5 + i]  # angular velocities ↔ ring rates
+
+
+@njit
+def _coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr):
+    """Arrowhead W = I − g hs J with ring block, ball blocks and ring–ball coupling: ball block
+    inverses winv, Q_b = W_bb⁻¹ W_br, and the inverse of the ring's Schur complement
+    S = W_rr − Σ_b W_rb Q_b."""
+    nb = jac.shape[0]
+    nbk = jac.shape[1]
+    c = -g * hs
+    for b in range(nb):
+        for i in range(nbk):
+            for j in range(nbk):
+                wm[i, j] = c * jac[b, i, j]
+            wm[i, i] += 1.0
+        _invert_small(wm, winv[b])
+    for i in range(NR):
+        for j in range(NR):
+            srr[i, j] = c * jrr[i, j]
+        srr[i, i] += 1.0
+    for b in range(nb):
+        for i in range(nbk):
+            for j in range(NR):
+                acc = 0.0
+                for k in range(nbk):
+                    acc += winv[b, i, k] * c * jbr[b, k, j]
+                q[b, i, j] = acc
+        for i in range(NR):
+            for j in range(NR):
+                acc = 0.0
+                for k in range(nbk):
+                    acc += c * jrb[b, i, k] * q[b, k, j]
+                srr[i, j] -= acc
+    _invert_small(srr, sinv)
+
+
+@njit
+def _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
+    """out = W⁻¹ v for the arrowhead W of :func:`_coupled_w` (identity outside ring and balls)."""
+    c = -g * hs
+    for i in range(v.shape[0]):
+        out[i] = v[i]
+    nb = blk.shape[0]
+    for i in range(NR):
+        r[i] = v[i]
+    for b in range(nb):
+        o = blk[b]
+        for i in range(nbk):
+            acc = 0.0
+            for j in range(nbk):
+                acc += winv[b, i, j] * v[o + j]
+            z[b, i] = acc
+        for i in range(NR):
+            acc = 0.0
+            for j in range(nbk):
+                acc += c * jrb[b, i, j] * z[b, j]
+            r[i] -= acc
+    for i in range(NR):
+        acc = 0.0
+        for j in range(NR):
+            acc += sinv[i, j] * r[j]
+        out[i] = acc
+    for b in range(nb):
+        o = blk[b]
+        for i in range(nbk):
+            acc = z[b, i]
+            for j in range(NR):
+                acc -= q[b, i, j] * out[j]
+            out[o + i] = acc
+
+
+@njit
+def _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, v, out):
+    """out = J v for the arrowhead J (ring block, ball blocks, ring–ball coupling)."""
+    for i in range(v.shape[0]):
+        out[i] = 0.0
+    for i in range(NR):
+        acc = 0.0
+        for j in range(NR):
+            acc += jrr[i, j] * v[j]
+        out[i] = acc
+    for b in range(blk.shape[0]):
+        o = blk[b]
+        for i in range(nbk):
+            acc = 0.0
+            for j in range(nbk):
+                acc += jac[b, i, j] * v[o + j]
+            for j in range(NR):
+                acc += jbr[b, i, j] * v[j]
+            out[o + i] = acc
+        for i in range(NR):
+            acc = 0.0
+            for j in range(nbk):
+                acc += jrb[b, i, j] * v[o + j]
+            out[i] += acc
+
+
+@njit
+def _ros34_stages_coupled(fun, args, t, y, hs, f0, jac, jrr, jbr, jrb, winv, q, sinv, blk, nbk,
+                          k1, k2, k3, k4, yt, ft, jv, tv, z, r):
+    """:func:`_ros34_stages` with the arrowhead W and J of the ring–ball coupling."""
+    n = y.shape[0]
+    g = R34_G
+    for i in range(n):
+        ft[i] = hs * f0[i]
+    _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k1, z, r)
+    for i in range(n):
+        yt[i] = y[i] + R34_A21 * k1[i]
+        tv[i] = R34_C21 * k1[i]
+    fun(t + R34_ALPHA2 * hs, yt, ft, args)
+    _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, tv, jv)
+    for i in range(n):
+        ft[i] = hs * (ft[i] + jv[i])
+    _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k2, z, r)
+    for i in range(n):
+        yt[i] = y[i] + R34_A31 * k1[i] + R34_A32 * k2[i]
+        tv[i] = R34_C31 * k1[i] + R34_C32 * k2[i]
+    fun(t + R34_ALPHA3 * hs, yt, ft, args)
+    _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, tv, jv)
+    for i in range(n):
+        ft[i] = hs * (ft[i] + jv[i])
+    _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k3, z, r)
+    for i in range(n):
+        yt[i] = y[i] + R34_A41 * k1[i] + R34_A42 * k2[i] + R34_A43 * k3[i]
+        tv[i] = R34_C41 * k1[i] + R34_C42 * k2[i] + R34_C43 * k3[i]
+    fun(t + R34_ALPHA4 * hs, yt, ft, args)
+    _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, tv, jv)
+    for i in range(n):
+        ft[i] = hs * (ft[i] + jv[i])
+    _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k4, z, r)
+
+
+@njit
+def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every,
+                  rmass=np.zeros(0), bmass=np.zeros((0, 2))):
     """Third-order linearly implicit W-method ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761)
     with the block-diagonal Jacobian of :func:`advance_ros2` (blocks ``blk`` of ``nbk``
     states, finite differences, refreshed every ``jac_every`` steps or after a rejection).
@@ -452,6 +628,11 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
     Jacobian — which omits the ball–ring and ball–cage coupling and ∂f/∂t — costs no
     order; the embedded second-order solution gives err ∝ h³ and the controller
     h ← h·min(5, max(0.2, 0.9 err^(−1/3))).  4 right-hand sides per step.
+    With ``rmass`` = (m, m, m, I_t, I_t) of the inner ring (the first 10 states) and ``bmass``
+    (m, J) per ball block, J also holds the ring's own block and the ring–ball coupling
+    (:func:`_ring_jac`, :func:`_ring_rows`) and W is solved through the ring's Schur complement
+    (:func:`_coupled_w`): the inner ring sliding against all its balls is a stiff mode at low
+    rolling speed (docs/dynamics.md).
     Same arguments and return values as :func:`advance`.
     """
     n = y.shape[0]
@@ -472,6 +653,16 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
     ynew = np.empty(n)
     evec = np.empty(n)
     epsb = np.empty(nb)
+    coupled = rmass.shape[0] == 5
+    nc = nb if coupled else 0
+    jrr = np.zeros((NR, NR))
+    jbr = np.zeros((nc, nbk, NR))
+    jrb = np.zeros((nc, NR, nbk))
+    qm = np.zeros((nc, nbk, NR))
+    sinv = np.zeros((NR, NR))
+    srr = np.zeros((NR, NR))
+    zb = np.zeros((nc, nbk))
+    rr = np.zeros(NR)
     need_jac = True
     since = 0
     h_w = -1.0
@@ -491,13 +682,23 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
             have_f0 = True
         if need_jac or since >= jac_every:
             _block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
+            if coupled:
+                _ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1)
+                _ring_rows(jbr, rmass, bmass, jrb)
             need_jac = False
             since = 0
             h_w = -1.0
         if hs != h_w:
-            _w_inverse(jac, hs, R34_G, winv, wm)
+            if coupled:
+                _coupled_w(jac, jrr, jbr, jrb, hs, R34_G, winv, wm, qm, sinv, srr)
+            else:
+                _w_inverse(jac, hs, R34_G, winv, wm)
             h_w = hs
-        _ros34_stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv)
+        if coupled:
+            _ros34_stages_coupled(fun, args, t, y, hs, f0, jac, jrr, jbr, jrb, winv, qm, sinv, blk, nbk,
+                                  k1, k2, k3, k4, yt, ft, jv, tv, zb, rr)
+        else:
+            _ros34_stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv)
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]

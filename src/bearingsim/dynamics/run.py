@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import BearingSimError, InputError
+from ..statics import _kernels as kn
 from . import forces as fo
 from . import integrate as ig
 from . import model as md
@@ -54,13 +55,21 @@ class Stepper:
         if self.method not in ("dopri5", "ros2w", "ros34w"):
             raise InputError("integrator", f"unknown integrator {self.method!r}", "use dopri5, ros2w or ros34w")
         self._blk = np.array([md.N_RING + md.N_BALL * k for k in range(self.model.n_balls)], dtype=np.int64)
+        # ROS34PW2 also carries the inner ring's block and its coupling with the balls (a stiff mode at
+        # low rolling speed, docs/dynamics.md) unless the ring is held fixed
+        m = self.model
+        if m.gp[md.G_RING_FIXED] > 0.0:
+            self._rmass, self._bmass = np.zeros(0), np.zeros((0, 2))
+        else:
+            self._rmass = np.array([m.gp[md.G_MR]] * 3 + [m.gp[md.G_ITR]] * 2)
+            self._bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
 
     def advance(self, t_end: float) -> None:
         """Integrate to t_end [s]; raises :class:`SimulationError` naming the time and body on failure."""
         if self.method == "ros34w":
             status, t, h = ig.advance_ros34(fo.rhs_args, self._args, self.t, float(t_end), self.y, self.h, self.atol,
                                             self.rtol, self.h_min, self.max_steps_per_interval, self._info, self._blk,
-                                            md.N_BALL, self.jac_every)
+                                            md.N_BALL, self.jac_every, self._rmass, self._bmass)
         elif self.method == "ros2w":
             status, t, h = ig.advance_ros2(fo.rhs_args, self._args, self.t, float(t_end), self.y, self.h, self.atol,
                                            self.rtol, self.h_min, self.max_steps_per_interval, self._info, self._blk,
