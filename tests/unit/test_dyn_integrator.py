@@ -119,7 +119,7 @@ def test_ros34w_is_stable_and_accurate_on_a_stiff_problem():
             y = np.array([1.0, 0.0, 1.0])
             info = np.zeros(4)
             st, t, h = ig.advance_ros34(stiff, (k,), 0.0, 2.0, y, 1e-3, np.full(3, tol), np.zeros(3), 1e-12,
-                                        10**6, info, blk, 3, 20)
+                                        10**6, info, blk, 3, 20, ig.ros34_workspace(1, 3, False))
             assert st == ig.OK and t == 2.0
             steps[(k, tol)] = info[0] + info[1]
             errs.append(max(abs(y[0] - exact[0]), abs(y[1] - exact[1])))
@@ -130,16 +130,19 @@ def test_ros34w_is_stable_and_accurate_on_a_stiff_problem():
 
 
 def test_ros34w_restart_from_t_y_h_is_bitwise():
-    """A run restarted from (t, y, h) after an interval repeats the same steps (checkpoint/resume)."""
+    """A run restarted from (t, y, h) and the integrator's Jacobian after an interval repeats the same steps
+    (checkpoint/resume)."""
     blk = np.array([0], dtype=np.int64)
     atol = np.full(3, 1e-7)
     rtol = np.zeros(3)
     info = np.zeros(4)
     a = np.array([1.0, 0.0, 1.0])
-    _, t1, h1 = ig.advance_ros34(stiff, (1e5,), 0.0, 0.37, a, 1e-3, atol, rtol, 1e-12, 10**6, info, blk, 3, 20)
+    ws = ig.ros34_workspace(1, 3, False)
+    _, t1, h1 = ig.advance_ros34(stiff, (1e5,), 0.0, 0.37, a, 1e-3, atol, rtol, 1e-12, 10**6, info, blk, 3, 20, ws)
     b = a.copy()
-    _, t2, _ = ig.advance_ros34(stiff, (1e5,), t1, 1.0, a, h1, atol, rtol, 1e-12, 10**6, info, blk, 3, 20)
-    _, t3, _ = ig.advance_ros34(stiff, (1e5,), t1, 1.0, b, h1, atol, rtol, 1e-12, 10**6, info, blk, 3, 20)
+    ws_b = tuple(x.copy() for x in ws)  # what a checkpoint holds: t, y, h and the integrator's Jacobian
+    _, t2, _ = ig.advance_ros34(stiff, (1e5,), t1, 1.0, a, h1, atol, rtol, 1e-12, 10**6, info, blk, 3, 20, ws)
+    _, t3, _ = ig.advance_ros34(stiff, (1e5,), t1, 1.0, b, h1, atol, rtol, 1e-12, 10**6, info, blk, 3, 20, ws_b)
     assert t2 == t3 == 1.0
     assert np.array_equal(a, b)
 

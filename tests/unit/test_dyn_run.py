@@ -70,11 +70,15 @@ def _run_cli(args, **kw):
                             **kw)
 
 
-def test_resume_after_sigkill_gives_the_same_trajectory(tmp_path):
+@pytest.mark.parametrize("integrator", ["auto", "ros34w"])
+def test_resume_after_sigkill_gives_the_same_trajectory(tmp_path, integrator):
+    """Bitwise resume with DOPRI5 (the auto choice here) and with ROS34PW2, whose Jacobian lives across
+    output intervals and is saved in the checkpoint."""
     import xarray as xr
 
     case = tmp_path / "case.toml"
-    case.write_text(CASE.format(duration="6 ms"))
+    case.write_text(CASE.format(duration="6 ms").replace('traction = "coulomb"',
+                                                         f'traction = "coulomb"\nintegrator = "{integrator}"'))
     ref = simulate(load_case(case), out=tmp_path / "ref.nc")
     out = tmp_path / "run.nc"
     ckpt = Path(str(out) + ".ckpt.npz")

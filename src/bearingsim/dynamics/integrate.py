@@ -617,8 +617,18 @@ def _ros34_stages_coupled(fun, args, t, y, hs, f0, jac, jrr, jbr, jrb, winv, q, 
     _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k4, z, r)
 
 
+def ros34_workspace(nb: int, nbk: int, coupled: bool) -> tuple:
+    """The Jacobian that :func:`advance_ros34` keeps from one call to the next: (jac [nb, nbk, nbk],
+    J_rr [10, 10], J_br [nc, nbk, 10], J_rb [nc, 10, nbk], state int64[2] = (steps since the refresh,
+    1 when the arrays hold a Jacobian)), nc = nb when the ring is coupled, else 0.  A run restarted
+    from a checkpoint repeats the same steps when the checkpoint holds this workspace too."""
+    nc = nb if coupled else 0
+    return (np.zeros((nb, nbk, nbk)), np.zeros((NR, NR)), np.zeros((nc, nbk, NR)), np.zeros((nc, NR, nbk)),
+            np.zeros(2, dtype=np.int64))
+
+
 @njit
-def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every,
+def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
                   rmass=np.zeros(0), bmass=np.zeros((0, 2))):
     """Third-order linearly implicit W-method ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761)
     with the block-diagonal Jacobian of :func:`advance_ros2` (blocks ``blk`` of ``nbk``
@@ -632,12 +642,14 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
     (m, J) per ball block, J also holds the ring's own block and the ring–ball coupling
     (:func:`_ring_jac`, :func:`_ring_rows`) and W is solved through the ring's Schur complement
     (:func:`_coupled_w`): the inner ring sliding against all its balls is a stiff mode at low
-    rolling speed (docs/dynamics.md).
+    rolling speed (docs/dynamics.md).  ``ws`` (:func:`ros34_workspace`) carries the Jacobian and
+    the steps since its refresh from one call to the next (refreshed every ``jac_every`` steps and
+    after two rejections in a row, and on the first call).
     Same arguments and return values as :func:`advance`.
     """
     n = y.shape[0]
     nb = blk.shape[0]
-    jac = np.zeros((nb, nbk, nbk))
+    jac, jrr, jbr, jrb, jst = ws
     winv = np.zeros((nb, nbk, nbk))
     wm = np.zeros((nbk, nbk))
     f0 = np.empty(n)
@@ -655,16 +667,13 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
     epsb = np.empty(nb)
     coupled = rmass.shape[0] == 5
     nc = nb if coupled else 0
-    jrr = np.zeros((NR, NR))
-    jbr = np.zeros((nc, nbk, NR))
-    jrb = np.zeros((nc, NR, nbk))
     qm = np.zeros((nc, nbk, NR))
     sinv = np.zeros((NR, NR))
     srr = np.zeros((NR, NR))
     zb = np.zeros((nc, nbk))
     rr = np.zeros(NR)
-    need_jac = True
-    since = 0
+    need_jac = jst[1] == 0
+    since = jst[0]
     h_w = -1.0
     nacc = 0
     nrej = 0
@@ -730,6 +739,8 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
             if h < h_min:
                 status = STEP_TOO_SMALL if finite else NOT_FINITE
                 break
+    jst[0] = since
+    jst[1] = 0 if need_jac else 1
     info[0] = nacc
     info[1] = nrej
     return status, t, h

@@ -40,7 +40,7 @@ class Stepper:
     tol: float = 1e-6
     h_min: float = 1e-13
     method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit per ball, for stiff traction)
-    jac_every: int = 80  #: steps between Jacobian refreshes (also refreshed at every call and after two rejections)
+    jac_every: int = 20  #: steps between Jacobian refreshes (also after two rejections in a row)
     max_steps_per_interval: int = 10_000_000
     steps: int = 0
     rejected: int = 0
@@ -63,13 +63,15 @@ class Stepper:
         else:
             self._rmass = np.array([m.gp[md.G_MR]] * 3 + [m.gp[md.G_ITR]] * 2)
             self._bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
+        # the ROS34PW2 Jacobian lives from one call to the next (and in checkpoints)
+        self._ws = ig.ros34_workspace(m.n_balls, md.N_BALL, self._rmass.shape[0] == 5)
 
     def advance(self, t_end: float) -> None:
         """Integrate to t_end [s]; raises :class:`SimulationError` naming the time and body on failure."""
         if self.method == "ros34w":
             status, t, h = ig.advance_ros34(fo.rhs_args, self._args, self.t, float(t_end), self.y, self.h, self.atol,
                                             self.rtol, self.h_min, self.max_steps_per_interval, self._info, self._blk,
-                                            md.N_BALL, self.jac_every, self._rmass, self._bmass)
+                                            md.N_BALL, self.jac_every, self._ws, self._rmass, self._bmass)
         elif self.method == "ros2w":
             status, t, h = ig.advance_ros2(fo.rhs_args, self._args, self.t, float(t_end), self.y, self.h, self.atol,
                                            self.rtol, self.h_min, self.max_steps_per_interval, self._info, self._blk,
@@ -458,7 +460,8 @@ def _checkpoint_path(out: Path) -> Path:
 def _save_checkpoint(path: Path, stepper: Stepper, index: int, fingerprint: str) -> None:
     tmp = path.with_name(path.name + ".tmp.npz")
     np.savez(tmp, t=stepper.t, h=stepper.h, y=stepper.y, index=index, steps=stepper.steps,
-             rejected=stepper.rejected, fingerprint=fingerprint)
+             rejected=stepper.rejected, fingerprint=fingerprint,
+             **{f"jacobian_{i}": a for i, a in enumerate(stepper._ws)})
     os.replace(tmp, path)
 
 
@@ -513,6 +516,8 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
             stepper.h = float(c["h"])
             stepper.steps = int(c["steps"])
             stepper.rejected = int(c["rejected"])
+            for i, a in enumerate(stepper._ws):  # the integrator's Jacobian: the same steps as without the stop
+                a[...] = c[f"jacobian_{i}"]
             start = int(c["index"])
             writer = _Writer(out_path, model, attrs, start)
         else:
