@@ -39,7 +39,7 @@ class Stepper:
     h: float = 1e-7
     tol: float = 1e-6
     h_min: float = 1e-13
-    method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit per ball, for stiff traction)
+    method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit, for stiff traction)
     jac_every: int = 20  #: steps between Jacobian refreshes (also after two rejections in a row)
     max_steps_per_interval: int = 10_000_000
     steps: int = 0
@@ -516,8 +516,12 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
             stepper.h = float(c["h"])
             stepper.steps = int(c["steps"])
             stepper.rejected = int(c["rejected"])
-            for i, a in enumerate(stepper._ws):  # the integrator's Jacobian: the same steps as without the stop
-                a[...] = c[f"jacobian_{i}"]
+            # the integrator's Jacobian: the same steps as without the stop (a checkpoint of an older version
+            # has none: the run then starts from a fresh Jacobian, the same trajectory to the tolerance)
+            saved = [c[f"jacobian_{i}"] if f"jacobian_{i}" in c.files else None for i in range(len(stepper._ws))]
+            if all(v is not None and v.shape == a.shape for v, a in zip(saved, stepper._ws)):
+                for v, a in zip(saved, stepper._ws):
+                    a[...] = v
             start = int(c["index"])
             writer = _Writer(out_path, model, attrs, start)
         else:
