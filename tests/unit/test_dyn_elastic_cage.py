@@ -22,48 +22,15 @@ from bearingsim.dynamics.run import Stepper
 from bearingsim.errors import InputError
 from bearingsim.io import load_bearing
 from bearingsim.statics import _kernels as kn
-from bearingsim.statics import jones_harris as jh
+from test_dyn_energy import _setup as _kicked_hub_row
+from test_dyn_energy import total_energy
 
 SOFT = {"young_modulus": 1e8, "density": 1100.0}  # a rubber-soft cage: modes at ~100 Hz take energy
 
 
-def total_energy(m, st):
-    y = st.y
-    gp = m.gp
-    e = 0.5 * gp[md.G_MR] * np.sum(y[5:8] ** 2) + 0.5 * gp[md.G_ITR] * np.sum(y[8:10] ** 2)
-    for k in range(m.n_balls):
-        o = md.N_RING + md.N_BALL * k
-        par = m.rows[m.ball_row[k]]
-        e += 0.5 * par[kn.P_MASS] * np.sum(y[o + 3:o + 6] ** 2) + 0.5 * par[kn.P_JB] * np.sum(y[o + 6:o + 9] ** 2)
-    emodal = 0.0
-    for c in range(m.n_cages):
-        o = m.cage_offset + md.N_CAGE * c
-        cp = m.cp[c]
-        e += 0.5 * cp[md.C_MASS] * np.sum(y[o + 3:o + 6] ** 2) + 0.5 * cp[md.C_IP] * y[o + 9] ** 2 + \
-            0.5 * cp[md.C_IT] * np.sum(y[o + 10:o + 12] ** 2)
-        _, etad = m.mode_slices(c)
-        emodal += 0.5 * np.sum(y[etad] ** 2)
-    s = st.sample()
-    emodal += s["cage_strain_energy"]
-    return e + emodal + s["contact_potential_energy"] - s["applied_load"][0] * y[0], e, emodal
-
-
 def _setup(tol, n_modes=8, ring=SOFT, damping=0.0):
-    b = load_bearing("hub-seed001-row")
-    fa = 2000.0
-    res = jh.solve(b, jh.Loads(fa=fa), 0.0)
-    m = md.build_model(b, traction="none", damping_alpha=0.0, ring_mass=1.5, cage_mu=0.0, pocket_clearance=2e-5,
-                       cage_modes=n_modes, cage_ring=ring, modal_damping=damping if n_modes else None)
-    y = md.initial_state(m, res)
-    y[5:10] = (2e-3, 1e-3, -1.5e-3, 0.05, -0.04)
-    for k in range(m.n_balls):
-        o = md.N_RING + md.N_BALL * k
-        psi = m.ball_psi[k]
-        vt = 0.02 * (1 if k % 2 else -1)
-        y[o + 4] += -vt * math.sin(psi)
-        y[o + 5] += vt * math.cos(psi)
-        y[o + 6:o + 9] += (3.0 * (k % 3), -2.0, 1.0)
-    return m, Stepper(m, fo.constant_loads(fa=fa), y, tol=tol)
+    """The energy test's kicked hub row (test_dyn_energy) with elastic cages."""
+    return _kicked_hub_row(tol, cage_modes=n_modes, cage_ring=ring, modal_damping=damping if n_modes else None)
 
 
 def test_state_layout_and_mass_from_the_ring():

@@ -558,9 +558,9 @@ def _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
 
 @njit
 def _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, v, out):
-    """out = J v for the arrowhead J (ring block, ball blocks, ring–ball coupling)."""
-    for i in range(v.shape[0]):
-        out[i] = 0.0
+    """out = J v for the arrowhead J: the ball blocks (:func:`_jac_vec`), the ring block and the
+    ring–ball coupling."""
+    _jac_vec(jac, blk, nbk, v, out)
     for i in range(NR):
         acc = 0.0
         for j in range(NR):
@@ -570,11 +570,9 @@ def _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, v, out):
         o = blk[b]
         for i in range(nbk):
             acc = 0.0
-            for j in range(nbk):
-                acc += jac[b, i, j] * v[o + j]
             for j in range(NR):
                 acc += jbr[b, i, j] * v[j]
-            out[o + i] = acc
+            out[o + i] += acc
         for i in range(NR):
             acc = 0.0
             for j in range(nbk):
