@@ -250,9 +250,7 @@ def test_coupled_ring_jacobian_lifts_the_low_speed_step_limit():
     warm.advance(2e-4)
     runs = {}
     for coupled in (True, False):
-        st = Stepper(m, ls, warm.y.copy(), t=warm.t, h=warm.h, tol=1e-6, method="ros34w")
-        if not coupled:
-            st._rmass, st._bmass = np.zeros(0), np.zeros((0, 2))
+        st = Stepper(m, ls, warm.y.copy(), t=warm.t, h=warm.h, tol=1e-6, method="ros34w", ring_coupling=coupled)
         st.advance(warm.t + 5e-5)
         runs[coupled] = st
     assert runs[False].steps > 5 * runs[True].steps, (runs[False].steps, runs[True].steps)

@@ -359,39 +359,67 @@ def _jac_vec(jac, blk, nbk, v, out):
 
 
 @njit
-def _ros34_stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv):
-    """The four stages of ROS34PW2 (k_i include the factor h); f0 = f(t, y)."""
+def _w_solve(winv, blk, nbk, hs, cpl, v, out):
+    """out = W⁻¹ v: block-diagonal W, or the arrowhead W of the ring–ball coupling when ``cpl`` holds it."""
+    jrr, jbr, jrb, q, sinv, z, r = cpl
+    if jbr.shape[0] > 0:
+        _coupled_apply_w(winv, q, sinv, jrb, hs, R34_G, blk, nbk, v, out, z, r)
+    else:
+        _apply_w(winv, blk, nbk, v, out)
+
+
+@njit
+def _j_times(jac, blk, nbk, cpl, v, out):
+    """out = J v (ball blocks, plus the ring block and the coupling when ``cpl`` holds them)."""
+    jrr, jbr, jrb, q, sinv, z, r = cpl
+    if jbr.shape[0] > 0:
+        _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, v, out)
+    else:
+        _jac_vec(jac, blk, nbk, v, out)
+
+
+@njit
+def no_coupling(nbk):
+    """The ``cpl`` argument of :func:`_ros34_stages` without the ring–ball coupling."""
+    return (np.zeros((NR, NR)), np.zeros((0, nbk, NR)), np.zeros((0, NR, nbk)), np.zeros((0, nbk, NR)),
+            np.zeros((NR, NR)), np.zeros((0, nbk)), np.zeros(NR))
+
+
+@njit
+def _ros34_stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv, cpl):
+    """The four stages of ROS34PW2 (k_i include the factor h); f0 = f(t, y); ``cpl`` = (J_rr, J_br,
+    J_rb, Q, S⁻¹, work, work) of the ring–ball coupling (:func:`_coupled_w`) or :func:`no_coupling`."""
     n = y.shape[0]
     for i in range(n):
         ft[i] = hs * f0[i]
-    _apply_w(winv, blk, nbk, ft, k1)
+    _w_solve(winv, blk, nbk, hs, cpl, ft, k1)
     # stage 2
     for i in range(n):
         yt[i] = y[i] + R34_A21 * k1[i]
         tv[i] = R34_C21 * k1[i]
     fun(t + R34_ALPHA2 * hs, yt, ft, args)
-    _jac_vec(jac, blk, nbk, tv, jv)
+    _j_times(jac, blk, nbk, cpl, tv, jv)
     for i in range(n):
         ft[i] = hs * (ft[i] + jv[i])
-    _apply_w(winv, blk, nbk, ft, k2)
+    _w_solve(winv, blk, nbk, hs, cpl, ft, k2)
     # stage 3
     for i in range(n):
         yt[i] = y[i] + R34_A31 * k1[i] + R34_A32 * k2[i]
         tv[i] = R34_C31 * k1[i] + R34_C32 * k2[i]
     fun(t + R34_ALPHA3 * hs, yt, ft, args)
-    _jac_vec(jac, blk, nbk, tv, jv)
+    _j_times(jac, blk, nbk, cpl, tv, jv)
     for i in range(n):
         ft[i] = hs * (ft[i] + jv[i])
-    _apply_w(winv, blk, nbk, ft, k3)
+    _w_solve(winv, blk, nbk, hs, cpl, ft, k3)
     # stage 4
     for i in range(n):
         yt[i] = y[i] + R34_A41 * k1[i] + R34_A42 * k2[i] + R34_A43 * k3[i]
         tv[i] = R34_C41 * k1[i] + R34_C42 * k2[i] + R34_C43 * k3[i]
     fun(t + R34_ALPHA4 * hs, yt, ft, args)
-    _jac_vec(jac, blk, nbk, tv, jv)
+    _j_times(jac, blk, nbk, cpl, tv, jv)
     for i in range(n):
         ft[i] = hs * (ft[i] + jv[i])
-    _apply_w(winv, blk, nbk, ft, k4)
+    _w_solve(winv, blk, nbk, hs, cpl, ft, k4)
 
 
 @njit
@@ -580,41 +608,6 @@ def _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, v, out):
             out[i] += acc
 
 
-@njit
-def _ros34_stages_coupled(fun, args, t, y, hs, f0, jac, jrr, jbr, jrb, winv, q, sinv, blk, nbk,
-                          k1, k2, k3, k4, yt, ft, jv, tv, z, r):
-    """:func:`_ros34_stages` with the arrowhead W and J of the ring–ball coupling."""
-    n = y.shape[0]
-    g = R34_G
-    for i in range(n):
-        ft[i] = hs * f0[i]
-    _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k1, z, r)
-    for i in range(n):
-        yt[i] = y[i] + R34_A21 * k1[i]
-        tv[i] = R34_C21 * k1[i]
-    fun(t + R34_ALPHA2 * hs, yt, ft, args)
-    _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, tv, jv)
-    for i in range(n):
-        ft[i] = hs * (ft[i] + jv[i])
-    _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k2, z, r)
-    for i in range(n):
-        yt[i] = y[i] + R34_A31 * k1[i] + R34_A32 * k2[i]
-        tv[i] = R34_C31 * k1[i] + R34_C32 * k2[i]
-    fun(t + R34_ALPHA3 * hs, yt, ft, args)
-    _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, tv, jv)
-    for i in range(n):
-        ft[i] = hs * (ft[i] + jv[i])
-    _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k3, z, r)
-    for i in range(n):
-        yt[i] = y[i] + R34_A41 * k1[i] + R34_A42 * k2[i] + R34_A43 * k3[i]
-        tv[i] = R34_C41 * k1[i] + R34_C42 * k2[i] + R34_C43 * k3[i]
-    fun(t + R34_ALPHA4 * hs, yt, ft, args)
-    _coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, tv, jv)
-    for i in range(n):
-        ft[i] = hs * (ft[i] + jv[i])
-    _coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, ft, k4, z, r)
-
-
 def ros34_workspace(nb: int, nbk: int, coupled: bool) -> tuple:
     """The Jacobian that :func:`advance_ros34` keeps from one call to the next: (jac [nb, nbk, nbk],
     J_rr [10, 10], J_br [nc, nbk, 10], J_rb [nc, 10, nbk], state int64[2] = (steps since the refresh,
@@ -670,6 +663,8 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
     srr = np.zeros((NR, NR))
     zb = np.zeros((nc, nbk))
     rr = np.zeros(NR)
+    # the coupling's arrays, or empty ones (then W and J are the per-ball blocks alone)
+    cpl = (jrr, jbr, jrb, qm, sinv, zb, rr) if coupled else no_coupling(nbk)
     need_jac = jst[1] == 0
     since = jst[0]
     h_w = -1.0
@@ -701,11 +696,7 @@ def advance_ros34(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
             else:
                 _w_inverse(jac, hs, R34_G, winv, wm)
             h_w = hs
-        if coupled:
-            _ros34_stages_coupled(fun, args, t, y, hs, f0, jac, jrr, jbr, jrb, winv, qm, sinv, blk, nbk,
-                                  k1, k2, k3, k4, yt, ft, jv, tv, zb, rr)
-        else:
-            _ros34_stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv)
+        _ros34_stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv, cpl)
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
@@ -756,6 +747,7 @@ def fixed_steps_ros34(fun, args, t, y, h, nsteps, blk, nbk):
     winv = np.zeros((nb, nk, nk))
     wm = np.zeros((nk, nk))
     bl = blk[:nb]
+    cpl = no_coupling(nk)
     f0 = np.empty(n)
     f1 = np.empty(n)
     k1 = np.empty(n)
@@ -773,7 +765,7 @@ def fixed_steps_ros34(fun, args, t, y, h, nsteps, blk, nbk):
         if nb > 0:
             _block_jac(fun, args, t, y, f0, atol, bl, nk, jac, yt, f1, epsb)
             _w_inverse(jac, h, R34_G, winv, wm)
-        _ros34_stages(fun, args, t, y, h, f0, jac, winv, bl, nk, k1, k2, k3, k4, yt, ft, jv, tv)
+        _ros34_stages(fun, args, t, y, h, f0, jac, winv, bl, nk, k1, k2, k3, k4, yt, ft, jv, tv, cpl)
         for i in range(n):
             y[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
         t += h

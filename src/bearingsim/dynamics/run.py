@@ -41,6 +41,7 @@ class Stepper:
     h_min: float = 1e-13
     method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit, for stiff traction)
     jac_every: int = 20  #: steps between Jacobian refreshes (also after two rejections in a row)
+    ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
     max_steps_per_interval: int = 10_000_000
     steps: int = 0
     rejected: int = 0
@@ -58,7 +59,7 @@ class Stepper:
         # ROS34PW2 also carries the inner ring's block and its coupling with the balls (a stiff mode at
         # low rolling speed, docs/dynamics.md) unless the ring is held fixed
         m = self.model
-        if m.gp[md.G_RING_FIXED] > 0.0:
+        if m.gp[md.G_RING_FIXED] > 0.0 or not self.ring_coupling:
             self._rmass, self._bmass = np.zeros(0), np.zeros((0, 2))
         else:
             self._rmass = np.array([m.gp[md.G_MR]] * 3 + [m.gp[md.G_ITR]] * 2)
