@@ -76,6 +76,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .errors import ConvergenceError, InputError
+from .materials import LIBRARY as _MATERIALS
+
+_CAGE_STEEL = _MATERIALS["cage_steel"]  #: default cage material (assumed; materials.py)
 
 __all__ = ["CageRing", "CageFE", "CageModes", "default_cage_ring", "assemble", "cage_modes",
            "rect_torsion_constant", "cowper_shear_coefficient", "section_properties", "RESULTANTS",
@@ -152,7 +155,7 @@ class CageRing:
     pocket_diameter : float [m]  d_p < b (two side rails of width (b − d_p)/2 remain beside each
         pocket) and d_p < 2R sin(π/Z) (a bridge remains between pockets on the centroid circle)
     first_pocket_azimuth : float [rad]  φ_0; pocket j at φ_j = φ_0 + 2π j / Z
-    young_modulus [Pa], poisson [-], density [kg/m³]  (defaults: steel 2.06e11, 0.3, 7850)
+    young_modulus [Pa], poisson [-], density [kg/m³]  (defaults: ``cage_steel`` of materials.py, 2.06e11, 0.3, 7850)
     elements_per_pitch : int  even ≥ 4 (≥ 2 without pockets); nodes at every pocket centre and
         mid-bridge, and (with pockets) at the pocket edges ±α, α = arcsin(d_p/2R)
     pockets : bool  False: a uniform b × t ring (pocket_diameter then only fixes nothing but
@@ -168,9 +171,9 @@ class CageRing:
     pocket_count: int
     pocket_diameter: float
     first_pocket_azimuth: float = 0.0
-    young_modulus: float = 2.06e11
-    poisson: float = 0.3
-    density: float = 7850.0
+    young_modulus: float = _CAGE_STEEL.youngs_modulus
+    poisson: float = _CAGE_STEEL.poisson_ratio
+    density: float = _CAGE_STEEL.density
     elements_per_pitch: int = 8
     pockets: bool = True
     shear_deformation: bool = True

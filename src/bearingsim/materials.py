@@ -66,6 +66,10 @@ LIBRARY: dict[str, Material] = {
         "Harris & Kotzalas, Rolling Bearing Analysis 5th ed. (2007), worked examples for AISI 52100: "
         "E = 2.075e11 Pa, nu = 0.3; density 7800 kg/m3 is a typical 52100 value (estimate, "
         "not taken from Harris)"),
+    "cage_steel": Material(
+        "cage_steel", 2.06e11, 0.30, 7850.0,
+        "ASSUMED pressed-steel cage (typical low-carbon sheet steel: E = 206 GPa, nu = 0.3, 7850 kg/m3); "
+        "neither seed gives the cage material"),
 }
 
 

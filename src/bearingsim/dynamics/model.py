@@ -241,14 +241,20 @@ def bearing_rows(bearing, nrow: int) -> list:
                      "give a BallBearing or an arrangement exposing its rows")
 
 
-def steel_cage_constant(ball_diameter: float, ball_material, cage_modulus: float = 2.06e11,
-                        cage_poisson: float = 0.3) -> float:
-    """Hertz constant K [N/m^1.5] of a ball on a flat cage surface, Q = K δ^1.5.
+def cage_contact_constant(ball_diameter: float, ball_material, cage_modulus: float | None = None,
+                          cage_poisson: float | None = None) -> float:
+    """Hertz constant K [N/m^1.5] of a ball on a flat cage surface, Q = K δ^1.5; cage modulus [Pa] and
+    Poisson ratio default to ``cage_steel`` of :mod:`bearingsim.materials`.
 
     Sphere on a flat (Johnson 1985 eq. 4.22): Q = (4/3) E* R^½ δ^(3/2) with R = D/2 and
     1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂.  The conformal cylindrical pocket is stiffer; this
     is a lower bound chosen so that the pocket contact is not the stiffest time scale.
     """
+    from ..materials import LIBRARY
+
+    steel = LIBRARY["cage_steel"]
+    cage_modulus = steel.youngs_modulus if cage_modulus is None else cage_modulus
+    cage_poisson = steel.poisson_ratio if cage_poisson is None else cage_poisson
     e_star = 1.0 / ((1 - ball_material.poisson_ratio**2) / ball_material.youngs_modulus
                     + (1 - cage_poisson**2) / cage_modulus)
     return 4.0 / 3.0 * e_star * math.sqrt(0.5 * ball_diameter)
@@ -337,7 +343,7 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
         cp[r, C_XP] = rowx[r, X_XGO] + s * lo * math.sin(a0)
         cp[r, C_RP] = rowx[r, X_RGO] + lo * math.cos(a0)
         cp[r, C_CLR] = clr
-        cp[r, C_KC] = steel_cage_constant(d, b.ball_material) if cage_stiffness is None else cage_stiffness
+        cp[r, C_KC] = cage_contact_constant(d, b.ball_material) if cage_stiffness is None else cage_stiffness
         cp[r, C_MU] = cage_mu
         cp[r, C_GUIDE] = GUIDANCE[guidance]
         if guidance == "outer-land":
@@ -375,6 +381,11 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
         attach_elastic_cages(model, cage_modes, cage_ring,
                              DEFAULT_MODAL_DAMPING if modal_damping is None else modal_damping,
                              cage_mass_given=cage_mass is not None)
+        if cage_stiffness is None:  # the pockets touch the ring's material (e.g. a polymer cage), not steel
+            for r in range(nrow):
+                ring = model.cage_fe[r].fe.ring
+                cp[r, C_KC] = cp[r, C_KLAND] = cage_contact_constant(rows[r, kn.P_D], brs[r].ball_material,
+                                                                     ring.young_modulus, ring.poisson)
     return model
 
 
