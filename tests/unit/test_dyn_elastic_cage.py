@@ -106,8 +106,12 @@ def _modal_equilibrium(m, y):
         dy, _, _ = fo.evaluate(m, 0.0, yy, loads, want_diag=False)
         return dy[etad]
 
-    sol = root(g, np.zeros(eta.stop - eta.start), method="hybr", tol=1e-12)
-    assert sol.success, sol.message
+    x0 = np.zeros(eta.stop - eta.start)
+    sol = root(g, x0, method="hybr", tol=1e-12)
+    # judge the equilibrium by its residual, not by MINPACK's step test: scipy >= 1.17 reports "not making good
+    # progress" at tol 1e-12 once the residual is at round-off (4.7e-11 of an initial 973 here)
+    res0, res = np.abs(g(x0)).max(), np.abs(g(sol.x)).max()
+    assert res <= 1e-12 * res0, f"modal equilibrium residual {res:.3g} of {res0:.3g} ({sol.message})"
     y = y.copy()
     y[eta] = sol.x / w2
     _, diag, _ = fo.evaluate(m, 0.0, y, loads)
