@@ -44,26 +44,24 @@ from numba import njit
 
 from ..contact import slices as _sl
 from ..statics import _kernels as kn
-from . import model as md
+from . import layout as ly
 
-# per-ball diagnostics columns
-D_QI, D_QO, D_AI, D_AO, D_DI, D_DO, D_WM, D_WR, D_SRI, D_SRO, D_PI, D_PO, D_QC, D_PC, D_BETA = range(15)
-NDB = 15
-# global diagnostics
-(GD_FA, GD_FRY, GD_FRZ, GD_MY, GD_MZ, GD_TQI, GD_TQO, GD_PI, GD_PO, GD_PC, GD_PL, GD_W, GD_EPOT,
- GD_ECAGE) = range(14)
-NDG = 14
+# diagnostics columns (re-exported: ``forces.D_QI``, ``forces.GD_PI`` ... keep working)
+from .layout import (  # noqa: E402, F401
+    D_AI, D_AO, D_BETA, D_DI, D_DO, D_PC, D_PI, D_PO, D_QC, D_QI, D_QO, D_SRI, D_SRO, D_WM, D_WR, GD_ECAGE,
+    GD_EPOT, GD_FA, GD_FRY, GD_FRZ, GD_MY, GD_MZ, GD_PC, GD_PI, GD_PL, GD_PO, GD_TQI, GD_TQO, GD_W, NDB, NDG,
+)
 
 
 @njit(cache=True)
 def speed_at(t, gp):
     """Shaft speed Ω(t) [rad/s]: constant, or a linear ramp from Ω₀ to Ω₁ over t_ramp."""
-    tr = gp[md.G_TRAMP]
+    tr = gp[ly.G_TRAMP]
     if tr > 0.0 and t < tr:
-        return gp[md.G_W0] + (gp[md.G_W1] - gp[md.G_W0]) * t / tr
+        return gp[ly.G_W0] + (gp[ly.G_W1] - gp[ly.G_W0]) * t / tr
     if tr > 0.0:
-        return gp[md.G_W1]
-    return gp[md.G_W0]
+        return gp[ly.G_W1]
+    return gp[ly.G_W0]
 
 
 @njit(cache=True)
@@ -258,7 +256,7 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
     mr[0] += gr1 * q * u2 - gr2 * q * u1
     mr[1] += gr2 * q * u0 - gr0 * q * u2
     mr[2] += gr0 * q * u1 - gr1 * q * u0
-    mode = int(gp[md.G_TRAC])
+    mode = int(gp[ly.G_TRAC])
     nrm = tbuf[0:3]
     cen = tbuf[3:6]
     maj = tbuf[6:9]
@@ -310,13 +308,13 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
         return
     q13 = q ** (1.0 / 3.0)
     if mode == 1:
-        coulomb_slices(q, a_c * q13, r_dev, cen, nrm, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[md.G_MU0],
-                       gp[md.G_S0], gp[md.G_VREF], int(gp[md.G_NSL]), out)
+        coulomb_slices(q, a_c * q13, r_dev, cen, nrm, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[ly.G_MU0],
+                       gp[ly.G_S0], gp[ly.G_VREF], int(gp[ly.G_NSL]), out)
     else:
         for i in range(3):
             t1[i] = -nrm[i]
         _sl.contact_traction(q, a_c * q13, b_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, lub,
-                             int(gp[md.G_NSL]), out)
+                             int(gp[ly.G_NSL]), out)
     res[6] = out[9]
     for i in range(3):
         fb[i] += out[i]
@@ -391,10 +389,10 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
     omega = speed_at(t, gp)
-    alpha = gp[md.G_ALPHA]
-    g0 = gp[md.G_GX]
-    g1 = gp[md.G_GX + 1]
-    g2 = gp[md.G_GX + 2]
+    alpha = gp[ly.G_ALPHA]
+    g0 = gp[ly.G_GX]
+    g1 = gp[ly.G_GX + 1]
+    g2 = gp[ly.G_GX + 2]
     rm = np.empty((3, 3))
     _rot_yz(y[3], y[4], rm)
     cy = math.cos(y[3])
@@ -438,7 +436,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
     for k in range(nb):
         r = ball_row[k]
         par = rows[r]
-        o = md.N_RING + md.N_BALL * k
+        o = ly.N_RING + ly.N_BALL * k
         b = y[o:o + 3]
         v = y[o + 3:o + 6]
         w = y[o + 6:o + 9]
@@ -455,7 +453,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         rr = math.hypot(bp[1], bp[2])
         cps = bp[1] / rr
         sps = bp[2] / rr
-        xgi = rowx[r, md.X_XGI]
+        xgi = rowx[r, ly.X_XGI]
         ric = par[kn.P_RIC]
         for i in range(3):
             gr[i] = rm[i, 0] * xgi + rm[i, 1] * ric * cps + rm[i, 2] * ric * sps
@@ -465,7 +463,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         for i in range(3):
             vg[i] += cd[i]
         race_contact(b, v, w, g, vg, worb, c, cd, wring, par[kn.P_KI], par[kn.P_RI], half_d, alpha, lubs[2 * r], gp,
-                     rowx[r, md.X_CAI], rowx[r, md.X_CBI], rowx[r, md.X_RDI], tang, fb, mb, fring, mring, res, tbuf)
+                     rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang, fb, mb, fring, mring, res, tbuf)
         qi = res[0]
         di = res[1]
         if want:
@@ -486,15 +484,15 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         rr = math.hypot(b[1], b[2])
         cps = b[1] / rr
         sps = b[2] / rr
-        rgo = rowx[r, md.X_RGO]
-        g[0] = rowx[r, md.X_XGO]
+        rgo = rowx[r, ly.X_RGO]
+        g[0] = rowx[r, ly.X_XGO]
         g[1] = rgo * cps
         g[2] = rgo * sps
         tang[0] = 0.0
         tang[1] = -sps
         tang[2] = cps
         race_contact(b, v, w, g, zero3, worb, ocen, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha, lubs[2 * r + 1], gp,
-                     rowx[r, md.X_CAO], rowx[r, md.X_CBO], rowx[r, md.X_RDO], tang, fb, mb, fout, mout, res, tbuf)
+                     rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang, fb, mb, fout, mout, res, tbuf)
         if want:
             s = par[kn.P_SIGN]
             diag[k, D_QO] = res[0]
@@ -530,7 +528,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         dy[o + 7] = mb[1] / jb
         dy[o + 8] = mb[2] / jb
     # ---- cages
-    oc0 = md.N_RING + md.N_BALL * nb
+    oc0 = ly.N_RING + ly.N_BALL * nb
     ncage = cp.shape[0]
     rcm = np.empty((3, 3))
     occ = np.empty(3)
@@ -557,10 +555,10 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
     fm = np.empty(cm.shape[1])
     e_cage = 0.0
     for ci in range(ncage):
-        o = oc0 + md.N_CAGE * ci
+        o = oc0 + ly.N_CAGE * ci
         cpar = cp[ci]
-        nm = int(cpar[md.C_NMODES])
-        om0 = int(cpar[md.C_MODE0])
+        nm = int(cpar[ly.C_NMODES])
+        om0 = int(cpar[ly.C_MODE0])
         for kk in range(nm):
             fm[kk] = 0.0
         th = y[o + 6]
@@ -577,7 +575,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
             rcm[i, 0] = rm[i, 0]
             rcm[i, 1] = rm[i, 1] * ct + rm[i, 2] * st
             rcm[i, 2] = -rm[i, 1] * st + rm[i, 2] * ct
-        occ[0] = cpar[md.C_XP] + y[o]
+        occ[0] = cpar[ly.C_XP] + y[o]
         occ[1] = y[o + 1]
         occ[2] = y[o + 2]
         vc = y[o + 3:o + 6]
@@ -589,22 +587,22 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         for i in range(3):
             fc[i] = 0.0
             mc[i] = 0.0
-        z = int(cpar[md.C_Z])
-        b0 = int(cpar[md.C_BALL0])
-        rp = cpar[md.C_RP]
-        clr = cpar[md.C_CLR]
-        kcg = cpar[md.C_KC]
-        mu = cpar[md.C_MU]
-        vref = gp[md.G_VREF]
-        if gp[md.G_CAGE_ON] > 0.0:
+        z = int(cpar[ly.C_Z])
+        b0 = int(cpar[ly.C_BALL0])
+        rp = cpar[ly.C_RP]
+        clr = cpar[ly.C_CLR]
+        kcg = cpar[ly.C_KC]
+        mu = cpar[ly.C_MU]
+        vref = gp[ly.G_VREF]
+        if gp[ly.G_CAGE_ON] > 0.0:
             for j in range(z):
                 k = b0 + j
-                ob = md.N_RING + md.N_BALL * k
+                ob = ly.N_RING + ly.N_BALL * k
                 b = y[ob:ob + 3]
                 v = y[ob + 3:ob + 6]
                 w = y[ob + 6:ob + 9]
                 half_d = 0.5 * rows[ball_row[k], kn.P_D]
-                phi = cpar[md.C_PSI0] + 2.0 * math.pi * j / z
+                phi = cpar[ly.C_PSI0] + 2.0 * math.pi * j / z
                 cph = math.cos(phi)
                 sph = math.sin(phi)
                 for i in range(3):
@@ -647,7 +645,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
                 ur = wpk[1] * cph + wpk[2] * sph
                 ux = wpk[0]
                 # nearest point of the pocket surface to the ball centre (closed form) and the penetration
-                qt, qr, qx = pocket_point(int(cpar[md.C_SHAPE]), cpar[md.C_POCKET], half_d + clr, ut, ur, ux)
+                qt, qr, qx = pocket_point(int(cpar[ly.C_SHAPE]), cpar[ly.C_POCKET], half_d + clr, ut, ur, ux)
                 e0 = ut - qt
                 e1 = ur - qr
                 e2 = ux - qx
@@ -738,7 +736,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
                     p_cage += ploss
                     epot += 0.4 * kcg * best ** 2.5
         # ---- land guidance
-        guide = int(cpar[md.C_GUIDE])
+        guide = int(cpar[ly.C_GUIDE])
         if guide > 0:
             if guide == 1:
                 e0 = 0.0
@@ -752,15 +750,15 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
                 e1 = tmp[1] - pr * ax[1]
                 e2 = tmp[2] - pr * ax[2]
             ecc = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
-            pen = ecc - cpar[md.C_CLAND]
+            pen = ecc - cpar[ly.C_CLAND]
             if pen > 0.0:
-                qn = cpar[md.C_KLAND] * pen * math.sqrt(pen)
+                qn = cpar[ly.C_KLAND] * pen * math.sqrt(pen)
                 nvec[0] = e0 / ecc
                 nvec[1] = e1 / ecc
                 nvec[2] = e2 / ecc
                 sgn = 1.0 if guide == 1 else -1.0
                 for i in range(3):
-                    half[i] = sgn * nvec[i] * cpar[md.C_RLAND]
+                    half[i] = sgn * nvec[i] * cpar[ly.C_RLAND]
                 _cross(wc, half, vcp)
                 for i in range(3):
                     vcp[i] += vc[i]
@@ -780,7 +778,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
                 for i in range(3):
                     ff[i] = (vcp[i] - vbp[i]) - vn * nvec[i]
                     vt2 += ff[i] * ff[i]
-                cf = -cpar[md.C_MULAND] * qn / math.sqrt(vt2 + vref * vref)
+                cf = -cpar[ly.C_MULAND] * qn / math.sqrt(vt2 + vref * vref)
                 for i in range(3):
                     p_land -= cf * ff[i] * ff[i]
                     ftot[i] = -qn * nvec[i] + cf * ff[i]
@@ -796,10 +794,10 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
                     for i in range(3):
                         mring[i] -= pw[i]
                 if want:
-                    epot += 0.4 * cpar[md.C_KLAND] * pen ** 2.5
-        mcg = cpar[md.C_MASS]
-        ip = cpar[md.C_IP]
-        itc = cpar[md.C_IT]
+                    epot += 0.4 * cpar[ly.C_KLAND] * pen ** 2.5
+        mcg = cpar[ly.C_MASS]
+        ip = cpar[ly.C_IP]
+        itc = cpar[ly.C_IT]
         dy[o] = y[o + 3]
         dy[o + 1] = y[o + 4]
         dy[o + 2] = y[o + 5]
@@ -821,14 +819,14 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
             dy[om0 + nm + kk] = fm[kk] - cm[ci, kk, 1] * ed - wk * wk * et
             e_cage += 0.5 * wk * wk * et * et
     # ---- inner ring
-    xl = gp[md.G_XL]
-    if gp[md.G_RING_FIXED] > 0.0:
+    xl = gp[ly.G_XL]
+    if gp[ly.G_RING_FIXED] > 0.0:
         for i in range(10):
             dy[i] = 0.0
     else:
-        mr = gp[md.G_MR]
-        itr = gp[md.G_ITR]
-        ipr = gp[md.G_IPR]
+        mr = gp[ly.G_MR]
+        itr = gp[ly.G_ITR]
+        ipr = gp[ly.G_IPR]
         dy[0] = y[5]
         dy[1] = y[6]
         dy[2] = y[7]

@@ -12,16 +12,9 @@ Bodies (inertial frame, x the bearing axis, ψ = 0 on +y, outer ring fixed):
   An elastic cage adds n_c modal coordinates η and their rates η̇ (mode synthesis, see
   :mod:`.cage`), stored after all bodies so that every other offset stays fixed.
 
-State vector y (float64), in this order::
-
-    [0:5]    q   = (δx, δy, δz, γy, γz) of the inner ring [m, rad]
-    [5:10]   q̇                                            [m/s, rad/s]
-    [10 + 9k : 10 + 9k + 9]  ball k: r(3) [m], v(3) [m/s], ω(3) [rad/s]
-    [OC + 12c : OC + 12c + 12] cage c: r(3), v(3), θ, βy, βz, θ̇, β̇y, β̇z
-    [M_c : M_c + n_c], [M_c + n_c : M_c + 2 n_c]  η, η̇ of cage c (cp[c, C_MODE0] = M_c)
-
-with OC = 10 + 9 n_balls and M_0 = OC + 12 n_cages.  Geometry comes from the kernel row parameters of the
-statics (layout P_* in :mod:`bearingsim.statics._kernels`): per row the inner groove
+The state vector and every parameter array are laid out as documented in :mod:`.layout` (the
+names ``N_*``, ``X_*``, ``G_*``, ``C_*`` are re-exported here).  Geometry comes from the kernel row
+parameters of the statics (layout ``P_*`` of the statics kernels): per row the inner groove
 curvature centres lie on a circle of radius P_RIC at local axial position
 ξ = P_XIC + P_AXOFF in the inner-ring frame, the outer ones on a fixed circle of radius
 P_RIC − P_DR0 at ξ = P_XIC − P_DX0 (global x = P_XROW + P_SIGN ξ).
@@ -37,76 +30,14 @@ import numpy as np
 from ..errors import InputError
 from ..statics import _kernels as kn
 
-N_RING = 10
-N_BALL = 9
-N_CAGE = 12
-DOF = ("x", "y", "z", "gamma_y", "gamma_z")
-
-# ---- per-row extra constants (rowx) -------------------------------------------------
-X_CAI = 0  # inner contact semi-major axis a = X_CAI Q^(1/3) [m/N^(1/3)]
-X_CBI = 1  # inner semi-minor axis b [m/N^(1/3)]
-X_CAO = 2
-X_CBO = 3
-X_RDI = 4  # radius of the deformed contact surface across the groove, inner [m] (2 f D / (2 f + 1))
-X_RDO = 5
-X_XGI = 6  # global x of the inner groove-centre circle in the ring frame [m]
-X_XGO = 7  # global x of the outer groove-centre circle [m]
-X_RGO = 8  # radius of the outer groove-centre circle [m]
-X_EPI = 9  # E' of ball/inner ring [Pa]
-X_EPO = 10
-X_RXI = 11  # rolling-direction radius R_x at alpha0, inner [m]
-X_RXO = 12
-X_RYI = 13
-X_RYO = 14
-NROWX = 15
-
-# ---- global parameters (gp) ----------------------------------------------------------
-G_MR = 0  # inner ring (hub) mass [kg]
-G_ITR = 1  # inner ring transverse moment of inertia [kg m²]
-G_IPR = 2  # inner ring polar moment of inertia [kg m²]
-G_GX = 3  # gravity vector [m/s²] (3)
-G_ALPHA = 6  # Hunt–Crossley damping constant α [s/m]
-G_TRAC = 7  # traction model: 0 none, 1 regularised Coulomb (test stand-in), 2 sliced kernel
-G_MU0 = 8  # Coulomb coefficient of the stand-in model [-]
-G_S0 = 9  # slide-roll ratio of the regularisation [-]
-G_NSL = 10  # slices per contact ellipse [-]
-G_XL = 11  # axial position of the load point [m]
-G_W0 = 12  # shaft speed at t = 0 [rad/s]
-G_W1 = 13  # shaft speed after the ramp [rad/s]
-G_TRAMP = 14  # ramp duration [s] (0: constant)
-G_RING_FIXED = 15  # 1: inner ring held at its initial position (tests)
-G_VREF = 16  # speed regularising friction directions [m/s]
-G_CAGE_ON = 17  # 1: ball–cage contacts on
-NGP = 18
-
-TRACTION_MODELS = {"none": 0, "coulomb": 1, "slices": 2}
-
-# ---- per-cage parameters (cp) --------------------------------------------------------
-C_MASS = 0
-C_IP = 1  # polar moment of inertia [kg m²]
-C_IT = 2  # transverse moment of inertia [kg m²]
-C_XP = 3  # axial position of the pocket centres (cage frame) [m]
-C_RP = 4  # radius of the pocket centres [m]
-C_CLR = 5  # pocket clearance (pocket radius − ball radius) [m]
-C_KC = 6  # ball–pocket Hertz constant [N/m^1.5]
-C_MU = 7  # ball–pocket friction coefficient [-]
-C_GUIDE = 8  # 0 ball-guided, 1 outer-ring land, 2 inner-ring land
-C_RLAND = 9  # land radius [m]
-C_CLAND = 10  # radial land clearance [m]
-C_KLAND = 11  # land contact constant [N/m^1.5]
-C_MULAND = 12  # land friction coefficient [-]
-C_PSI0 = 13  # azimuth of pocket 0 [rad]
-C_Z = 14  # number of pockets
-C_BALL0 = 15  # index of the first ball of this cage
-C_NMODES = 16  # modal coordinates (0: rigid)
-C_SHAPE = 17  # pocket shape: 0 sphere, 1 cylinder (POCKET_SHAPES)
-C_POCKET = 18  # sphere: half-angle of the opening about the radial axis [rad]; cylinder: half-length [m]
-C_MODE0 = 19  # index in the state of the cage's first modal coordinate
-NCP = 20
-
-POCKET_SHAPES = {"sphere": 0, "cylinder": 1}
-
-GUIDANCE = {"balls": 0, "outer-land": 1, "inner-land": 2}
+# the array layouts (re-exported here: ``model.N_RING``, ``model.C_MASS`` ... keep working)
+from .layout import (  # noqa: F401
+    C_BALL0, C_CLAND, C_CLR, C_GUIDE, C_IP, C_IT, C_KC, C_KLAND, C_MASS, C_MODE0, C_MU, C_MULAND, C_NMODES,
+    C_POCKET, C_PSI0, C_RLAND, C_RP, C_SHAPE, C_XP, C_Z, DOF, G_ALPHA, G_CAGE_ON, G_GX, G_IPR, G_ITR, G_MR,
+    G_MU0, G_NSL, G_RING_FIXED, G_S0, G_TRAC, G_TRAMP, G_VREF, G_W0, G_W1, G_XL, GUIDANCE, N_BALL, N_CAGE,
+    N_RING, NCP, NGP, NROWX, POCKET_SHAPES, TRACTION_MODELS, X_CAI, X_CAO, X_CBI, X_CBO, X_EPI, X_EPO, X_RDI,
+    X_RDO, X_RGO, X_RXI, X_RXO, X_RYI, X_RYO, X_XGI, X_XGO,
+)
 
 
 @dataclass
@@ -494,7 +425,7 @@ def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-
 def describe_component(model: Model, i: int) -> str:
     """Name of state component i (for error messages: the body involved)."""
     if i < 10:
-        return f"inner ring {('x', 'y', 'z', 'gamma_y', 'gamma_z')[i % 5]}{' rate' if i >= 5 else ''}"
+        return f"inner ring {DOF[i % 5]}{' rate' if i >= 5 else ''}"
     if i < model.cage_offset:
         k = (i - N_RING) // N_BALL
         part = ("position", "velocity", "angular velocity")[((i - N_RING) % N_BALL) // 3]
