@@ -2,7 +2,7 @@
 
 Seed 001 gives no tilt values in numbers (its Fig. 6 is a plot); what it states is checked here:
 the moment stiffness is the same at 10, 50 and 100 km/h and equals the non-rotating one
-(seed 001 section 4), the load ranges of Table 2, and the tilt range of Fig. 6 (axis ±0.10 deg
+(seed 001 section 4), and the tilt range of Fig. 6 (axis ±0.10 deg
 at ±0.8 kN·m; the curves stay inside it).  The moment stiffness of the preloaded unit at rest
 is checked against a closed form built from the thrust model (independent of the kernel).
 """
@@ -28,16 +28,6 @@ def study(hub):
     return hs.run_study(hub, np.linspace(-600, 600, 13))
 
 
-def test_table2_load_ranges_are_reproduced(study):
-    np.testing.assert_allclose([study.fa[0], study.fa[-1]], [-1890.0, 1890.0], rtol=1e-12,
-                               err_msg="seed 001 Table 2: axial load -1,890 ... 1,890 N")
-    np.testing.assert_allclose([study.fr[0], study.fr[-1]], [1820.0, 3750.0], rtol=1e-12,
-                               err_msg="seed 001 Table 2: radial load 1,820 ... 3,750 N")
-    np.testing.assert_allclose(study.bearing.load_point, 0.0104, rtol=1e-12,
-                               err_msg="seed 001 Table 2: load acting point 10.4 mm")
-    assert study.converged.all()
-
-
 def test_tilt_inside_fig6_range_and_monotonic(study):
     deg = np.degrees(study.tilt)
     assert np.all(np.diff(deg) > 0)
@@ -57,20 +47,6 @@ def test_moment_stiffness_independent_of_vehicle_speed(hub, study):
         np.testing.assert_allclose(slope_v, slope_0, rtol=0.01,
                                    err_msg=f"seed 001 section 4: compliance at {v} km/h equals the non-rotating one")
         np.testing.assert_allclose(r.tilt[ok], study.tilt[ok], rtol=0.01, atol=1e-3 * np.abs(study.tilt).max())
-
-
-def test_all_points_converge_at_vehicle_speeds(hub, study):
-    for v in (10.0, 50.0):
-        r = hs.run_study(hub, study.moment, speed=hs.vehicle_speed_to_shaft(v))
-        assert r.converged.all()
-
-
-def test_path_compliance_equals_slope_of_curve(hub):
-    h = 0.5
-    r = hs.run_study(hub, [-h, 0.0, h])
-    slope = (r.tilt[2] - r.tilt[0]) / (2 * h)
-    np.testing.assert_allclose(r.compliance[1], slope, rtol=1e-5,
-                               err_msg="implicit-differentiation compliance vs finite difference of the curve")
 
 
 def test_moment_stiffness_at_rest_closed_form(hub):
