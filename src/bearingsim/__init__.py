@@ -1,0 +1,149 @@
+"""bearingsim: ball-bearing mechanics — Hertz contact, Jones–Harris quasi-static equilibrium, stiffness,
+lubrication and multibody dynamics.
+
+The front door is kept import-light: ``import bearingsim`` loads no numerical library (numpy, numba, xarray,
+dask); the submodules load them when they are used.  Two things happen here, before any kernel module is
+imported:
+
+* ``bearingsim.__version__`` — the installed distribution's version (single source: ``pyproject.toml``, read
+  through :mod:`importlib.metadata`; from a source tree that is not installed, read from ``pyproject.toml``).
+* the numba cache folder — the compiled kernels are cached on disk (``cache=True``).  numba looks for a
+  writable folder in this order: ``NUMBA_CACHE_DIR``, ``__pycache__`` next to the modules, the user cache
+  (``$XDG_CACHE_HOME/numba`` or ``~/.cache/numba``); when none is writable (a read-only install with a
+  read-only HOME) every kernel import fails with "cannot cache function".  :func:`_configure_numba_cache`
+  checks this chain first and, when needed, points ``NUMBA_CACHE_DIR`` at
+  ``$XDG_CACHE_HOME/bearingsim/numba`` (or ``~/.cache/bearingsim/numba``) or at a per-user temporary folder,
+  with one line on stderr.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+
+__all__ = ["__version__"]
+
+_DIST = "bearingsim"
+
+
+def _read_version() -> str:
+    """Version of the installed distribution (pyproject's ``[project] version``), or of the source tree."""
+    try:
+        from importlib.metadata import PackageNotFoundError, version
+    except ImportError:  # pragma: no cover - Python >= 3.8 always has it
+        PackageNotFoundError, version = Exception, None
+    if version is not None:
+        try:
+            return version(_DIST)
+        except PackageNotFoundError:
+            pass
+    # not installed (e.g. PYTHONPATH=src): the source tree's pyproject.toml
+    pyproject = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, os.pardir, "pyproject.toml")
+    try:
+        import tomllib
+
+        with open(pyproject, "rb") as fh:
+            return str(tomllib.load(fh)["project"]["version"])
+    except (OSError, KeyError, ValueError):
+        return "0+unknown"
+
+
+def __getattr__(name: str):
+    # PEP 562: the version is read on first use (importlib.metadata costs a few ms that most imports do not need)
+    if name == "__version__":
+        v = _read_version()
+        globals()["__version__"] = v
+        return v
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+# ---- numba cache folder ------------------------------------------------------------------------------------
+#: sub-packages whose modules hold ``cache=True`` kernels (their ``__pycache__`` is numba's in-tree cache)
+_KERNEL_PACKAGES = ("contact", "statics", "dynamics")
+
+
+def _writable_folder(path: str, create: bool) -> bool:
+    """True when a file can be created in ``path`` (made first when ``create``).  A real probe, as numba does
+    (``os.access`` says yes to root on read-only mounts such as /sys and on folders with mode 0555)."""
+    import tempfile
+
+    try:
+        if create:
+            os.makedirs(path, exist_ok=True)
+        elif not os.path.isdir(path):
+            return False
+        tempfile.TemporaryFile(dir=path).close()
+        return True
+    except OSError:
+        return False
+
+
+def _in_tree_writable(package_dir: str) -> bool:
+    """numba's in-tree locator: ``__pycache__`` next to each kernel module (created when missing, as numba does)."""
+    return all(_writable_folder(os.path.join(package_dir, sub, "__pycache__"), create=True)
+               for sub in _KERNEL_PACKAGES if os.path.isdir(os.path.join(package_dir, sub)))
+
+
+def _user_cache_root(environ) -> str:
+    """``$XDG_CACHE_HOME`` or ``~/.cache`` (the XDG base-directory rule numba's own user-wide cache follows)."""
+    xdg = environ.get("XDG_CACHE_HOME")
+    if xdg and os.path.isabs(xdg):
+        return xdg
+    home = environ.get("HOME") or os.path.expanduser("~")
+    return os.path.join(home, ".cache")
+
+
+def _choose_numba_cache_dir(environ, package_dir: str) -> tuple[str | None, str | None]:
+    """Decide where numba caches the kernels.
+
+    Returns ``(cache_dir, note)``: ``cache_dir`` is the folder to put in ``NUMBA_CACHE_DIR`` (None: leave
+    numba's own choice alone) and ``note`` the one line for stderr (None: nothing to say).  Order: a writable
+    ``NUMBA_CACHE_DIR``; numba's in-tree ``__pycache__``; numba's user cache ``<cache root>/numba``; then
+    ``<cache root>/bearingsim/numba``; then ``<tmp>/bearingsim-numba-<uid>``.
+    """
+    import tempfile
+
+    given = environ.get("NUMBA_CACHE_DIR", "")
+    if given and _writable_folder(given, create=True):
+        return None, None
+    root = _user_cache_root(environ)
+    if given:
+        why = f"NUMBA_CACHE_DIR={given} is not writable"
+    else:
+        why = "the package folder is not writable"
+        if _in_tree_writable(package_dir):
+            return None, None
+        # numba itself falls back to <cache root>/numba when it can create it
+        if _writable_folder(os.path.join(root, "numba"), create=True):
+            return None, None
+    uid = os.getuid() if hasattr(os, "getuid") else 0
+    for cand in (os.path.join(root, "bearingsim", "numba"),
+                 os.path.join(tempfile.gettempdir(), f"bearingsim-numba-{uid}")):
+        existed = os.path.isdir(cand)
+        if _writable_folder(cand, create=True):
+            if given or not existed:
+                return cand, f"note: {why}; compiled kernels are cached in {cand}"
+            return cand, None  # the fallback in use since an earlier run: said once, when created
+    return None, (f"note: {why} and no user or temporary cache folder is writable; numba will report "
+                  "'cannot cache function' (set NUMBA_CACHE_DIR to a writable folder)")
+
+
+def _configure_numba_cache() -> None:
+    """Apply :func:`_choose_numba_cache_dir` to this process (before numba reads its configuration)."""
+    try:
+        cache_dir, note = _choose_numba_cache_dir(os.environ, os.path.dirname(os.path.abspath(__file__)))
+    except Exception:  # noqa: BLE001 - a cache decision must never stop the import
+        return
+    if cache_dir is not None:
+        os.environ["NUMBA_CACHE_DIR"] = cache_dir
+        cfg = sys.modules.get("numba.core.config")
+        if cfg is not None:  # numba was imported before bearingsim: its configuration is already read
+            cfg.CACHE_DIR = cache_dir
+    if note:
+        try:
+            sys.stderr.write(note + "\n")
+        except (OSError, AttributeError, ValueError):
+            pass
+
+
+_configure_numba_cache()
