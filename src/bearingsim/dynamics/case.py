@@ -17,6 +17,7 @@ Example (``examples/spindle-7011.toml``)::
     gravity = ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]   # optional
     load_point = "0 mm"                 # axial position of the load point (default: the bearing's)
     chunk = 200                         # samples per netCDF chunk (memory bound)
+    checkpoint_every = "30 s"           # wall-clock time between checkpoints (or an integer: every N chunks)
     control = "outer"                   # raceway control of the quasi-static start
 
     [loads]                             # fa, fr (= Fr_y), fz (= Fr_z), my, mz: constant, sine, table, or a list (sum)
@@ -89,6 +90,7 @@ class Case:
     chunk: int = 200
     control: str = "outer"
     checkpoint_every: int = 1  #: chunks between checkpoints
+    checkpoint_interval: float | None = None  #: wall-clock seconds between checkpoints (None: run.CHECKPOINT_SECONDS)
     integrator: str = "auto"  #: "auto", "dopri5", "ros2w" or "ros34w" (see docs/dynamics.md)
     source: dict = field(default_factory=dict, compare=False)
 
@@ -115,6 +117,13 @@ class Case:
         if self.integrator not in ("auto", "dopri5", "ros2w", "ros34w"):
             raise InputError("integrator", f"unknown integrator {self.integrator!r}",
                              "use auto, dopri5, ros2w or ros34w")
+        if isinstance(self.checkpoint_every, bool) or not isinstance(self.checkpoint_every, int) or \
+                self.checkpoint_every < 1:
+            raise InputError("checkpoint_every", f"must be a number of chunks ≥ 1 or a wall-clock time, got "
+                             f"{self.checkpoint_every!r}", 'e.g. 1 or "30 s"')
+        if self.checkpoint_interval is not None and not (0 < self.checkpoint_interval < math.inf):
+            raise InputError("checkpoint_every", f"must be a positive time, got {self.checkpoint_interval!r} s",
+                             'e.g. "30 s"')
         if not self.ring_mass > 0:
             raise InputError("inner_ring.mass", "must be positive", 'e.g. "2 kg"')
 
@@ -133,7 +142,8 @@ class Case:
 
     def fingerprint(self) -> str:
         """Hash of the inputs that determine the trajectory (a resume must match it)."""
-        return hashlib.sha256(json.dumps(self.source, sort_keys=True, default=str).encode()).hexdigest()[:16]
+        src = {k: v for k, v in self.source.items() if k != "checkpoint_every"}  # not part of the trajectory
+        return hashlib.sha256(json.dumps(src, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
     def model_options(self) -> dict:
         c = self.cage
@@ -244,6 +254,10 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
     for k, v in (("tolerance", tol), ("contact_damping", damping)):
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise InputError(k, f"expected a number, got {v!r}", "e.g. 1e-6")
+    every = data.get("checkpoint_every", 1)  # chunks, or a wall-clock time such as "30 s"
+    interval = None
+    if isinstance(every, str):
+        interval, every = parse_quantity(every, "time", "checkpoint_every"), 1
     return Case(bearing=bearing, loads=parse_loads(data.get("loads")), speed=parse_speed(data["speed"]),
                 duration=parse_quantity(data["duration"], "time", "duration"),
                 output_interval=parse_quantity(data["output_interval"], "time", "output_interval"),
@@ -251,7 +265,7 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
                 tolerance=float(tol), contact_damping=float(damping), gravity=tuple(gvec), load_point=load_point,
                 ring_mass=ring_mass, ring_inertia=inertia, cage=cage, lubrication=data.get("lubrication", {}),
                 chunk=data.get("chunk", 200), control=data.get("control", "outer"),
-                checkpoint_every=data.get("checkpoint_every", 1), integrator=data.get("integrator", "auto"),
+                checkpoint_every=every, checkpoint_interval=interval, integrator=data.get("integrator", "auto"),
                 source=data)
 
 
