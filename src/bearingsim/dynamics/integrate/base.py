@@ -1,0 +1,78 @@
+"""The integrator contract: one ``advance(workspace, t_end) -> status`` for every method.
+
+A :class:`Workspace` holds everything an integration needs between two output times: the
+right-hand side ``fun(t, y, dy, args)`` (a numba function, :func:`bearingsim.dynamics.forces.rhs_args`
+for the bearing), its argument tuple, the time t [s], the state y (updated in place), the proposed
+next step h [s], the per-component tolerances, the step limits, the ball blocks of the W-methods'
+Jacobian and the Jacobian itself, which ROS34PW2 keeps from one call to the next (and which a
+checkpoint saves).  Each method module (:mod:`.dopri5`, :mod:`.ros2`, :mod:`.ros34pw2`) provides
+
+* ``integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, ...)`` — the numba
+  kernel: integrates y in place from t to exactly t_end with error control and returns
+  (status, t reached, proposed next step); info[0:4] ← steps accepted, steps rejected, index of the
+  component with the largest error at the last step, that scaled error;
+* ``advance(ws, t_end) -> Status`` — the same on a :class:`Workspace`: on success ws.t = t_end and
+  ws.h the proposed step; on failure ws.t is the time reached and ws.h unchanged; ws.steps and
+  ws.rejected count the steps.
+
+Status codes and messages: :mod:`.common`.  Determinism: no randomness, a fixed arithmetic order,
+and every call stops exactly at t_end and returns the proposed next step, so a run restarted from
+(t, y, h) — and for ROS34PW2 its Jacobian — repeats the same steps bit for bit.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .common import OK, Status
+
+
+def ros34_workspace(nb: int, nbk: int, coupled: bool) -> tuple:
+    """The Jacobian that ROS34PW2 keeps from one call to the next: (jac [nb, nbk, nbk],
+    J_rr [10, 10], J_br [nc, nbk, 10], J_rb [nc, 10, nbk], state int64[2] = (steps since the refresh,
+    1 when the arrays hold a Jacobian)), nc = nb when the ring is coupled, else 0.  A run restarted
+    from a checkpoint repeats the same steps when the checkpoint holds this workspace too."""
+    nr = 10
+    nc = nb if coupled else 0
+    return (np.zeros((nb, nbk, nbk)), np.zeros((nr, nr)), np.zeros((nc, nbk, nr)), np.zeros((nc, nr, nbk)),
+            np.zeros(2, dtype=np.int64))
+
+
+@dataclass
+class Workspace:
+    """What every integrator's ``advance(ws, t_end)`` reads and updates (all SI).
+
+    ``blk``/``nbk``: start index and size of the per-ball Jacobian blocks (W-methods); ``rmass`` =
+    (m, m, m, I_t, I_t) of the inner ring and ``bmass`` (m, J) per ball switch on ROS34PW2's ring–ball
+    coupling (empty arrays: per-ball blocks only); ``jacobian`` is :func:`ros34_workspace`.
+    """
+
+    fun: object  #: numba right-hand side fun(t, y, dy, args)
+    args: tuple  #: its argument tuple
+    y: np.ndarray  #: state (integrated in place)
+    atol: np.ndarray  #: absolute tolerance per component
+    rtol: np.ndarray  #: relative tolerance per component
+    t: float = 0.0  #: time [s]
+    h: float = 1e-7  #: proposed next step [s]
+    h_min: float = 1e-13  #: smallest step allowed [s]
+    max_steps: int = 10_000_000  #: step limit per call
+    blk: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    nbk: int = 0
+    jac_every: int = 20  #: steps between Jacobian refreshes of the W-methods
+    rmass: np.ndarray = field(default_factory=lambda: np.zeros(0))
+    bmass: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
+    jacobian: tuple | None = None  #: ROS34PW2's Jacobian (:func:`ros34_workspace`), made on first use
+    info: np.ndarray = field(default_factory=lambda: np.zeros(4))  #: see the module docstring
+    steps: int = 0  #: accepted steps so far
+    rejected: int = 0  #: rejected steps so far
+
+    def finish(self, status: int, t: float, h: float) -> Status:
+        """Book the result of one kernel call (see the module docstring) and return its status."""
+        self.steps += int(self.info[0])
+        self.rejected += int(self.info[1])
+        self.t = t
+        if status == OK:
+            self.h = h
+        return Status(status)

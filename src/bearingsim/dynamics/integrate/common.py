@@ -1,0 +1,95 @@
+"""Shared parts of the integrators: status codes, the error norm, step-size control, step clipping.
+
+Every method of :mod:`bearingsim.dynamics.integrate` reports one of the :class:`Status` codes
+(``OK`` … ``MAX_STEPS``, with :data:`STATUS_TEXT` the message), measures its local error with
+:func:`error_norm` and lands exactly on the requested time with :func:`clip_step`.  The step-size
+factors are those of Hairer, Nørsett & Wanner, *Solving ODEs I*, 2nd ed. 1993, eq. II.4.13
+(:func:`accept_factor`, :func:`reject_factor`) and of the PI controller of Gustafsson (1991)
+(Hairer & Wanner, *Solving ODEs II*, eq. IV.8.21; :func:`pi_factor`).
+"""
+
+from __future__ import annotations
+
+import enum
+
+import numpy as np
+from numba import njit
+
+
+class Status(enum.IntEnum):
+    """Outcome of one ``advance`` call (the integer is what the numba kernels return)."""
+
+    OK = 0  #: reached t_end
+    STEP_TOO_SMALL = 1  #: the step size fell below h_min (diverging or too stiff)
+    NOT_FINITE = 2  #: the state became non-finite
+    MAX_STEPS = 3  #: the step limit of the call was reached
+
+
+OK = int(Status.OK)
+STEP_TOO_SMALL = int(Status.STEP_TOO_SMALL)
+NOT_FINITE = int(Status.NOT_FINITE)
+MAX_STEPS = int(Status.MAX_STEPS)
+#: message of every status code
+STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (diverging or too stiff)",
+               NOT_FINITE: "the state became non-finite", MAX_STEPS: "step limit reached"}
+
+
+@njit
+def error_norm(e, y, ynew, atol, rtol, info):
+    """Scaled RMS norm of the local error estimate e (Hairer, Nørsett & Wanner, *Solving ODEs I*,
+    1993, eq. II.4.11): √(Σ (e_i / (atol_i + rtol_i max(|y_i|, |ynew_i|)))² / n).
+
+    info[2], info[3] ← index and scaled error of the worst component.  Returns (err, finite);
+    a non-finite component gives err = 1e10 and finite = False.
+    """
+    n = y.shape[0]
+    err = 0.0
+    imax = 0
+    emax = -1.0
+    finite = True
+    for i in range(n):
+        r = e[i] / (atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i])))
+        r2 = r * r
+        if not np.isfinite(r2):
+            finite = False
+            imax = i
+            break
+        if r2 > emax:
+            emax = r2
+            imax = i
+        err += r2
+    info[2] = imax
+    info[3] = np.sqrt(emax) if finite else np.inf
+    return (np.sqrt(err / n) if finite else 1e10), finite
+
+
+@njit
+def clip_step(t, h, t_end):
+    """(step [s], last) with the step shortened to land exactly on t_end [s]; last is True when it does."""
+    if t + h >= t_end:
+        return t_end - t, True
+    return h, False
+
+
+@njit
+def accept_factor(err, expo, grow):
+    """Step growth after an accepted step, h ← h·min(grow, max(0.2, 0.9 err^(−expo))) (Hairer et al.
+    eq. II.4.13; expo = 1/(q + 1) with q the lower of the embedded orders); ``grow`` when err = 0."""
+    return grow if err == 0.0 else min(grow, max(0.2, 0.9 * err ** -expo))
+
+
+@njit
+def reject_factor(err, expo):
+    """Step reduction after a rejected step, max(0.2, 0.9 err^(−expo))."""
+    return max(0.2, 0.9 * err ** -expo)
+
+
+@njit
+def pi_factor(err, err_prev, ki, kp, grow):
+    """PI step-size factor 0.9 e^(−ki) (e_prev/e)^kp limited to [0.2, grow], e = max(err, 1e-10)
+    (Gustafsson 1991; Hairer & Wanner, *Solving ODEs II*, eq. IV.8.21).  Returns (factor, the
+    e_prev of the next step = max(e, 1e-4))."""
+    e_now = max(err, 1e-10)
+    fac = 0.9 * e_now ** (-ki) * (err_prev / e_now) ** kp
+    fac = min(grow, max(0.2, fac))
+    return fac, max(e_now, 1e-4)

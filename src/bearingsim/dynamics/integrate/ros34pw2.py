@@ -1,0 +1,234 @@
+"""ROS34PW2: the third-order linearly implicit W-method of Rang & Angermann (BIT 45 (2005) 761,
+Table 3), the default integrator with the lubricated traction kernel (``integrator = "auto"`` and
+traction "slices"; DOPRI5 otherwise).
+
+Four stages, order 3 as a W-method (any approximation of the Jacobian), embedded order 2, L-stable
+for the exact Jacobian.  Hairer form: (I − γhJ) k_i = h f(t + α_i h, y + Σ_j a_ij k_j) + hJ Σ_j c_ij k_j.
+J holds the per-ball blocks of ∂f/∂y (:func:`.jacobian.block_jac`) and — unless the inner ring is
+held fixed or the coupling is switched off — the inner ring's own block and the ring–ball coupling
+(:func:`.jacobian.ring_jac`, :func:`.jacobian.ring_rows`): the inner ring sliding against all its
+balls is a stiff mode at low rolling speed (docs/dynamics.md).  W is then an arrowhead matrix solved
+through the ring's Schur complement (:mod:`.linalg`).  The Jacobian is kept from one call to the next
+(:func:`.base.ros34_workspace`, saved in checkpoints) and refreshed every ``jac_every`` steps and after
+two rejections in a row: a W-method keeps its order with a lagged Jacobian.  Step size: PI controller
+(Gustafsson 1991) with exponents 0.7/3 and 0.4/3 and growth ≤ 2 after an accepted step,
+h·max(0.2, 0.9 err^(−1/3)) after a rejected one.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from .base import Workspace, ros34_workspace
+from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm, pi_factor, \
+    reject_factor
+from .jacobian import block_jac, ring_jac, ring_rows
+from .linalg import NR, coupled_w, j_times, no_coupling, w_inverse, w_solve
+
+# ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
+R34_G = 0.435866521508459
+R34_A21 = 0.87173304301691801
+R34_A31, R34_A32 = 0.84457060015369423, -0.11299064236484185
+R34_A41, R34_A42, R34_A43 = 0.0, 0.0, 1.0
+R34_C21 = -0.87173304301691801
+R34_C31, R34_C32 = -0.90338057013044082, 0.054180672388095326
+R34_C41, R34_C42, R34_C43 = 0.24212380706095346, -1.2232505839045147, 0.54526025533510214
+R34_M = (0.24212380706095346, -1.2232505839045147, 1.5452602553351020, 0.43586652150845900)
+R34_E = (0.37810903145819369, -0.096042292212423178, 0.5, 0.21793326075422950)
+R34_ALPHA2 = R34_A21
+R34_ALPHA3 = R34_A31 + R34_A32
+R34_ALPHA4 = R34_A41 + R34_A42 + R34_A43
+R34_GROW = 2.0  # largest step growth factor (fewer rejections than 5 on the contact problems)
+R34_KI = 0.7 / 3.0  # PI controller exponents (Gustafsson: 0.7/(p+1), 0.4/(p+1), p = 2 the embedded order)
+R34_KP = 0.4 / 3.0
+R34_REJECT_EXPONENT = 1.0 / 3.0
+
+
+@njit
+def stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv, cpl):
+    """The four stages of ROS34PW2 (k_i include the factor h); f0 = f(t, y); ``cpl`` = (J_rr, J_br,
+    J_rb, Q, S⁻¹, work, work) of the ring–ball coupling (:func:`.linalg.coupled_w`) or
+    :func:`.linalg.no_coupling`."""
+    n = y.shape[0]
+    for i in range(n):
+        ft[i] = hs * f0[i]
+    w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k1)
+    # stage 2
+    for i in range(n):
+        yt[i] = y[i] + R34_A21 * k1[i]
+        tv[i] = R34_C21 * k1[i]
+    fun(t + R34_ALPHA2 * hs, yt, ft, args)
+    j_times(jac, blk, nbk, cpl, tv, jv)
+    for i in range(n):
+        ft[i] = hs * (ft[i] + jv[i])
+    w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k2)
+    # stage 3
+    for i in range(n):
+        yt[i] = y[i] + R34_A31 * k1[i] + R34_A32 * k2[i]
+        tv[i] = R34_C31 * k1[i] + R34_C32 * k2[i]
+    fun(t + R34_ALPHA3 * hs, yt, ft, args)
+    j_times(jac, blk, nbk, cpl, tv, jv)
+    for i in range(n):
+        ft[i] = hs * (ft[i] + jv[i])
+    w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k3)
+    # stage 4
+    for i in range(n):
+        yt[i] = y[i] + R34_A41 * k1[i] + R34_A42 * k2[i] + R34_A43 * k3[i]
+        tv[i] = R34_C41 * k1[i] + R34_C42 * k2[i] + R34_C43 * k3[i]
+    fun(t + R34_ALPHA4 * hs, yt, ft, args)
+    j_times(jac, blk, nbk, cpl, tv, jv)
+    for i in range(n):
+        ft[i] = hs * (ft[i] + jv[i])
+    w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k4)
+
+
+@njit
+def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
+              rmass=np.zeros(0), bmass=np.zeros((0, 2))):
+    """ROS34PW2 from t to t_end in place (module docstring).
+
+    ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
+    (:func:`.base.ros34_workspace`) carries the Jacobian and the steps since its refresh from one call
+    to the next; with ``rmass`` = (m, m, m, I_t, I_t) of the inner ring (the first 10 states) and
+    ``bmass`` (m, J) per ball block, J also holds the ring's block and the ring–ball coupling.
+    4 right-hand sides per step.  Same other arguments and return values as :func:`.dopri5.integrate`.
+    """
+    n = y.shape[0]
+    nb = blk.shape[0]
+    jac, jrr, jbr, jrb, jst = ws
+    winv = np.zeros((nb, nbk, nbk))
+    wm = np.zeros((nbk, nbk))
+    f0 = np.empty(n)
+    f1 = np.empty(n)
+    k1 = np.empty(n)
+    k2 = np.empty(n)
+    k3 = np.empty(n)
+    k4 = np.empty(n)
+    yt = np.empty(n)
+    ft = np.empty(n)
+    jv = np.empty(n)
+    tv = np.empty(n)
+    ynew = np.empty(n)
+    evec = np.empty(n)
+    epsb = np.empty(nb)
+    coupled = rmass.shape[0] == 5
+    nc = nb if coupled else 0
+    qm = np.zeros((nc, nbk, NR))
+    sinv = np.zeros((NR, NR))
+    srr = np.zeros((NR, NR))
+    zb = np.zeros((nc, nbk))
+    rr = np.zeros(NR)
+    # the coupling's arrays, or empty ones (then W and J are the per-ball blocks alone)
+    cpl = (jrr, jbr, jrb, qm, sinv, zb, rr) if coupled else no_coupling(nbk)
+    need_jac = jst[1] == 0
+    since = jst[0]
+    h_w = -1.0
+    nacc = 0
+    nrej = 0
+    status = OK
+    have_f0 = False
+    prev_rej = False
+    err_prev = 1.0
+    while t < t_end:
+        if nacc + nrej >= max_steps:
+            status = MAX_STEPS
+            break
+        hs, last = clip_step(t, h, t_end)
+        if not have_f0:
+            fun(t, y, f0, args)
+            have_f0 = True
+        if need_jac or since >= jac_every:
+            block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
+            if coupled:
+                ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1)
+                ring_rows(jbr, rmass, bmass, jrb)
+            need_jac = False
+            since = 0
+            h_w = -1.0
+        if hs != h_w:
+            if coupled:
+                coupled_w(jac, jrr, jbr, jrb, hs, R34_G, winv, wm, qm, sinv, srr)
+            else:
+                w_inverse(jac, hs, R34_G, winv, wm)
+            h_w = hs
+        stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv, cpl)
+        for i in range(n):
+            ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
+            evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
+                       + (R34_M[2] - R34_E[2]) * k3[i] + (R34_M[3] - R34_E[3]) * k4[i])
+        err, finite = error_norm(evec, y, ynew, atol, rtol, info)
+        if err <= 1.0:
+            for i in range(n):
+                y[i] = ynew[i]
+            t = t_end if last else t + hs
+            have_f0 = False
+            prev_rej = False
+            nacc += 1
+            since += 1
+            fac, err_prev = pi_factor(err, err_prev, R34_KI, R34_KP, R34_GROW)
+            if not (last and hs < h):
+                h = hs * fac
+        else:
+            nrej += 1
+            # a W-method keeps its order with a lagged Jacobian: refresh it only when a
+            # step is rejected twice in a row (the Jacobian may then limit stability)
+            if prev_rej:
+                need_jac = True
+            prev_rej = True
+            h = hs * reject_factor(err, R34_REJECT_EXPONENT)
+            if h < h_min:
+                status = STEP_TOO_SMALL if finite else NOT_FINITE
+                break
+    jst[0] = since
+    jst[1] = 0 if need_jac else 1
+    info[0] = nacc
+    info[1] = nrej
+    return status, t, h
+
+
+@njit
+def fixed_steps(fun, args, t, y, h, nsteps, blk, nbk):
+    """``nsteps`` ROS34PW2 steps of constant size h with the block Jacobian refreshed every
+    step (no error control) — for order tests.  ``nbk`` = 0 gives J = 0 (the W-method then
+    is an explicit 4-stage Runge–Kutta method of order 3)."""
+    n = y.shape[0]
+    nb = blk.shape[0] if nbk > 0 else 0
+    nk = max(nbk, 1)
+    jac = np.zeros((nb, nk, nk))
+    winv = np.zeros((nb, nk, nk))
+    wm = np.zeros((nk, nk))
+    bl = blk[:nb]
+    cpl = no_coupling(nk)
+    f0 = np.empty(n)
+    f1 = np.empty(n)
+    k1 = np.empty(n)
+    k2 = np.empty(n)
+    k3 = np.empty(n)
+    k4 = np.empty(n)
+    yt = np.empty(n)
+    ft = np.empty(n)
+    jv = np.empty(n)
+    tv = np.empty(n)
+    epsb = np.empty(max(nb, 1))
+    atol = np.full(n, 1e-12)
+    for _ in range(nsteps):
+        fun(t, y, f0, args)
+        if nb > 0:
+            block_jac(fun, args, t, y, f0, atol, bl, nk, jac, yt, f1, epsb)
+            w_inverse(jac, h, R34_G, winv, wm)
+        stages(fun, args, t, y, h, f0, jac, winv, bl, nk, k1, k2, k3, k4, yt, ft, jv, tv, cpl)
+        for i in range(n):
+            y[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
+        t += h
+    return t
+
+
+def advance(ws: Workspace, t_end: float) -> Status:
+    """Integrate the workspace to t_end [s] with ROS34PW2 (the contract of :mod:`.base`); the Jacobian
+    lives in ``ws.jacobian`` (made here on first use)."""
+    if ws.jacobian is None:
+        ws.jacobian = ros34_workspace(ws.blk.shape[0], ws.nbk, ws.rmass.shape[0] == 5)
+    status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
+                             ws.max_steps, ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass)
+    return ws.finish(status, t, h)
