@@ -19,6 +19,7 @@ import numpy as np
 
 from ..errors import BearingSimError, InputError
 from ..statics import _kernels as kn
+from . import analysis
 from . import forces as fo
 from . import integrate as ig
 from . import model as md
@@ -323,21 +324,9 @@ class Results:
         positive when the tilt lags the moment.  Seed 001 evaluates it at 0.3 kN·m.
         """
         with self._columns() as read:  # only the two variables, not the whole run
-            m = read("applied_load")[:, load] - moment
+            m = read("applied_load")[:, load]
             g = read("inner_ring_displacement")[:, dof]
-        out = []
-        rising = math.nan
-        for i in range(1, len(m)):
-            if m[i - 1] == m[i] or (m[i - 1] > 0) == (m[i] > 0):
-                continue
-            w = m[i - 1] / (m[i - 1] - m[i])
-            value = g[i - 1] + w * (g[i] - g[i - 1])
-            if m[i] > m[i - 1]:
-                rising = value
-            elif not math.isnan(rising):
-                out.append(value - rising)
-                rising = math.nan
-        return np.array(out)
+        return analysis.loop_widths(m, g, moment)
 
     def fluctuation_range(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> float:
         """W_H of the last complete load cycle [rad] (:meth:`loop_widths`); NaN if there is none."""
