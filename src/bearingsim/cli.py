@@ -88,6 +88,12 @@ def print_static(res) -> None:
               f"γy = {d[3] * 1e3:.5f} mrad, γz = {d[4] * 1e3:.5f} mrad")
     con.print(f"axial stiffness K_xx = {res.axial_stiffness / 1e6:.2f} N/µm;  cage speed "
               f"{res.cage_speed * 30 / math.pi:.1f} rpm")
+    c = getattr(res, "clearance", {})
+    if c:
+        con.print(f"internal clearance: radial {c['radial_internal_clearance_m'] * 1e6:.2f} µm, axial "
+                  f"{c['axial_internal_clearance_m'] * 1e6:.2f} µm; axial play {c['axial_play_m'] * 1e6:.2f} µm")
+    for w in getattr(res, "warnings", ()):
+        con.print(f"[yellow]warning:[/] {w}")
     k = Table(title="stiffness matrix (N/µm, N/mrad, N·m/µm, N·m/mrad)")
     k.add_column("")
     names = ("x", "y", "z", "γy", "γz")

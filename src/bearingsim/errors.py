@@ -43,3 +43,7 @@ class ConvergenceError(BearingSimError, RuntimeError):
         self.residual = residual
         self.iterations = iterations
         super().__init__(f"{message} (residual {residual:.3g} after {iterations} iterations)")
+
+
+class InputTypeError(InputError, TypeError):
+    """Invalid user input of the wrong type (a str, bool, None or list where a number is expected)."""

@@ -41,39 +41,76 @@ DOF = ("x", "y", "z", "gamma_y", "gamma_z")
 SERIAL_BELOW = 20000
 
 
+#: largest number of points of one grid axis and of a whole map (a map point costs ~0.1 ms and
+#: ~200 bytes of output: 10⁸ points are hours of work and ~20 GB; COUNT = 10¹¹ would ask for terabytes)
+MAX_GRID_POINTS = 10**8
+
+
+def check_grid_size(shape: tuple, field: str = "grid") -> int:
+    """The number of points of a grid of ``shape``; more than :data:`MAX_GRID_POINTS` raises
+    :class:`InputError` (before anything is allocated)."""
+    n = 1
+    for k in shape:
+        n *= int(k)
+    if n > MAX_GRID_POINTS:
+        raise InputError(field, f"the grid has {n:,} points ({' × '.join(str(int(k)) for k in shape)}), more than "
+                         f"the {MAX_GRID_POINTS:.0e} a map may have", "use fewer points (COUNT) per axis")
+    return n
+
+
 def parse_grid(spec, dimension: str, field: str) -> np.ndarray:
-    """``"START:STOP:COUNT"`` (inclusive, COUNT ≥ 2, STOP > START) or a single value → SI array.
+    """``"START:STOP:COUNT"`` (inclusive, 2 ≤ COUNT ≤ MAX_GRID_POINTS, STOP > START) or a single value → SI array.
 
     Python numbers (and lists/arrays of numbers) are taken as SI; strings are parsed with units.
 
     START and STOP take units as in :func:`bearingsim.units.parse_quantity` (``"1 kN:5 kN:9"``;
     bare numbers in the default unit of ``dimension``).  A list of values is also accepted.
+    COUNT is a plain decimal integer (no exponent, no arithmetic); it is checked before the grid
+    is allocated.
     """
-    from .units import parse_quantity
+    from .units import MAX_LENGTH, parse_quantity
 
     if isinstance(spec, np.ndarray | list | tuple):
+        if len(spec) > MAX_GRID_POINTS:
+            raise InputError(field, f"{len(spec):,} values is more than {MAX_GRID_POINTS:.0e}", "give fewer values")
         # numbers are SI already; strings carry units
-        vals = np.array([float(v) if isinstance(v, int | float | np.number) and not isinstance(v, bool)
-                         else parse_quantity(v, dimension, field) for v in spec], dtype=float)
+        try:
+            vals = np.array([float(v) if isinstance(v, int | float | np.number) and not isinstance(v, bool | np.bool_)
+                             else parse_quantity(v, dimension, field) for v in np.ravel(spec)], dtype=float)
+        except OverflowError:
+            raise InputError(field, "a value is beyond the floating-point range", "give finite values") from None
+        if np.ndim(spec) != 1:
+            raise InputError(field, f"expected a flat list of values, got shape {np.shape(spec)}",
+                             "give a one-dimensional list")
         if vals.size == 0:
             raise InputError(field, "empty list of values", "give at least one value")
+        if not np.all(np.isfinite(vals)):
+            raise InputError(field, "values must be finite", "check the list")
         return vals
     if isinstance(spec, str) and ":" in spec:
+        if len(spec) > 3 * MAX_LENGTH:
+            raise InputError(field, f"grid spec of {len(spec)} characters", 'write START:STOP:COUNT, e.g. "1000:5000:9"')
         parts = spec.split(":")
         if len(parts) != 3:
             raise InputError(field, f"grid spec {spec!r} is not START:STOP:COUNT", 'e.g. "1000:5000:9"')
         start = parse_quantity(parts[0].strip(), dimension, field)
         stop = parse_quantity(parts[1].strip(), dimension, field)
-        try:
-            count = int(parts[2].strip())
-        except ValueError:
-            raise InputError(field, f"COUNT in {spec!r} must be an integer", 'e.g. "1000:5000:9"') from None
+        ctext = parts[2].strip()
+        if not (ctext.isascii() and ctext.isdigit()) or len(ctext) > 12:
+            raise InputError(field, f"COUNT in {spec!r} must be a whole number of points", 'e.g. "1000:5000:9"')
+        count = int(ctext)
         if count < 2:
             raise InputError(field, f"COUNT must be at least 2 in {spec!r}", "use a single value for one point")
+        if count > MAX_GRID_POINTS:
+            raise InputError(field, f"COUNT {count:,} in {spec!r} is more than {MAX_GRID_POINTS:.0e} points",
+                             "use fewer points")
         if not stop > start:
             raise InputError(field, f"grid {spec!r} has STOP ≤ START", f"write it increasing, e.g. "
                              f'"{parts[1].strip()}:{parts[0].strip()}:{count}"')
         return np.linspace(start, stop, count)
+    if spec is None or isinstance(spec, bool | dict | set | bytes):
+        raise InputError(field, f"expected a value or a grid START:STOP:COUNT, got {spec!r}"[:160],
+                         'e.g. "1000:5000:9" or a list of values')
     return np.array([parse_quantity(spec, dimension, field)], dtype=float)
 
 
@@ -345,6 +382,7 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
         raise InputError("chunk_points", f"must be a positive integer, got {chunk_points!r}", "e.g. 2000")
     dims = [name for name, _, _ in AXES if len(axes[name]) > 1]
     shape = tuple(len(axes[d]) for d in dims)
+    check_grid_size(shape)  # before blocks or output are allocated
     blocks = _blocks(shape, chunk_points)
     npts = int(np.prod(shape)) if shape else 1
     attrs = {"bearing": getattr(bearing, "name", "bearing"), "control": control, "model": "Jones-Harris quasi-static",

@@ -14,6 +14,11 @@ Summary arrays (n = number of points):
     iterations [n], residual [n] [N]
     p_inner, p_outer [n]  maximum contact pressure [Pa]
     alpha_inner_min/max, alpha_outer_min/max [n]  contact angles of the loaded balls [rad]
+    n_lift_off [n]  balls without load at the inner raceway while others carry load
+    warning_flags [n]  int32 bitmask of :mod:`bearingsim.limits` (pressure, contact angle, speed, lift-off
+                at speed, not converged)
+Status codes: the keys of :data:`bearingsim.statics.jones_harris.STATUS` (0 converged; 5 not confirmed by
+the independent recomputation; 6 contact at 90° or more; 7 internal error of this point; 8 free ring).
 """
 
 from __future__ import annotations
@@ -25,10 +30,12 @@ from numba import njit
 
 from . import _kernels as kn
 
-SUMMARY_FIELDS = ("p_inner", "p_outer", "alpha_inner_min", "alpha_inner_max", "alpha_outer_min", "alpha_outer_max")
+SUMMARY_FIELDS = ("p_inner", "p_outer", "alpha_inner_min", "alpha_inner_max", "alpha_outer_min", "alpha_outer_max",
+                  "n_lift_off")
+NSUMMARY = len(SUMMARY_FIELDS)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _scale(loads, dm):
     s = 1.0
     for k in range(3):
@@ -38,7 +45,7 @@ def _scale(loads, dm):
     return s
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _contact_extremes(ballout, r, z, iq, isin, icos, acc):
     """Largest load and contact-angle extremes of one contact type of row r, merged into acc.
 
@@ -72,10 +79,21 @@ def _contact_extremes(ballout, r, z, iq, isin, icos, acc):
         acc[2] = max(acc[2], math.atan2(ballout[r, j_hi, isin], ballout[r, j_hi, icos]))
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
+def _free_ring(rows, ballout, tol):
+    """True when no ball carries more than tol [N] at the inner raceway."""
+    for r in range(rows.shape[0]):
+        for j in range(int(rows[r, kn.P_Z])):
+            if ballout[r, j, 2] > tol:
+                return False
+    return True
+
+
+@njit(cache=True, error_model="numpy")
 def _summarise(rows, ballout, out):
-    """Max pressures and contact-angle extremes of the loaded balls → out[6] (p_max = C_p Q^(1/3) at the
-    largest load of each row; angles by :func:`_contact_extremes`)."""
+    """Max pressures and contact-angle extremes of the loaded balls → out[0:6] (p_max = C_p Q^(1/3) at the
+    largest load of each row; angles by :func:`_contact_extremes`), out[6] ← number of balls without load
+    at the inner raceway while others carry load (0 when none carries load)."""
     inner = np.empty(3)
     outer = np.empty(3)
     pi_max = 0.0
@@ -97,11 +115,21 @@ def _summarise(rows, ballout, out):
     out[1] = po_max
     out[2], out[3] = (inner[1], inner[2]) if inner[1] <= inner[2] else (math.nan, math.nan)
     out[4], out[5] = (outer[1], outer[2]) if outer[1] <= outer[2] else (math.nan, math.nan)
+    # balls without load at the inner raceway while others carry load (lift-off count)
+    nfree = 0
+    nload = 0
+    for r in range(rows.shape[0]):
+        for j in range(int(rows[r, kn.P_Z])):
+            if ballout[r, j, 2] > 0.0:
+                nload += 1
+            else:
+                nfree += 1
+    out[6] = nfree if nload > 0 else 0.0
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, nogil=True, error_model="numpy")
 def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters, resid, summ,
-                tol_ball, tol_ring, maxit_ball, maxit_ring, predictor):
+                tol_ball, tol_ring, maxit_ball, maxit_ring, predictor, tol_verify):
     """Solve every operating point i (loads[i], omega[i]) in order, warm-starting from point i−1;
     a point that hits the iteration limit or a singular stiffness is retried from ``q_cold``.
 
@@ -117,7 +145,11 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
 
     rows : float[nrow, NPAR]; loads : float[n, 5] [N, N·m]; omega : float[n] [rad/s]
     control : kernel control code; q_cold : float[5] cold start [m, rad]
-    Outputs (filled): q_out[n, 5], k_out[n, 5, 5], status[n], iters[n], resid[n], summ[n, 6].
+    tol_verify : a converged point must pass :func:`_kernels.equilibrium_residual` within tol_verify × load
+    scale (else one restart with fresh balls, then status 5); a converged point where no ball carries load
+    at the inner raceway gets status 8 (the ring is free); a deep-groove point whose warm and cold starts
+    fail is tried from the planar rigid-ring start (:func:`_kernels.planar_radial_start`).
+    Outputs (filled): q_out[n, 5], k_out[n, 5, 5], status[n], iters[n], resid[n], summ[n, NSUMMARY].
     """
     n = loads.shape[0]
     nrow = rows.shape[0]
@@ -137,7 +169,7 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
     ballout = np.zeros((nrow, zmax, 12))
     q = q_cold.copy()
     qtry = np.empty(5)
-    sm = np.empty(6)
+    sm = np.empty(summ.shape[1])
     kprev = np.zeros((5, 5))
     lprev = np.zeros(5)
     have_prev = False
@@ -170,10 +202,13 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
                 for k in range(5):
                     dl[k] = ld[k] - lprev[k]
                 if not kn.solve_small(kprev, dl, dq, wsol):
-                    dq[:] = np.linalg.solve(kprev, dl)
+                    ok = False  # singular tangent: start from the previous solution itself
+            if ok:
                 smax = 0.0
                 for k in range(5):
-                    smax = max(smax, abs(dq[k]) * (1.0 if k < 3 else 0.5 * dm))
+                    v = abs(dq[k]) * (1.0 if k < 3 else 0.5 * dm)
+                    if not (v <= smax):
+                        smax = v  # NaN-propagating max: a NaN tangent step is never taken
                 if smax < 0.2 * amax:
                     # correction on a uniform path (grid rows): when the step in (F, ω) repeats,
                     # the last point's deviation from its tangent prediction (the speed effect,
@@ -207,8 +242,37 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
             st, it, rn, bconv = kn.solve_ring_coupled(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
                                               tol_ball, tol_ring, maxit_ball, maxit_ring, sc, xs, wk, wk2, trig)
             tot += it
+        if (st == 1 or st == 2) and ld[0] == 0.0:
+            # a deep-groove row under radial load: the planar rigid-ring start of this point (the cold start
+            # of another point may sit inside the clearance, where no ball is loaded)
+            for k in range(5):
+                qtry[k] = 0.0
+            if kn.planar_radial_start(rows, ld, qtry):
+                lam[:, :] = lam0
+                xb[:, :, :] = 0.0
+                st, it, rn, bconv = kn.solve_ring_coupled(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
+                                                  tol_ball, tol_ring, maxit_ball, maxit_ring, sc, xs, wk, wk2,
+                                                  trig)
+                tot += it
+        if st == 0 and bconv:
+            # independent check: every ball re-solved from its own cold start at the returned displacement
+            # (the warm-start chain can carry a ball into another branch of its own equilibrium)
+            rv, vb = kn.equilibrium_residual(rows, ld, omega[i], control, qtry, tol_ball, maxit_ball)
+            if not (vb and rv <= tol_verify * sc):
+                lam[:, :] = lam0
+                xb[:, :, :] = 0.0
+                st, it, rn, bconv = kn.solve_ring(rows, ld, omega[i], control, qtry, lam, xb, kmat, ballout,
+                                                  tol_ball, tol_ring, maxit_ball, maxit_ring, sc)
+                tot += it
+                if st == 0 and bconv:
+                    rv, vb = kn.equilibrium_residual(rows, ld, omega[i], control, qtry, tol_ball, maxit_ball)
+                    if not (vb and rv <= tol_verify * sc):
+                        st = 5
+                        rn = max(rn, rv)
         if st == 0 and not bconv:
             st = 4
+        if st == 0 and _free_ring(rows, ballout, tol_verify * sc):
+            st = 8
         status[i] = st
         iters[i] = tot
         resid[i] = rn
@@ -217,11 +281,11 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
             for m in range(5):
                 k_out[i, k, m] = kmat[k, m]
         _summarise(rows, ballout, sm)
-        for k in range(6):
+        for k in range(summ.shape[1]):
             summ[i, k] = sm[k]
-        if st == 0 or st == 4 or st == 3:
+        if st == 0 or st == 4 or st == 3 or st == 6:
             # the ring equilibrium is good (status 4: only an unloaded ball's own balance failed;
-            # status 3: a converged equilibrium outside the model's validity, still a good start)
+            # status 3 and 6: a converged equilibrium outside the model's validity, still a good start)
             for k in range(5):
                 q[k] = qtry[k]
                 lprev[k] = ld[k]
@@ -277,11 +341,13 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
 
     Returns a dict of arrays (see the module docstring).
     """
-    from .jones_harris import CONTROLS, MAXIT_BALL, MAXIT_RING, TOL_BALL, TOL_RING, Loads, initial_guess, rows_of
+    from .jones_harris import (CONTROLS, MAXIT_BALL, MAXIT_RING, TOL_BALL, TOL_RING, TOL_VERIFY, Loads,
+                               initial_guess, rows_of)
 
     loads = np.ascontiguousarray(np.asarray(loads, dtype=float).reshape(-1, 5))
     n = loads.shape[0]
-    omega = np.ascontiguousarray(np.abs(np.broadcast_to(np.asarray(omega, dtype=float), (n,))))
+    speeds = np.broadcast_to(np.asarray(omega, dtype=float), (n,)).copy()
+    omega = np.ascontiguousarray(np.abs(speeds))
     rows = np.ascontiguousarray(rows_of(bearing))
     perm = None
     if reorder and n > 1:
@@ -292,12 +358,16 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
         q_start = initial_guess(bearing, Loads(*loads[0])) if n else np.zeros(5)
     out = {
         "q": np.zeros((n, 5)), "k": np.zeros((n, 5, 5)), "status": np.zeros(n, dtype=np.int64),
-        "iterations": np.zeros(n, dtype=np.int64), "residual": np.zeros(n), "summary": np.zeros((n, 6)),
+        "iterations": np.zeros(n, dtype=np.int64), "residual": np.zeros(n), "summary": np.zeros((n, NSUMMARY)),
     }
     if n:
-        solve_batch(rows, loads, omega, CONTROLS[control], np.asarray(q_start, dtype=float), out["q"], out["k"],
-                    out["status"], out["iterations"], out["residual"], out["summary"], TOL_BALL, TOL_RING,
-                    MAXIT_BALL, MAXIT_RING, predictor)
+        try:
+            solve_batch(rows, loads, omega, CONTROLS[control], np.asarray(q_start, dtype=float), out["q"], out["k"],
+                        out["status"], out["iterations"], out["residual"], out["summary"], TOL_BALL, TOL_RING,
+                        MAXIT_BALL, MAXIT_RING, predictor, TOL_VERIFY)
+        except Exception:  # noqa: BLE001  (one bad point must not lose the call: redo it point by point)
+            out["status"][:] = -1
+        _fallback_points(bearing, rows, loads, omega, control, out)
     if perm is not None:
         for key in list(out):
             v = np.empty_like(out[key])
@@ -306,4 +376,49 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
     out["converged"] = out["status"] == 0
     for j, name in enumerate(SUMMARY_FIELDS):
         out[name] = out["summary"][:, j]
+    from ..limits import flags_from_summary, limiting_speed
+
+    lift = (out["n_lift_off"] > 0) & (speeds != 0)
+    out["warning_flags"] = flags_from_summary(out["p_inner"], out["p_outer"],
+                                              [out[k] for k in SUMMARY_FIELDS[2:6]], speeds, lift, out["converged"],
+                                              limiting_speed(bearing))
     return out
+
+
+def _fallback_points(bearing, rows, loads, omega, control, out) -> None:
+    """Points the compiled loop did not converge (or lost to an exception, status −1) are solved again by the
+    single-point path :func:`bearingsim.statics.jones_harris.solve` (its own start and load continuation), so
+    that the batch and the single path agree on convergence; a point that raises gets status 7."""
+    from .jones_harris import Loads, solve
+
+    bad = np.flatnonzero((out["status"] == 1) | (out["status"] == 2) | (out["status"] == 5) | (out["status"] < 0))
+    summ = np.empty(NSUMMARY)
+    for i in bad:
+        try:
+            r = solve(bearing, Loads(*loads[i]), float(omega[i]), control)
+        except Exception:  # noqa: BLE001  (isolate the point; the others keep their results)
+            out["status"][i] = 7
+            out["q"][i] = np.nan
+            out["k"][i] = np.nan
+            out["residual"][i] = np.nan
+            out["summary"][i] = np.nan
+            continue
+        if r.converged or out["status"][i] < 0:
+            out["status"][i] = r.status_code
+            out["q"][i] = r.displacement
+            out["k"][i] = r.stiffness
+            out["iterations"][i] += r.iterations
+            out["residual"][i] = r.residual
+            zmax = int(rows[:, kn.P_Z].max())
+            bo = np.zeros((rows.shape[0], zmax, 12))
+            b = r.balls
+            rr = b["row"].astype(int)
+            jj = np.concatenate([np.arange(int(z)) for z in rows[:, kn.P_Z]])
+            bo[rr, jj, 2] = b["inner_load_N"]
+            bo[rr, jj, 3] = b["outer_load_N"]
+            bo[rr, jj, 8] = np.sin(b["inner_contact_angle_rad"])
+            bo[rr, jj, 9] = np.cos(b["inner_contact_angle_rad"])
+            bo[rr, jj, 10] = np.sin(b["outer_contact_angle_rad"])
+            bo[rr, jj, 11] = np.cos(b["outer_contact_angle_rad"])
+            _summarise(rows, bo, summ)
+            out["summary"][i] = summ

@@ -73,7 +73,7 @@ CONTROL_INNER = 1
 CONTROL_AUTO = 2
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def kinematics(si, ci, so, co, gam):
     """Jones' ball speeds for outer-raceway control and inner-raceway control.
 
@@ -96,13 +96,20 @@ def kinematics(si, ci, so, co, gam):
         po = (co + t * so) / (1.0 + gam * co)
         pi = (ci + t * si) / (1.0 - gam * ci)
         cb = 1.0 / math.sqrt(1.0 + t * t)
+        if po + pi == 0.0 or not math.isfinite(t):
+            # contact angles for which the rolling relations have no solution (a contact past 90°):
+            # undefined speeds, reported as NaN, never a division by zero
+            res[3 * k] = math.nan
+            res[3 * k + 1] = math.nan
+            res[3 * k + 2] = math.nan
+            continue
         res[3 * k] = po / (po + pi)
         res[3 * k + 1] = -1.0 / (gam * cb * (po + pi))
         res[3 * k + 2] = math.atan(t)
     return res
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac):
     """Residual, ring force and analytic derivatives for one ball.
 
@@ -157,6 +164,8 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
     if cg > 0.0 or cf > 0.0:
         if inner_ctrl:
             den = ci - gam
+            if den == 0.0:
+                den = math.nan  # β = 90°: outside the rolling relations (NaN residual, never a crash)
             t = si / den
             t_si = 1.0 / den
             t_ci = -si / (den * den)
@@ -164,6 +173,8 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
             t_co = 0.0
         else:
             den = co + gam
+            if den == 0.0:
+                den = math.nan
             t = so / den
             t_si = 0.0
             t_ci = 0.0
@@ -174,6 +185,10 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
         po = (co + t * so) / ao
         pi = (ci + t * si) / ai
         s = po + pi
+        if s == 0.0:
+            # no rolling solution at these contact angles (Jones' relations divide by po + pi):
+            # the ball's residual becomes NaN, which every solver treats as a failed trial
+            s = math.nan
         s2 = s * s
         s3 = s2 * s
         g = cg * t * po / s2
@@ -230,7 +245,7 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
         jac[4, k] = dgk
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, maxit):
     """Solve the two force balances of one ball for its centre (X₁, X₂) by Newton–Raphson.
 
@@ -333,7 +348,7 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
     return conv, it
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ball_total_derivative(jac, dfa):
     """dF/dA of the ring force at ball equilibrium: ∂F/∂A − ∂F/∂X (∂R/∂X)⁻¹ ∂R/∂A.
 
@@ -353,7 +368,7 @@ def ball_total_derivative(jac, dfa):
     dfa[2, 1] = jac[4, 3] - (jac[4, 0] * s01 + jac[4, 1] * s11)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def control_weights(inner_ctrl):
     """(λ_i, λ_o) of the gyroscopic-moment share for raceway control: inner (1, 1) or outer (0, 2) (Harris)."""
     if inner_ctrl == 1:
@@ -361,7 +376,7 @@ def control_weights(inner_ctrl):
     return 0.0, 2.0
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _ball_row_out(bo, a1, a2, xl, out, g):
     """One ball's row of the ``ballout`` table (layout in :func:`ring_assemble`): groove-centre offsets
     (A1, A2) [m], loads, approaches and kinematic terms from the ball solve ``out``, the gyroscopic
@@ -382,7 +397,7 @@ def _ball_row_out(bo, a1, a2, xl, out, g):
     bo[11] = xl[1] / lo
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _groove_offsets(par, s, ric, xg, cp, sp, qv, ta1, ta2, gw):
     """(A1, A2) [m] of a ball at azimuth ψ (cp, sp = cos ψ, sin ψ) for ring displacement qv, and their
     gradients: ta1, ta2 ← d(A1)/dq, d(A2)/dq (small rotations about y and z of the inner groove-centre
@@ -411,7 +426,7 @@ def _groove_offsets(par, s, ric, xg, cp, sp, qv, ta1, ta2, gw):
     return a1, a2
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, ballout, tol, maxit):
     """Solve every ball for the ring displacement qv and assemble residual and stiffness.
 
@@ -477,18 +492,25 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
                 inner_ctrl = lam_state[r, j]
                 lam_i, lam_o = control_weights(inner_ctrl)
                 conv, its = ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, xl, out, jac, tol, maxit)
-                if control != CONTROL_AUTO or omega == 0.0:
+                if control == CONTROL_OUTER or omega == 0.0:
                     break
-                # raceway control criterion (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 2):
-                # outer control when Q_o a_o E(κ_o) cos(α_i − α_o) > Q_i a_i E(κ_i)
                 qi = out[4]
                 qo = out[5]
-                lo = math.sqrt(xl[0] ** 2 + xl[1] ** 2)
-                li = math.sqrt((a1 - xl[0]) ** 2 + (a2 - xl[1]) ** 2)
-                cdiff = ((a2 - xl[1]) / li) * (xl[1] / lo) + ((a1 - xl[0]) / li) * (xl[0] / lo)
-                lhs = par[P_CAO] * qo ** (4.0 / 3.0) * cdiff
-                rhs = par[P_CAI] * qi ** (4.0 / 3.0)
-                want = 0 if lhs > rhs else 1
+                if not (qi > 0.0):
+                    # the inner contact is open: it transmits neither load nor the friction that would
+                    # hold the gyroscopic moment, so the outer raceway controls the ball (λ_i = 0)
+                    want = 0
+                elif control == CONTROL_INNER:
+                    want = 1
+                else:
+                    # raceway control criterion (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 2):
+                    # outer control when Q_o a_o E(κ_o) cos(α_i − α_o) > Q_i a_i E(κ_i)
+                    lo = math.sqrt(xl[0] ** 2 + xl[1] ** 2)
+                    li = math.sqrt((a1 - xl[0]) ** 2 + (a2 - xl[1]) ** 2)
+                    cdiff = ((a2 - xl[1]) / li) * (xl[1] / lo) + ((a1 - xl[0]) / li) * (xl[0] / lo)
+                    lhs = par[P_CAO] * qo ** (4.0 / 3.0) * cdiff
+                    rhs = par[P_CAI] * qi ** (4.0 / 3.0)
+                    want = 0 if lhs > rhs else 1
                 if want == inner_ctrl:
                     break
                 lam_state[r, j] = want
@@ -536,7 +558,7 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
     return allconv, maxits
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def solve_small(a, b, x, w):
     """x ← a⁻¹ b for a small dense system by Gaussian elimination with partial pivoting.
 
@@ -578,7 +600,29 @@ def solve_small(a, b, x, w):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
+def regularised_step(kk, res, dq, wsol, dm, mu):
+    """dq ← (K + μ d S)⁻¹ res with S = diag(1, 1, 1, d_m²/4, d_m²/4) and d the largest diagonal entry of
+    K in force units (Levenberg 1944 / Marquardt 1963 damping of a singular Newton step).  ``kk`` is
+    modified.  Returns False when no finite step exists (an empty or non-finite matrix)."""
+    d = 0.0
+    for k in range(5):
+        v = abs(kk[k, k]) * (1.0 if k < 3 else 4.0 / (dm * dm))
+        if math.isfinite(v) and v > d:
+            d = v
+    if not (d > 0.0):
+        return False
+    for k in range(5):
+        kk[k, k] += mu * d * (1.0 if k < 3 else 0.25 * dm * dm)
+    if not solve_small(kk, res, dq, wsol):
+        return False
+    for k in range(5):
+        if not math.isfinite(dq[k]):
+            return False
+    return True
+
+
+@njit(cache=True, error_model="numpy")
 def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball, tol_ring,
                maxit_ball, maxit_ring, load_scale):
     """Newton–Raphson on the five inner-ring displacements (seed 000 eq. 13).
@@ -591,7 +635,9 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
     status 0 converged; 1 max iterations; 2 singular stiffness (the load cannot be
     carried, e.g. an axial load pulling one angular contact row apart); 3 equilibrium
     found only with a loaded contact past the groove bottom of an angular contact row
-    (:func:`contact_beyond_groove_bottom`), outside the model.
+    (:func:`contact_beyond_groove_bottom`), outside the model; 6 equilibrium found only with a
+    loaded contact at |α| ≥ 90° (:func:`contact_past_groove_edge`), outside either ring.  A singular
+    Jacobian gets a damped step (:func:`regularised_step`); none of these raise.
     """
     res = np.empty(5)
     res_try = np.empty(5)
@@ -603,18 +649,17 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
     xb_save = xb.copy()
     # moments scaled by the pitch radius so that all residual entries are forces
     dm = rows[0, P_DM]
-    wts = np.array([1.0, 1.0, 1.0, 2.0 / dm, 2.0 / dm])
     bconv, _ = ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, ballout,
                              tol_ball, maxit_ball)
-    rn = 0.0
-    for k in range(5):
-        rn = max(rn, abs(res[k] * wts[k]))
+    rn = _scaled_norm(res, dm)
     it = 0
     status = 1
     if rn <= tol_ring * load_scale:
         # the start is already an equilibrium: it gets the same validity check as any other
         if contact_beyond_groove_bottom(rows, ballout):
             return 3, 0, rn, bconv
+        if contact_past_groove_edge(rows, ballout):
+            return 6, 0, rn, bconv
         return 0, 0, rn, bconv
     # displacement scale for step limiting: a fraction of the groove-centre distance
     amax = 0.0
@@ -642,7 +687,14 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
                 if not (kk[k, k] > 0.0):
                     kk[k, k] = 1e-6 * diag_max * (1.0 if k < 3 else dm * dm / 4.0)
         if not solve_small(kk, res, dq, wsol):
-            dq[:] = np.linalg.solve(kk, res)  # raises for a singular matrix, as before
+            # singular Jacobian with positive diagonal: coupled directions without stiffness of their
+            # own (a deep-groove bearing with clearance under radial load with one ball loaded: the
+            # axial and tilt rows of that ball are proportional, the only stiffness there the
+            # geometric term Q/(A + δ)).  Levenberg–Marquardt step (K + μ S) dq = res, μ small; the
+            # residual has no component along such a direction at a symmetric state, so the step
+            # stays there.  No equilibrium step at all → status 2, never an exception.
+            if not regularised_step(kk, res, dq, wsol, dm, 1e-9):
+                return 2, it, rn, bconv
         # step limit: translations ≤ 0.1 A, tilts ≤ 0.1 A / (d_m/2)
         smax = 0.0
         for k in range(5):
@@ -659,9 +711,7 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
             xb[:, :, :] = xb_save
             bconv, _ = ring_assemble(rows, q_try, omega, control, lam_state, xb, loads, res_try, k_try,
                                      ballout, tol_ball, maxit_ball)
-            rt = 0.0
-            for k in range(5):
-                rt = max(rt, abs(res_try[k] * wts[k]))
+            rt = _scaled_norm(res_try, dm)
             if rt < rn or rt <= tol_ring * load_scale:
                 accepted = True
                 break
@@ -687,10 +737,12 @@ def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, to
             break
     if status == 0 and contact_beyond_groove_bottom(rows, ballout):
         return 3, it, rn, bconv
+    if status == 0 and contact_past_groove_edge(rows, ballout):
+        return 6, it, rn, bconv
     return status, it, rn, bconv
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def contact_beyond_groove_bottom(rows, ballout):
     """True when a ball loaded by the inner ring of an angular contact row has a negative contact angle.
 
@@ -707,7 +759,116 @@ def contact_beyond_groove_bottom(rows, ballout):
     return False
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
+def contact_past_groove_edge(rows, ballout):
+    """True when a loaded contact (inner or outer, any row) has |α| ≥ 90°: the contact point would lie at
+    or beyond the height of its groove-curvature centre, which is outside either ring (the lands and
+    shoulders of both rings lie below it), so the torus model has left the raceway."""
+    for r in range(rows.shape[0]):
+        for j in range(int(rows[r, P_Z])):
+            bo = ballout[r, j]
+            if (bo[2] > 0.0 and not (bo[9] > 0.0)) or (bo[3] > 0.0 and not (bo[11] > 0.0)):
+                return True
+    return False
+
+
+@njit(cache=True, error_model="numpy")
+def series_constant(ki, ko):
+    """K_n = [(1/K_i)^(2/3) + (1/K_o)^(2/3)]^(−3/2) [N/m^1.5] (Harris & Kotzalas 2007 vol. 1 eq. 7.4)."""
+    return (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** (-1.5)
+
+
+@njit(cache=True, error_model="numpy")
+def planar_radial_displacement(par, fr, psi_f):
+    """Radial displacement δr [m] of a rigid inner ring of one deep-groove row under a radial load fr [N]
+    in the direction ψ_F, balls in the plane (zero contact angle):
+
+        F_r = Σ_j K_n (δr cos(ψ_j − ψ_F) − P_d/2)₊^1.5 cos(ψ_j − ψ_F)
+
+    (Harris & Kotzalas 2007 vol. 1 §7.3, eqs. 7.21–7.25 written ball by ball), solved by bisection
+    (the sum is increasing in δr).  P_d/2 = (r_i + r_o) − ΔR₀ is the radial play per side [m].
+    Returns NaN when fr ≤ 0.
+    """
+    if not (fr > 0.0):
+        return math.nan
+    z = int(par[P_Z])
+    kn_ = series_constant(par[P_KI], par[P_KO])
+    h = par[P_RI] + par[P_RO] - par[P_DR0]
+    cmax = 0.0
+    for j in range(z):
+        c = math.cos(par[P_PSI0] + 2.0 * math.pi * j / z - psi_f)
+        if c > cmax:
+            cmax = c
+    lo = 0.0
+    hi = (max(h, 0.0) + (fr / (kn_ * cmax)) ** (2.0 / 3.0)) / cmax
+    for _ in range(200):
+        f = -fr
+        for j in range(z):
+            c = math.cos(par[P_PSI0] + 2.0 * math.pi * j / z - psi_f)
+            d = hi * c - h
+            if d > 0.0:
+                f += kn_ * d * math.sqrt(d) * c
+        if f >= 0.0:
+            break
+        lo = hi
+        hi *= 2.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if not (lo < mid < hi):
+            break
+        f = -fr
+        for j in range(z):
+            c = math.cos(par[P_PSI0] + 2.0 * math.pi * j / z - psi_f)
+            d = mid * c - h
+            if d > 0.0:
+                f += kn_ * d * math.sqrt(d) * c
+        if f < 0.0:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+@njit(cache=True, error_model="numpy")
+def planar_radial_start(rows, loads, qv):
+    """Start of the ring Newton for a single deep-groove row under a load with a radial part: the rigid-ring
+    planar solution of :func:`planar_radial_displacement` for (q_y, q_z), so that the balls that carry the
+    load are in contact from the first iterate (a start inside the clearance has no ball loaded, hence no
+    stiffness).  qv[0], qv[3], qv[4] are left as they are.  Returns False (qv untouched) when it does not
+    apply (several rows, an angular contact row, no radial load)."""
+    if rows.shape[0] != 1 or rows[0, P_DX0] != 0.0:
+        return False
+    fr = math.hypot(loads[1], loads[2])
+    if not (fr > 0.0) or not math.isfinite(fr):
+        return False
+    psi_f = math.atan2(loads[2], loads[1])
+    dr = planar_radial_displacement(rows[0], fr, psi_f)
+    if not math.isfinite(dr):
+        return False
+    qv[1] = dr * loads[1] / fr
+    qv[2] = dr * loads[2] / fr
+    return True
+
+
+@njit(cache=True, error_model="numpy")
+def equilibrium_residual(rows, loads, omega, control, qv, tol_ball, maxit_ball):
+    """Independent check of a ring equilibrium: every ball re-solved from its own cold start (no warm start,
+    raceway control from the control's default) at the ring displacement qv, the ring forces summed.
+    Returns (scaled residual max |res_k| w_k [N] as :func:`_scaled_norm`, every ball converged)."""
+    nrow = rows.shape[0]
+    zmax = 0
+    for r in range(nrow):
+        zmax = max(zmax, int(rows[r, P_Z]))
+    lam = np.full((nrow, zmax), 1 if control == CONTROL_INNER else 0, dtype=np.int64)
+    xb = np.zeros((nrow, zmax, 2))
+    res = np.empty(5)
+    kmat = np.empty((5, 5))
+    ballout = np.zeros((nrow, zmax, 12))
+    bconv, _ = ring_assemble(rows, qv, omega, control, lam, xb, loads, res, kmat, ballout, tol_ball, maxit_ball)
+    return _scaled_norm(res, rows[0, P_DM]), bconv
+
+
+@njit(cache=True, error_model="numpy")
 def azimuth_table(rows, trig):
     """trig[r, j] ← (cos ψ_j, sin ψ_j), ψ_j = ψ₀ + 2π j / Z: the ball azimuths of every row, computed
     once per batch instead of once per ball evaluation (same expression as :func:`ring_assemble`)."""
@@ -720,7 +881,7 @@ def azimuth_table(rows, trig):
             trig[r, j, 1] = math.sin(psi)
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def ring_assemble_coupled(rows, qv, omega, lam_state, xb, loads, res, resc, kmat, ballout, tol, maxit, out, jac,
                           dfa, xl, ta1, ta2, gw, trig):
     """One Newton pass on the coupled ring–ball system (q and every ball's X₁, X₂): one ball evaluation each.
@@ -835,11 +996,15 @@ def ring_assemble_coupled(rows, qv, omega, lam_state, xb, loads, res, resc, kmat
     return allconv
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def _scaled_norm(res, dm):
+    """max |res_k| w_k with w = (1, 1, 1, 2/d_m, 2/d_m) [N]; NaN when any entry is NaN (a failed ball
+    evaluation must never look like a small residual: ``max(rn, nan)`` would silently drop it)."""
     rn = 0.0
     for k in range(5):
-        rn = max(rn, abs(res[k]) * (1.0 if k < 3 else 2.0 / dm))
+        v = abs(res[k]) * (1.0 if k < 3 else 2.0 / dm)
+        if not (v <= rn):
+            rn = v
     return rn
 
 
@@ -849,12 +1014,12 @@ def _scaled_norm(res, dm):
 NLS = 4
 
 
-@njit(cache=True)
+@njit(cache=True, error_model="numpy")
 def solve_ring_coupled(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball, tol_ring,
                        maxit_ball, maxit_ring, load_scale, xs, wk, wk2, trig):
     """Ring equilibrium by Newton on the coupled ring–ball system, :func:`solve_ring` as the safeguard.
 
-    Used when ``omega`` > 0 and the raceway control is fixed (outer or inner; at rest the ball solve
+    Used when ``omega`` > 0 and the raceway control is outer control (inner and auto control: :func:`solve_ring`; at rest the ball solve
     is closed form and :func:`solve_ring` is used).  Each coupled step K⁻¹ res_c is limited as in
     :func:`solve_ring` and halved up to NLS − 1 times until the condensed residual decreases; when it
     does not, the point continues with :func:`solve_ring` from the last accepted state.  A point is
@@ -866,7 +1031,9 @@ def solve_ring_coupled(rows, loads, omega, control, qv, lam_state, xb, kmat, bal
     trig : float[nrow, zmax, 2] from :func:`azimuth_table`.
     Returns (status, iterations, residual, ball_converged) as :func:`solve_ring`.
     """
-    if omega == 0.0 or control == CONTROL_AUTO or xb.shape[2] < 8:
+    if omega == 0.0 or control != CONTROL_OUTER or xb.shape[2] < 8:
+        # inner and auto control change a ball's control when its inner contact opens (ring_assemble):
+        # the coupled step assumes a fixed control, so those go to the safeguarded solver
         return solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball, tol_ring,
                           maxit_ball, maxit_ring, load_scale)
     res = wk[0:5]
@@ -895,6 +1062,8 @@ def solve_ring_coupled(rows, loads, omega, control, qv, lam_state, xb, kmat, bal
         if bconv and rn <= tol_ring * load_scale:
             if contact_beyond_groove_bottom(rows, ballout):
                 return 3, it, rn, bconv
+            if contact_past_groove_edge(rows, ballout):
+                return 6, it, rn, bconv
             return 0, it, rn, bconv
         if it >= maxit_ring:
             break

@@ -271,6 +271,8 @@ def _preload_offset(bearing_rows, force: float) -> float:
     def carried(e):
         sys_ = BearingSystem("preload", tuple(dataclasses.replace(r, axial_offset=e) for r in bearing_rows))
         res = solve(sys_, Loads(), 0.0)
+        if res.status_code == 8:
+            return 0.0  # the rows just touch (or not at all): no ball loaded, no preload
         if not res.converged:
             raise InputError("preload", f"no equilibrium at rest with an offset of {e * 1e6:.4g} µm",
                              "check the row geometry and the preload")

@@ -16,9 +16,11 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
+import numbers
+
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, InputTypeError
 from . import _kernels as kn
 from .axial import solve_thrust
 
@@ -26,8 +28,51 @@ CONTROLS = {"outer": kn.CONTROL_OUTER, "inner": kn.CONTROL_INNER, "auto": kn.CON
 DOF = ("x", "y", "z", "gamma_y", "gamma_z")
 TOL_BALL = 1e-12
 TOL_RING = 1e-10
+#: a result is called converged only if the ring balance, recomputed with every ball re-solved from its own
+#: cold start at the returned displacement (:func:`_kernels.equilibrium_residual`), is within TOL_VERIFY
+#: times the load scale (the largest load, moments divided by the pitch radius, at least 1 N) [-]
+TOL_VERIFY = 1e-7
 MAXIT_BALL = 60
 MAXIT_RING = 100
+
+#: status codes of the kernels and of :func:`solve` / :func:`solve_many`
+STATUS = {
+    0: "converged",
+    1: "no equilibrium found within the iteration limit",
+    2: "singular stiffness: no ball carries load in some direction, the bearing cannot carry "
+       "this load (e.g. an axial load that pulls a single angular contact row apart)",
+    3: "the only equilibrium puts a loaded contact past the groove bottom of an angular contact "
+       "row (negative contact angle, where the ring has its low shoulder): add axial load or a "
+       "second row",
+    4: "ring converged but a ball's equilibrium did not",
+    5: "the ring balance is not met when the balls are re-solved from scratch at the returned displacement "
+       "(the ball equilibrium is not unique here): not an equilibrium to report",
+    6: "the only equilibrium found puts a loaded contact at a contact angle of 90° or more, beyond the "
+       "groove edge of the ring (outside the model): the load is beyond what the bearing can carry",
+    7: "the solver failed on this point (internal error); see the log",
+    8: "no ball carries load at the inner raceway (no load, or every ball lifted off by its centrifugal "
+       "force): the inner ring is free and its position is not determined",
+}
+
+
+def _free_ring(ballout: np.ndarray, rows: np.ndarray, scale: float) -> bool:
+    """True when no ball carries more than TOL_VERIFY × scale [N] at the inner raceway (a continuum of
+    equilibria: the displacement and stiffness mean nothing)."""
+    zs = rows[:, kn.P_Z].astype(int)
+    qi = np.concatenate([ballout[r, :z, 2] for r, z in enumerate(zs)])
+    return not bool(np.any(qi > TOL_VERIFY * scale))
+
+
+def _number(value, field: str) -> float:
+    """A real number (not bool, not str) → float; InputTypeError/InputError naming ``field`` otherwise."""
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        hint = 'parse units at the edge (bearingsim.units.parse_quantity) and pass SI floats' \
+            if isinstance(value, str) else "pass a float in SI units"
+        raise InputTypeError(field, f"must be a real number, got {type(value).__name__} {value!r}", hint)
+    v = float(value)
+    if not math.isfinite(v):
+        raise InputError(field, f"must be finite, got {value!r}", "give a finite value")
+    return v
 
 
 @dataclass(frozen=True)
@@ -42,9 +87,8 @@ class Loads:
 
     def __post_init__(self):
         for name in ("fa", "fr_y", "fr_z", "m_y", "m_z"):
-            v = getattr(self, name)
-            if not math.isfinite(v):
-                raise InputError(name, f"must be finite, got {v!r}", "give a finite load")
+            # numbers only (a str, bool, None or list is refused naming the field), stored as float
+            object.__setattr__(self, name, _number(getattr(self, name), name))
 
     def as_array(self) -> np.ndarray:
         return np.array([self.fa, self.fr_y, self.fr_z, self.m_y, self.m_z], dtype=float)
@@ -70,6 +114,14 @@ class StaticResult:
     stiffness: np.ndarray  #: 5×5, order (x, y, z, γy, γz) [N/m, N/rad, N·m/m, N·m/rad]
     balls: dict = field(repr=False)
     rows_params: np.ndarray = field(repr=False, default=None)
+    #: plausibility warnings (:func:`bearingsim.limits.static_warnings`), empty when none
+    warnings: list = field(default_factory=list)
+    status_code: int = 0  #: kernel status (keys of :data:`STATUS`)
+
+    @property
+    def clearance(self) -> dict:
+        """Internal clearances of the bearing [m] (:func:`internal_clearance`)."""
+        return internal_clearance(self.bearing)
 
     @property
     def axial_displacement(self) -> float:
@@ -112,6 +164,8 @@ class StaticResult:
             "stiffness_matrix": [[float(v) for v in row] for row in self.stiffness],
             "stiffness_order": list(DOF),
             "cage_speed_rad_s": self.cage_speed,
+            "clearance": self.clearance,
+            "warnings": list(self.warnings),
             "balls": balls,
         }
         from ..life import iso281_life, reference_rating_life
@@ -139,6 +193,34 @@ class StaticResult:
         return float(np.mean(w[loaded]))
 
 
+def internal_clearance(bearing) -> dict:
+    """Internal clearances of a single-row bearing [m] (empty for a bearing system; see its rows).
+
+    radial_internal_clearance_m : P_d, the diametral (radial) clearance: total radial free movement of one
+        ring from one extreme to the other (ISO 5593; Harris & Kotzalas 2007 vol. 1 §2.2)
+    axial_internal_clearance_m : P_e, total axial free movement.  Deep groove: P_e = 2 A sin α₀ with
+        cos α₀ = 1 − P_d/(2A) (Harris & Kotzalas 2007 vol. 1 eqs. 2.10, 2.13).  Angular contact (a single
+        row is open on one side): the axial shift from the centred position to first contact,
+        √(A² − (A cos α₀ − P_d/2)²) − A sin α₀ (0 without extra clearance).
+    axial_play_m : the axial movement from the centred position to first contact on each side
+        (P_e/2 for a deep-groove bearing; as above for an angular contact row).
+    """
+    if not hasattr(bearing, "total_curvature_distance"):
+        return {}
+    big_a = bearing.total_curvature_distance
+    pd = bearing.diametral_clearance
+    a0 = bearing.free_contact_angle
+    if bearing.kind == "deep_groove":
+        pe = 2.0 * big_a * math.sin(a0) if pd > 0 else 0.0
+        play = 0.5 * pe
+    else:
+        c = big_a * math.cos(a0) - 0.5 * pd
+        play = math.sqrt(max(big_a * big_a - c * c, 0.0)) - big_a * math.sin(a0) if pd > 0 else 0.0
+        pe = play
+    return {"radial_internal_clearance_m": float(pd), "axial_internal_clearance_m": float(pe),
+            "axial_play_m": float(play)}
+
+
 def rows_of(bearing) -> np.ndarray:
     """Kernel row parameters of a bearing or bearing system."""
     if hasattr(bearing, "rows_parameters"):
@@ -162,8 +244,16 @@ def initial_guess(bearing, loads: Loads) -> np.ndarray:
         q0[0] = th.axial_deflection + 0.5 * bearing.diametral_clearance * \
             math.cos(bearing.free_contact_angle) / max(math.sin(bearing.free_contact_angle), 1e-3)
     else:
-        # deep groove: take up the clearance in the load direction
         fr = math.hypot(loads.fr_y, loads.fr_z)
+        if fr > 0 and loads.fa == 0:
+            # pure radial load: the planar rigid-ring solution (Harris & Kotzalas vol. 1 §7.3), so that the
+            # balls of the load zone are in contact from the first iterate.  A start just past the
+            # clearance loads a single ball (or none, when the load points between balls), whose axial and
+            # tilt rows are proportional: a singular Jacobian.
+            q1 = q0.copy()
+            if kn.planar_radial_start(bearing.row_parameters()[None, :], loads.as_array(), q1):
+                return q1
+        # deep groove: take up the clearance in the load direction
         c = 0.5 * bearing.diametral_clearance
         if fr > 0:
             q0[1] = loads.fr_y / fr * (c + 1e-6)
@@ -179,6 +269,51 @@ def _scale(loads: Loads, rows: np.ndarray) -> float:
                1.0)
 
 
+def _check_control(control) -> str:
+    if not isinstance(control, str) or control not in CONTROLS:
+        raise InputError("control", f"unknown raceway control {control!r}", "use outer, inner or auto")
+    return control
+
+
+def _check_initial(initial) -> np.ndarray:
+    """``initial`` → float[5] copy; refused (InputError naming it) before any compiled kernel sees it."""
+    try:
+        q = np.array(initial, dtype=float)
+    except (TypeError, ValueError):
+        raise InputTypeError("initial", f"must be 5 numbers (δx, δy, δz, γy, γz), got {initial!r}",
+                             "pass a float array of shape (5,) [m, rad]") from None
+    if q.shape != (5,):
+        raise InputError("initial", f"must have shape (5,), got {q.shape}", "pass (δx, δy, δz, γy, γz) [m, rad]")
+    if not np.all(np.isfinite(q)):
+        raise InputError("initial", f"must be finite, got {q.tolist()}", "pass finite displacements or None")
+    return q
+
+
+def _check_bearing(bearing):
+    if not (hasattr(bearing, "rows_parameters") or hasattr(bearing, "row_parameters")):
+        raise InputTypeError("bearing", f"expected a BallBearing or bearing system, got {type(bearing).__name__}",
+                             "load one with bearingsim.io.load_bearing")
+
+
+def _solve_kernel(rows, loads_arr, omega, control, q, scale):
+    """One kernel solve from q (modified) with fresh ball and control states → (status, its, rn, bconv, ...)."""
+    nrow = rows.shape[0]
+    zmax = int(rows[:, kn.P_Z].max())
+    lam = np.full((nrow, zmax), 1 if control == "inner" else 0, dtype=np.int64)
+    xb = np.zeros((nrow, zmax, 2))
+    kmat = np.zeros((5, 5))
+    ballout = np.zeros((nrow, zmax, 12))
+    status, its, rn, bconv = kn.solve_ring(rows, loads_arr, omega, CONTROLS[control], q, lam, xb, kmat, ballout,
+                                           TOL_BALL, TOL_RING, MAXIT_BALL, MAXIT_RING, scale)
+    return int(status), int(its), float(rn), bool(bconv), lam, xb, kmat, ballout
+
+
+def _verified(rows, loads_arr, omega, control, q, scale) -> tuple[bool, float]:
+    """Independent recomputation (:func:`_kernels.equilibrium_residual`) within TOL_VERIFY → (ok, residual)."""
+    rv, bc = kn.equilibrium_residual(rows, loads_arr, omega, CONTROLS[control], q, TOL_BALL, MAXIT_BALL)
+    return bool(bc) and bool(rv <= TOL_VERIFY * scale), float(rv)
+
+
 def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str = "outer",
           initial: np.ndarray | None = None) -> StaticResult:
     """Quasi-static equilibrium of ``bearing`` under ``loads`` at inner-ring ``speed`` [rad/s].
@@ -187,47 +322,86 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
     ----------
     bearing : BallBearing or a bearing system with ``rows_parameters()``
     loads : Loads  [N, N·m]
-    speed : float  [rad/s]  inner-ring speed (outer ring fixed)
+    speed : float  [rad/s]  inner-ring speed (outer ring fixed); the sign gives the sense of rotation of
+        the balls and cage (the equilibrium depends on |speed| only)
     control : ``"outer"``, ``"inner"`` or ``"auto"`` raceway control (auto: Jones' criterion per ball)
-    initial : optional start for (δx, δy, δz, γy, γz)
+    initial : optional start for (δx, δy, δz, γy, γz) [m, rad], float[5], finite
 
     Returns a :class:`StaticResult`; ``converged`` is False (with ``status`` and ``residual``)
-    when no equilibrium was found — never a silently wrong number.
+    when no equilibrium was found — never a silently wrong number.  A result is called converged
+    only when the ring balance recomputed independently (every ball re-solved from its own cold start
+    at the returned displacement) is within :data:`TOL_VERIFY`; results past the plausibility limits
+    of :mod:`bearingsim.limits` carry ``warnings``.
     """
-    loads = loads or Loads()
-    if control not in CONTROLS:
-        raise InputError("control", f"unknown raceway control {control!r}", "use outer, inner or auto")
-    if not math.isfinite(speed):
-        raise InputError("speed", f"must be finite, got {speed!r}", 'e.g. "11200 rpm"')
+    from ..limits import check_speed, static_warnings
+
+    _check_bearing(bearing)
+    if loads is None:
+        loads = Loads()
+    elif not isinstance(loads, Loads):
+        raise InputTypeError("loads", f"expected a Loads, got {type(loads).__name__}",
+                             "e.g. Loads(fa=1000.0, fr_y=500.0) [N, N·m]")
+    _check_control(control)
+    speed = _number(speed, "speed")
     rows = rows_of(bearing)
-    zmax = int(rows[:, kn.P_Z].max())
-    nrow = rows.shape[0]
-    q = np.array(initial if initial is not None else initial_guess(bearing, loads), dtype=float)
-    lam = np.full((nrow, zmax), 1 if control == "inner" else 0, dtype=np.int64)
-    xb = np.zeros((nrow, zmax, 2))
-    kmat = np.zeros((5, 5))
-    ballout = np.zeros((nrow, zmax, 12))
-    status, its, rn, bconv = kn.solve_ring(rows, loads.as_array(), float(abs(speed)), CONTROLS[control], q, lam, xb,
-                                           kmat, ballout, TOL_BALL, TOL_RING, MAXIT_BALL, MAXIT_RING,
-                                           _scale(loads, rows))
-    messages = {0: "converged", 1: "no equilibrium found within the iteration limit",
-                2: "singular stiffness: no ball carries load in some direction, the bearing cannot carry "
-                   "this load (e.g. an axial load that pulls a single angular contact row apart)",
-                3: "the only equilibrium puts a loaded contact past the groove bottom of an angular contact "
-                   "row (negative contact angle, where the ring has its low shoulder): add axial load or a "
-                   "second row"}
-    msg = messages[int(status)]
+    check_speed(speed, float(rows[0, kn.P_DM]))
+    q = _check_initial(initial) if initial is not None else np.array(initial_guess(bearing, loads), dtype=float)
+    la = loads.as_array()
+    omega = float(abs(speed))
+    scale = _scale(loads, rows)
+    q_in = q.copy()
+    status, its, rn, bconv, lam, xb, kmat, ballout = _solve_kernel(rows, la, omega, control, q, scale)
+    if status in (1, 2):
+        # other starts before giving up: the default start (when the caller gave one), then a continuation
+        # in the load from a tenth of it (each step warm-started from the last), the path the batch takes
+        starts = [] if initial is None else [np.array(initial_guess(bearing, loads), dtype=float)]
+        for q1 in starts + [None]:
+            if q1 is None:
+                q1 = q_in.copy()
+                for f in (0.1, 0.25, 0.5, 0.75):
+                    kn.solve_ring(rows, f * la, omega, CONTROLS[control], q1,
+                                  np.full(lam.shape, 1 if control == "inner" else 0, dtype=np.int64),
+                                  np.zeros(xb.shape), np.zeros((5, 5)), np.zeros(ballout.shape), TOL_BALL, TOL_RING,
+                                  MAXIT_BALL, MAXIT_RING, max(f * scale, 1.0))
+                if not np.all(np.isfinite(q1)):
+                    continue
+            st1, its1, rn1, bc1, lam1, xb1, kmat1, bo1 = _solve_kernel(rows, la, omega, control, q1, scale)
+            its += its1
+            if st1 not in (1, 2):
+                status, rn, bconv, lam, xb, kmat, ballout = st1, rn1, bc1, lam1, xb1, kmat1, bo1
+                q = q1
+                break
+    if status == 0 and bconv:
+        ok, rv = _verified(rows, la, omega, control, q, scale)
+        if not ok:
+            # the balls were carried into another branch by their warm starts: continue from the fresh state
+            st2, its2, rn2, bc2, lam, xb, kmat, ballout = _solve_kernel(rows, la, omega, control, q, scale)
+            its += its2
+            status, rn, bconv = st2, rn2, bc2
+            if status == 0 and bconv:
+                ok, rv = _verified(rows, la, omega, control, q, scale)
+            if status == 0 and bconv and not ok:
+                status, rn = 5, max(rn, rv)
     if status == 0 and not bconv:
-        msg = "ring converged but a ball's equilibrium did not"
-    converged = status == 0 and bool(bconv)
-    balls = ball_table(rows, ballout, xb, lam, float(abs(speed)))
-    return StaticResult(bearing=bearing, loads=loads, speed=float(speed), control=control, converged=converged,
-                        status=msg, iterations=int(its), residual=float(rn), displacement=q.copy(),
-                        stiffness=kmat.copy(), balls=balls, rows_params=rows)
+        status = 4
+    if status == 0 and _free_ring(ballout, rows, scale):
+        status = 8
+    converged = status == 0
+    balls = ball_table(rows, ballout, xb, lam, float(speed))
+    res = StaticResult(bearing=bearing, loads=loads, speed=float(speed), control=control, converged=converged,
+                       status=STATUS.get(status, f"status {status}"), iterations=int(its), residual=float(rn),
+                       displacement=q.copy(), stiffness=kmat.copy(), balls=balls, rows_params=rows,
+                       status_code=int(status))
+    res.warnings = static_warnings(res)
+    return res
 
 
 def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.ndarray, omega: float) -> dict:
-    """Per-ball quantities from the kernel's output arrays (SI), including Jones' ball speeds."""
+    """Per-ball quantities from the kernel's output arrays (SI), including Jones' ball speeds.
+
+    ``omega`` is the signed inner-ring speed [rad/s]: the ball speeds are proportional to it (Jones'
+    relations are linear in ω), so a negative speed gives negative orbital speeds (the cage turns with
+    the shaft) and the spin reverses with it."""
     cols = {k: [] for k in ("row", "azimuth_rad", "inner_contact_angle_rad", "outer_contact_angle_rad",
                             "inner_load_N", "outer_load_N", "inner_max_pressure_Pa", "outer_max_pressure_Pa",
                             "inner_approach_m", "outer_approach_m", "x1_m", "x2_m", "centrifugal_force_N",
@@ -270,9 +444,15 @@ class BatchResult:
 
     displacement: np.ndarray  #: (n, 5)
     stiffness: np.ndarray  #: (n, 5, 5)
-    converged: np.ndarray  #: (n,) bool
+    converged: np.ndarray  #: (n,) bool: verified equilibria (status 0)
     iterations: np.ndarray  #: (n,) int
     residual: np.ndarray  #: (n,) [N]
+    status: np.ndarray = None  #: (n,) int, keys of :data:`STATUS`
+    warning_flags: np.ndarray = None  #: (n,) int32 bitmask of :mod:`bearingsim.limits`
+
+    def status_message(self, i: int) -> str:
+        """Readable status of point i."""
+        return STATUS.get(int(self.status[i]), f"status {int(self.status[i])}")
 
 
 def solve_many(bearing, loads: np.ndarray, speeds: np.ndarray, control: str = "outer") -> BatchResult:
@@ -287,18 +467,33 @@ def solve_many(bearing, loads: np.ndarray, speeds: np.ndarray, control: str = "o
     Neighbouring points in the order given share their solutions as starting points (the
     compiled loop of :func:`bearingsim.statics._batch.run_batch`, with a tangent predictor and a
     cold restart when a warm start fails), so order the points along a path through the grid
-    (e.g. speed fastest) for best speed.
+    (e.g. speed fastest) for best speed.  Every point reported converged passed the same independent
+    recomputation as :func:`solve` (:data:`TOL_VERIFY`); a point the loop does not converge is solved
+    again by :func:`solve`, so both paths agree on convergence; a point that fails in any other way gets
+    its own status (7) and the other points keep their results.
     """
+    from ..limits import check_speed
     from ._batch import run_batch
 
-    loads = np.ascontiguousarray(loads, dtype=float)
-    speeds = np.ascontiguousarray(speeds, dtype=float)
+    _check_bearing(bearing)
+    _check_control(control)
+    for name, v in (("loads", loads), ("speeds", speeds)):
+        if v is None or isinstance(v, str | bytes | bool):
+            raise InputTypeError(name, f"expected an array of numbers, got {type(v).__name__}",
+                                 "loads float[n, 5] [N, N·m], speeds float[n] [rad/s]")
+    try:
+        loads = np.ascontiguousarray(loads, dtype=float)
+        speeds = np.ascontiguousarray(speeds, dtype=float)
+    except (TypeError, ValueError):
+        raise InputTypeError("loads", "loads and speeds must be arrays of numbers",
+                             "loads float[n, 5] [N, N·m], speeds float[n] [rad/s]") from None
     if loads.ndim != 2 or loads.shape[1] != 5 or speeds.shape != (loads.shape[0],):
         raise InputError("loads", f"expected loads (n, 5) and speeds (n,), got {loads.shape} and {speeds.shape}",
                          "give one (Fa, Fr_y, Fr_z, M_y, M_z) row and one speed per point")
     if not (np.isfinite(loads).all() and np.isfinite(speeds).all()):
         raise InputError("loads", "non-finite load or speed", "give finite values")
-    if control not in CONTROLS:
-        raise InputError("control", f"unknown raceway control {control!r}", "use outer, inner or auto")
+    if speeds.size:
+        check_speed(float(np.max(np.abs(speeds))), float(rows_of(bearing)[0, kn.P_DM]), "speeds")
     out = run_batch(bearing, loads, speeds, control)
-    return BatchResult(out["q"], out["k"], out["converged"], out["iterations"], out["residual"])
+    return BatchResult(out["q"], out["k"], out["converged"], out["iterations"], out["residual"], out["status"],
+                       out["warning_flags"])
