@@ -36,16 +36,19 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         """Run a dynamic simulation of rings, balls and cage in time (issue 5)."""
         import dataclasses
 
-        from .clitools import make_console
+        from .clitools import announce_compilation, make_console, output_file, writing
         from .dynamics.case import load_case
         from .dynamics.run import simulate as run_sim
         from .units import parse_quantity
 
         c = load_case(case)
+        out = output_file(out, "--out")
         if duration is not None:
             c = dataclasses.replace(c, duration=parse_quantity(duration, "time", "--duration"))
         con = make_console(stderr=True)
-        res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con)
+        announce_compilation()
+        with writing("--out", out):  # a full disk while streaming: one line; the checkpoint (if any) allows --resume
+            res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con)
         summary = dict(res.summary)
         summary["output"] = str(out)
         try:
@@ -81,12 +84,19 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         out: Path = typer.Option(Path("out"), "--out", help="folder for the runs, CSV and loop plot"),
     ):
         """Seed 001 Figs. 7–9: tilt–moment hysteresis W_H at 0.3 kN·m per speed and load frequency (long runs)."""
-        from .clitools import make_console
+        from .clitools import announce_compilation, atomic_output, make_console, output_folder, writing
         from .studies.hub_dynamic import run_study
 
         con = make_console()
-        out.mkdir(parents=True, exist_ok=True)
-        study = run_study(case, _numbers(speeds, "--speeds"), _numbers(frequencies, "--frequencies"), cycles,
-                          out_dir=out, progress=True, console=make_console(stderr=True))
+        out = output_folder(out, "--out")
+        announce_compilation()
+        with writing("--out", out):
+            study = run_study(case, _numbers(speeds, "--speeds"), _numbers(frequencies, "--frequencies"), cycles,
+                              out_dir=out, progress=True, console=make_console(stderr=True))
         study.print_table(con)
-        con.print(f"wrote {study.to_csv(out / 'hub_hysteresis.csv')} and {study.plot(out / 'hub_hysteresis_loops.png')}")
+        csv, png = out / "hub_hysteresis.csv", out / "hub_hysteresis_loops.png"
+        with atomic_output(csv, "--out") as tmp:
+            study.to_csv(tmp)
+        with atomic_output(png, "--out") as tmp:
+            study.plot(tmp)
+        con.print(f"wrote {csv} and {png}")

@@ -6,6 +6,7 @@ grids are ``START:STOP:COUNT`` (inclusive); bare numbers are in N, N·m and rpm.
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import time
@@ -43,19 +44,34 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary in SI"),
     ):
         """Quasi-static map over a grid of loads, speeds and preloads (xarray / netCDF)."""
+        from .clitools import announce_compilation, apply_umask, atomic_output, output_file, writing
         from .sweep import map_grid, plot_map
 
         def opt(v):
             return 0.0 if v is None else v
 
+        # both outputs checked (folders created) before the map is computed
+        if out is not None:
+            out = output_file(out, "--out")
+        if plot is not None:
+            plot = output_file(plot, "--plot")
+        announce_compilation()
         t0 = time.perf_counter()
-        ds = map_grid(bearing, fa=opt(fa), fr=opt(fr), fr_z=opt(fz), m_y=opt(my), moment=opt(moment),
-                      speed=opt(speed), preload=preload, control=control, out=out, workers=workers,
-                      scheduler=scheduler, chunk_points=chunk, progress=not as_json)
+        # a full disk while streaming: map_grid removes its temporary file; one line here
+        with writing("--out", out) if out is not None else contextlib.nullcontext():
+            ds = map_grid(bearing, fa=opt(fa), fr=opt(fr), fr_z=opt(fz), m_y=opt(my), moment=opt(moment),
+                          speed=opt(speed), preload=preload, control=control, out=out, workers=workers,
+                          scheduler=scheduler, chunk_points=chunk, progress=not as_json)
+        if out is not None:
+            apply_umask(out)
         dt = time.perf_counter() - t0
         npts = int(ds["converged"].size)
         nconv = int(ds["converged"].sum())
-        png = plot_map(ds, plot) if plot is not None else None
+        png = None
+        if plot is not None:
+            with atomic_output(plot, "--plot", default_suffix=".png") as tmp:
+                plot_map(ds, tmp)
+            png = plot
         summary = {"bearing": ds.attrs.get("bearing", bearing), "points": npts, "converged": nconv,
                    "seconds": dt, "points_per_second": npts / dt if dt > 0 else None,
                    "dims": {d: int(n) for d, n in ds.sizes.items() if d not in ("dof", "dof2")},
@@ -92,20 +108,27 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         node: int = typer.Option(0, "--node", help="Shaft node for the ROSS element (.toml output)"),
     ):
         """Speed-dependent stiffness for ross.BearingElement (kxx, kyy, kxy, kyx, kzz)."""
-        from .cli import parse_loads
+        from .clitools import announce_compilation, atomic_output, output_file, parse_loads
         from .export import export_json, to_ross_bearing
+        from .io import load_bearing
         from .sweep import parse_grid
 
         loads = parse_loads(fa, fr, fz, moment, my)
         speeds = parse_grid(speed, "speed", "--speed")
-        from .io import load_bearing
-
+        out = output_file(out, "--out")
+        announce_compilation()
         b = load_bearing(bearing)
         if out.suffix.lower() == ".toml":
             el = to_ross_bearing(b, node, speeds, loads, control)
-            el.save(out)
+            with atomic_output(out, "--out") as tmp:
+                if out.is_file() and tmp != out:  # ROSS adds the element to an existing file's elements
+                    import shutil
+
+                    shutil.copyfile(out, tmp)
+                el.save(tmp)
         else:
-            export_json(b, speeds, out, loads, control)
+            with atomic_output(out, "--out") as tmp:
+                export_json(b, speeds, tmp, loads, control)
         _console().print(f"wrote {out} ({speeds.size} speeds, {speeds[0] * 30 / math.pi:.0f}–"
                          f"{speeds[-1] * 30 / math.pi:.0f} rpm); ROSS takes kxx, kyy, kxy, kyx, kzz — tilt and "
                          "translation–tilt terms are dropped (listed in the JSON)")
@@ -124,6 +147,7 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         """Seed 001: tilt of the hub unit's inner ring vs moment (quasi-static reference)."""
         import numpy as np
 
+        from .clitools import announce_compilation, atomic_output, output_folder
         from .errors import InputError
         from .io import load_bearing
         from .studies import hub_static as hs
@@ -137,11 +161,15 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
             except ValueError:
                 raise InputError("--vehicle-speed", f"not a number of km/h: {vehicle_speed!r}", "e.g. 50") from None
             w = hs.vehicle_speed_to_shaft(v)
+        out = output_folder(out, "--out")
+        announce_compilation()
         res = hs.run_study(load_bearing(bearing), np.linspace(-hs.M_MAX, hs.M_MAX, points), speed=w)
         typer.echo(res.table())
-        out.mkdir(parents=True, exist_ok=True)
-        csv = res.to_csv(out / "hub_static.csv")
-        png = res.plot(out / "hub_static.png")
+        csv, png = out / "hub_static.csv", out / "hub_static.png"
+        with atomic_output(csv, "--out") as tmp:
+            res.to_csv(tmp)
+        with atomic_output(png, "--out") as tmp:
+            res.plot(tmp)
         _console().print(f"wrote {csv} and {png}")
         if not res.converged.all():
             raise typer.Exit(1)

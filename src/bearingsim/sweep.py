@@ -171,7 +171,7 @@ def solve_block(bearing, axes: dict, block: tuple, control: str = "outer") -> di
     ``block`` holds one slice per grid dimension (the axes with more than one value, in AXES order).
     Points are visited in serpentine order so that each starts next to the previous one.
     """
-    from .statics._batch import run_batch
+    from .statics._batch import NSUMMARY, run_batch
 
     dims = [name for name, _, _ in AXES if len(axes[name]) > 1]
     vals = {name: np.asarray(axes[name], dtype=float) for name, _, _ in AXES}
@@ -189,7 +189,8 @@ def solve_block(bearing, axes: dict, block: tuple, control: str = "outer") -> di
             pick[name] = np.full(npts, sub[name][0])
     pre = pick["preload"]
     res = {"q": np.zeros((npts, 5)), "k": np.zeros((npts, 5, 5)), "status": np.zeros(npts, dtype=np.int64),
-           "iterations": np.zeros(npts, dtype=np.int64), "residual": np.zeros(npts), "summary": np.zeros((npts, 6))}
+           "iterations": np.zeros(npts, dtype=np.int64), "residual": np.zeros(npts),
+           "summary": np.zeros((npts, NSUMMARY)), "warning_flags": np.zeros(npts, dtype=np.int32)}
     # one batch per preload value (the preload changes the bearing)
     for pv in np.unique(pre) if "preload" in dims or axes.get("_preload_given") else [None]:
         sel = np.ones(npts, dtype=bool) if pv is None else (pre == pv)
@@ -215,7 +216,10 @@ _VARS = {
     # name: (source key, extra dims, dtype, units, long name)
     "displacement": ("q", ("dof",), "f8", "m | rad", "inner-ring displacement (x, y, z, gamma_y, gamma_z)"),
     "stiffness": ("k", ("dof", "dof2"), "f8", "N/m | N/rad | N m/m | N m/rad", "5x5 stiffness matrix"),
-    "status": ("status", (), "i4", "1", "0 converged, 1 iteration limit, 2 singular, 3 contact past groove bottom, 4 a ball not converged"),
+    "status": ("status", (), "i4", "1", "0 converged, 1 iteration limit, 2 singular, 3 contact past groove bottom, "
+               "4 a ball not converged, 5 not confirmed by the independent recomputation, 6 contact angle of 90 deg "
+               "or more, 7 internal error at this point, 8 free inner ring (no ball loaded)"),
+    "warning_flags": ("warning_flags", (), "i4", "1", "plausibility warnings (bitmask, bearingsim.limits)"),
     "converged": ("converged", (), "i1", "1", "1 when the point converged"),
     "iterations": ("iterations", (), "i4", "1", "ring Newton iterations (warm + cold start)"),
     "residual": ("residual", (), "f8", "N", "max |ring residual|, moments divided by the pitch radius"),
@@ -228,6 +232,16 @@ _VARS = {
 }
 _SUMMARY_INDEX = {"p_inner": 0, "p_outer": 1, "alpha_inner_min": 2, "alpha_inner_max": 3,
                   "alpha_outer_min": 4, "alpha_outer_max": 5}
+
+
+def _var_attrs(name: str) -> dict:
+    """Extra attributes of a map variable: CF flag_masks/flag_meanings of ``warning_flags`` (bits in
+    :mod:`bearingsim.limits`)."""
+    if name == "warning_flags":
+        from .limits import cf_attributes
+
+        return cf_attributes()
+    return {}
 
 
 def _block_var(block_res: dict, key: str):
@@ -282,6 +296,8 @@ class _NetCDFSink:
                                          chunksizes=(chunk + (5,) * len(extra)) if dims else None)
             var.units = u
             var.long_name = long
+            for k, v in _var_attrs(name).items():
+                setattr(var, k, v)
         for k, v in attrs.items():
             setattr(self.nc, k, v)
 
@@ -314,7 +330,7 @@ def _dataset_from_memory(sink: _MemorySink, axes: dict, attrs: dict):
     coords["dof2"] = ("dof2", list(DOF))
     data = {}
     for name, (key, extra, dt, u, long) in _VARS.items():
-        data[name] = (tuple(sink.dims) + extra, sink.data[name], {"units": u, "long_name": long})
+        data[name] = (tuple(sink.dims) + extra, sink.data[name], {"units": u, "long_name": long} | _var_attrs(name))
     return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
