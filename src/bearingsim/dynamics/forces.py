@@ -45,63 +45,14 @@ from numba import njit
 from ..contact import slices as _sl
 from ..statics import _kernels as kn
 from . import layout as ly
+# the load and speed kernels (re-exported: ``forces.loads_at``, ``forces.pack_loads`` ... keep working)
+from .loads import constant_loads, load_channel, loads_at, pack_loads, speed_at  # noqa: F401
 
 # diagnostics columns (re-exported: ``forces.D_QI``, ``forces.GD_PI`` ... keep working)
 from .layout import (  # noqa: E402, F401
     D_AI, D_AO, D_BETA, D_DI, D_DO, D_PC, D_PI, D_PO, D_QC, D_QI, D_QO, D_SRI, D_SRO, D_WM, D_WR, GD_ECAGE,
     GD_EPOT, GD_FA, GD_FRY, GD_FRZ, GD_MY, GD_MZ, GD_PC, GD_PI, GD_PL, GD_PO, GD_TQI, GD_TQO, GD_W, NDB, NDG,
 )
-
-
-@njit(cache=True)
-def speed_at(t, gp):
-    """Shaft speed Ω(t) [rad/s]: constant, or a linear ramp from Ω₀ to Ω₁ over t_ramp."""
-    tr = gp[ly.G_TRAMP]
-    if tr > 0.0 and t < tr:
-        return gp[ly.G_W0] + (gp[ly.G_W1] - gp[ly.G_W0]) * t / tr
-    if tr > 0.0:
-        return gp[ly.G_W1]
-    return gp[ly.G_W0]
-
-
-@njit(cache=True)
-def load_channel(t, spec, start):
-    """One load channel at time t: offset + Σ amp sin(2π f t + φ) + piecewise-linear table."""
-    i = start
-    val = spec[i]
-    ns = int(spec[i + 1])
-    i += 2
-    for _ in range(ns):
-        val += spec[i] * math.sin(2.0 * math.pi * spec[i + 1] * t + spec[i + 2])
-        i += 3
-    nt = int(spec[i])
-    i += 1
-    if nt > 0:
-        tt = spec[i:i + nt]
-        vv = spec[i + nt:i + 2 * nt]
-        if t <= tt[0]:
-            val += vv[0]
-        elif t >= tt[nt - 1]:
-            val += vv[nt - 1]
-        else:
-            lo = 0
-            hi = nt - 1
-            while hi - lo > 1:
-                mid = (lo + hi) // 2
-                if tt[mid] <= t:
-                    lo = mid
-                else:
-                    hi = mid
-            w = (t - tt[lo]) / (tt[hi] - tt[lo])
-            val += vv[lo] + w * (vv[hi] - vv[lo])
-    return val
-
-
-@njit(cache=True)
-def loads_at(t, spec, out):
-    """(Fa, Fr_y, Fr_z, M_y, M_z) at time t [N, N·m] from the packed specification."""
-    for k in range(5):
-        out[k] = load_channel(t, spec, int(spec[k]))
 
 
 @njit(cache=True)
@@ -854,40 +805,6 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         gdiag[GD_W] = omega
         gdiag[GD_EPOT] = epot
         gdiag[GD_ECAGE] = e_cage
-
-
-def pack_loads(channels) -> np.ndarray:
-    """Pack five load channels for :func:`loads_at`.
-
-    ``channels``: five dicts with keys offset [N or N·m], sines (list of (amplitude,
-    frequency [Hz], phase [rad])), table (tuple of time [s] and value arrays, or None).
-    """
-    blocks = []
-    for ch in channels:
-        blk = [float(ch.get("offset", 0.0)), float(len(ch.get("sines", ())))]
-        for a, f, ph in ch.get("sines", ()):
-            blk += [float(a), float(f), float(ph)]
-        tab = ch.get("table")
-        if tab is None:
-            blk.append(0.0)
-        else:
-            tt, vv = (np.asarray(tab[0], float), np.asarray(tab[1], float))
-            blk.append(float(len(tt)))
-            blk += list(tt) + list(vv)
-        blocks.append(blk)
-    out = [0.0] * 5
-    pos = 5
-    for k, blk in enumerate(blocks):
-        out[k] = float(pos)
-        pos += len(blk)
-    for blk in blocks:
-        out += blk
-    return np.array(out, dtype=float)
-
-
-def constant_loads(fa=0.0, fr_y=0.0, fr_z=0.0, m_y=0.0, m_z=0.0) -> np.ndarray:
-    """Packed constant loads [N, N·m]."""
-    return pack_loads([{"offset": v} for v in (fa, fr_y, fr_z, m_y, m_z)])
 
 
 def evaluate(model, t, y, loadspec, want_diag=True):

@@ -5,9 +5,15 @@ A load channel (Fa, Fr_y, Fr_z, M_y, M_z on the inner ring, at the load point) i
     F(t) = offset + Σ_k A_k sin(2π f_k t + φ_k) + table(t),
 
 with table(t) the piecewise-linear interpolation of (t_i, F_i), held constant outside
-its range.  The channels are packed into one float array evaluated inside the numba
-kernels (:func:`bearingsim.dynamics.forces.loads_at`).  The shaft speed is constant or a
-linear ramp Ω₀ → Ω₁ over t_ramp.
+its range.  The channels are packed into one float array (:func:`pack_loads`) evaluated by the
+numba kernel :func:`loads_at` inside the equations of motion; the Python side (``LoadChannel(t)``,
+``LoadHistory.at``) calls the same kernel, so a history has one evaluation.  The shaft speed is
+constant or a linear ramp Ω₀ → Ω₁ over t_ramp (:func:`speed_ramp`, also behind ``SpeedHistory.at``).
+
+Packed layout (float64)::
+
+    spec[0:5]                  start index of each channel's block
+    block: offset, n_s, (A, f [Hz], φ [rad]) × n_s, n_t, t_1 … t_nt [s], F_1 … F_nt
 
 TOML forms (units at the edge, :mod:`bearingsim.units`)::
 
@@ -21,15 +27,111 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
+from numba import njit
 
 from ..errors import InputError
-from ..units import parse_quantity
-from .forces import pack_loads
+from . import layout as ly
 
 CHANNELS = ("fa", "fr", "fz", "my", "mz")  #: TOML keys, in the order (Fa, Fr_y, Fr_z, M_y, M_z)
 DIMS = ("force", "force", "force", "moment", "moment")
+
+
+# ---- numba kernels -----------------------------------------------------------------------
+@njit(cache=True)
+def speed_ramp(t, w0, w1, tr):
+    """Shaft speed Ω(t) [rad/s]: constant w0 (tr = 0), or a linear ramp from w0 to w1 over tr [s]."""
+    if tr > 0.0 and t < tr:
+        return w0 + (w1 - w0) * t / tr
+    if tr > 0.0:
+        return w1
+    return w0
+
+
+@njit(cache=True)
+def speed_at(t, gp):
+    """Shaft speed Ω(t) [rad/s] of the model's global parameters gp (G_W0, G_W1, G_TRAMP)."""
+    return speed_ramp(t, gp[ly.G_W0], gp[ly.G_W1], gp[ly.G_TRAMP])
+
+
+@njit(cache=True)
+def load_channel(t, spec, start):
+    """One load channel at time t: offset + Σ amp sin(2π f t + φ) + piecewise-linear table (held
+    constant outside its range; bisection for the interval)."""
+    i = start
+    val = spec[i]
+    ns = int(spec[i + 1])
+    i += 2
+    for _ in range(ns):
+        val += spec[i] * math.sin(2.0 * math.pi * spec[i + 1] * t + spec[i + 2])
+        i += 3
+    nt = int(spec[i])
+    i += 1
+    if nt > 0:
+        tt = spec[i:i + nt]
+        vv = spec[i + nt:i + 2 * nt]
+        if t <= tt[0]:
+            val += vv[0]
+        elif t >= tt[nt - 1]:
+            val += vv[nt - 1]
+        else:
+            lo = 0
+            hi = nt - 1
+            while hi - lo > 1:
+                mid = (lo + hi) // 2
+                if tt[mid] <= t:
+                    lo = mid
+                else:
+                    hi = mid
+            w = (t - tt[lo]) / (tt[hi] - tt[lo])
+            val += vv[lo] + w * (vv[hi] - vv[lo])
+    return val
+
+
+@njit(cache=True)
+def loads_at(t, spec, out):
+    """(Fa, Fr_y, Fr_z, M_y, M_z) at time t [N, N·m] from the packed specification."""
+    for k in range(5):
+        out[k] = load_channel(t, spec, int(spec[k]))
+
+
+def _channel_block(ch: dict) -> list:
+    """The packed block of one channel (module docstring)."""
+    blk = [float(ch.get("offset", 0.0)), float(len(ch.get("sines", ())))]
+    for a, f, ph in ch.get("sines", ()):
+        blk += [float(a), float(f), float(ph)]
+    tab = ch.get("table")
+    if tab is None:
+        blk.append(0.0)
+    else:
+        tt, vv = (np.asarray(tab[0], float), np.asarray(tab[1], float))
+        blk.append(float(len(tt)))
+        blk += list(tt) + list(vv)
+    return blk
+
+
+def pack_loads(channels) -> np.ndarray:
+    """Pack five load channels for :func:`loads_at`.
+
+    ``channels``: five dicts with keys offset [N or N·m], sines (list of (amplitude,
+    frequency [Hz], phase [rad])), table (tuple of time [s] and value arrays, or None).
+    """
+    blocks = [_channel_block(ch) for ch in channels]
+    out = [0.0] * 5
+    pos = 5
+    for k, blk in enumerate(blocks):
+        out[k] = float(pos)
+        pos += len(blk)
+    for blk in blocks:
+        out += blk
+    return np.array(out, dtype=float)
+
+
+def constant_loads(fa=0.0, fr_y=0.0, fr_z=0.0, m_y=0.0, m_z=0.0) -> np.ndarray:
+    """Packed constant loads [N, N·m]."""
+    return pack_loads([{"offset": v} for v in (fa, fr_y, fr_z, m_y, m_z)])
 
 
 @dataclass(frozen=True)
@@ -52,10 +154,12 @@ class LoadChannel:
                                  'e.g. table = [["0 ms", "0 N"], ["5 ms", "2000 N"]]')
 
     def __call__(self, t: float) -> float:
-        v = self.offset + sum(a * math.sin(2 * math.pi * f * t + ph) for a, f, ph in self.sines)
-        if self.table is not None:
-            v += float(np.interp(t, self.table[0], self.table[1]))
-        return v
+        """Value at time t [s] (the numba kernel :func:`load_channel`)."""
+        return float(load_channel(float(t), self._packed, 0))
+
+    @cached_property
+    def _packed(self) -> np.ndarray:
+        return np.array(_channel_block(self.as_dict()), dtype=float)
 
     def as_dict(self) -> dict:
         return {"offset": self.offset, "sines": list(self.sines), "table": self.table}
@@ -93,11 +197,18 @@ class LoadHistory:
             raise InputError("loads", "needs five channels (fa, fr, fz, my, mz)", "")
 
     def at(self, t: float) -> np.ndarray:
-        """(Fa, Fr_y, Fr_z, M_y, M_z) at time t [N, N·m]."""
-        return np.array([c(t) for c in self.channels])
+        """(Fa, Fr_y, Fr_z, M_y, M_z) at time t [N, N·m] (the numba kernel :func:`loads_at`)."""
+        out = np.empty(5)
+        loads_at(float(t), self._packed, out)
+        return out
 
     def packed(self) -> np.ndarray:
+        """The packed specification of the five channels (:func:`pack_loads`)."""
         return pack_loads([c.as_dict() for c in self.channels])
+
+    @cached_property
+    def _packed(self) -> np.ndarray:
+        return self.packed()
 
 
 @dataclass(frozen=True)
@@ -119,14 +230,14 @@ class SpeedHistory:
         return (self.start, stop, self.ramp if stop != self.start else 0.0)
 
     def at(self, t: float) -> float:
+        """Ω(t) [rad/s] (the numba kernel :func:`speed_ramp`)."""
         w0, w1, tr = self.as_tuple()
-        if tr > 0 and t < tr:
-            return w0 + (w1 - w0) * t / tr
-        return w1 if tr > 0 else w0
+        return float(speed_ramp(float(t), float(w0), float(w1), float(tr)))
 
 
 def parse_channel(value, dim: str, field: str) -> LoadChannel:
     """A load channel from its TOML form (see the module docstring)."""
+    from ..units import parse_quantity
     if isinstance(value, list):
         out = LoadChannel()
         for i, v in enumerate(value):
@@ -172,6 +283,8 @@ def parse_loads(data: dict | None) -> LoadHistory:
 
 def parse_speed(value) -> SpeedHistory:
     """``speed = "10000 rpm"`` or ``{ start = "0 rpm", stop = "10000 rpm", ramp = "5 ms" }``."""
+    from ..units import parse_quantity
+
     if isinstance(value, dict):
         unknown = set(value) - {"start", "stop", "ramp"}
         if unknown:
