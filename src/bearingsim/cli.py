@@ -1,7 +1,9 @@
 """Command-line interface (typer + rich).  Thin: parse, call the API, print.
 
-Bad input raises :class:`~bearingsim.errors.InputError`; :func:`main` prints it on one
-line and exits with status 2 (never a traceback).
+Bad input raises :class:`~bearingsim.errors.InputError`; :func:`main` turns every exception that ends a command
+into one line on stderr and an exit status of :class:`~bearingsim.errors.ExitCode` (usage errors and bad input 2,
+failures 1; the table is :func:`bearingsim.clitools.error_message`) — never a traceback, unless
+``BEARINGSIM_DEBUG=1``.
 """
 
 from __future__ import annotations
@@ -10,18 +12,42 @@ import json
 import math
 import sys
 from pathlib import Path
-from typing import Optional
 
 import typer
 
-from .clitools import (BearingArg, ControlOpt, FaOpt, FrOpt, FzOpt, MomentOpt, MyOpt, SpeedOpt,  # noqa: F401
-                       parse_loads)
-from .errors import BearingSimError, InputError
+from .clitools import (  # noqa: F401
+    BearingArg,
+    ControlOpt,
+    FaOpt,
+    FrOpt,
+    FzOpt,
+    MomentOpt,
+    MyOpt,
+    SpeedOpt,
+    announce_compilation,
+    parse_loads,
+)
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="bearingsim: ball bearing statics, stiffness, lubrication and dynamics.")
 reproduce_app = typer.Typer(no_args_is_help=True, help="Reproduce the published studies (seed papers).")
 app.add_typer(reproduce_app, name="reproduce")
+
+
+def _print_version(value: bool) -> None:
+    if value:
+        from . import __version__
+
+        typer.echo(f"bearingsim {__version__}")
+        raise typer.Exit(0)
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(False, "--version", callback=_print_version, is_eager=True,
+                                 help="Print the version and exit"),
+):
+    """bearingsim: ball bearing statics, stiffness, lubrication and dynamics."""
 
 
 def _console():
@@ -63,6 +89,7 @@ def static(
     from .statics.jones_harris import solve
     from .units import parse_quantity
 
+    announce_compilation()
     b = load_bearing(bearing)
     loads = parse_loads(fa, fr, fz, moment, my)
     omega = parse_quantity(speed, "speed", "--speed") if speed is not None else 0.0
@@ -123,14 +150,19 @@ def reproduce_spindle(
     bearing: str = typer.Option("skf-7011-cdga-hc", "--bearing", help="Bearing to use (catalogue or TOML)"),
 ):
     """Seed 000: tables T1–T3 side by side with the paper, Fig. 5 plot and CSV."""
+    from .clitools import atomic_output, output_folder
     from .io import load_bearing
     from .studies.spindle import run_study
 
+    announce_compilation()
+    out = output_folder(out, "--out")
     study = run_study(load_bearing(bearing))
     study.print_tables(_console())
-    out.mkdir(parents=True, exist_ok=True)
-    csv = study.to_csv(out / "spindle_axial_stiffness.csv")
-    png = study.plot(out / "spindle_axial_stiffness_fig5.png")
+    csv, png = out / "spindle_axial_stiffness.csv", out / "spindle_axial_stiffness_fig5.png"
+    with atomic_output(csv, "--out") as tmp:
+        study.to_csv(tmp)
+    with atomic_output(png, "--out") as tmp:
+        study.plot(tmp)
     _console().print(f"wrote {csv} and {png}")
 
 
@@ -142,30 +174,22 @@ cli_sweep.register(app, reproduce_app)
 cli_dynamics.register(app, reproduce_app)
 
 
-def main() -> None:
-    """Entry point of the ``bearingsim`` script: one clear line and exit 2 on bad input."""
-    try:
-        rc = app(standalone_mode=False)
-        if isinstance(rc, int) and rc != 0:  # typer.Exit(code) comes back as a return value
-            sys.exit(rc)
-    except InputError as exc:
-        typer.echo(f"error: {exc}", err=True)
-        sys.exit(2)
-    except BearingSimError as exc:
-        typer.echo(f"error: {exc}", err=True)
-        sys.exit(1)
-    except typer.Exit as exc:
-        sys.exit(exc.exit_code)
-    except (typer.Abort, KeyboardInterrupt):
-        typer.echo("aborted", err=True)
-        sys.exit(130)
-    except Exception as exc:  # click usage errors
-        import click
+def main(argv: list[str] | None = None) -> None:
+    """Entry point of the ``bearingsim`` script: every error ends in one line on stderr and the exit status of
+    :class:`~bearingsim.errors.ExitCode` (:func:`bearingsim.clitools.report_error`)."""
+    from .clitools import finish_compilation_note, report_error
 
-        if isinstance(exc, click.exceptions.ClickException):
-            exc.show()
-            sys.exit(2)
+    try:
+        rc = app(args=argv, prog_name="bearingsim", standalone_mode=False)
+    except SystemExit:
+        finish_compilation_note()
         raise
+    except BaseException as exc:  # noqa: BLE001 - the one place where an error becomes a line and a status
+        finish_compilation_note()
+        sys.exit(report_error(exc))
+    finish_compilation_note()
+    if isinstance(rc, int) and rc != 0:  # typer.Exit(code) comes back as a return value
+        sys.exit(rc)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -10,12 +10,23 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
-from typing import Optional
 
 import typer
 
-from .clitools import (BearingArg, ControlOpt, FaOpt, FrOpt, FzOpt, MomentOpt, MyOpt, SpeedOpt,  # noqa: F401
-                       parse_loads)
+from .clitools import (  # noqa: F401
+    BearingArg,
+    ControlOpt,
+    FaOpt,
+    FrOpt,
+    FzOpt,
+    MomentOpt,
+    MyOpt,
+    SpeedOpt,
+    announce_compilation,
+    atomic_output,
+    output_file,
+    parse_loads,
+)
 
 
 def lubrication(
@@ -41,6 +52,7 @@ def lubrication(
     from .statics.jones_harris import solve
     from .units import parse_quantity
 
+    announce_compilation()
     b = load_bearing(bearing)
     loads = parse_loads(fa, fr, fz, moment, my)
     omega = parse_quantity(speed, "speed", "--speed") if speed is not None else 0.0
@@ -63,12 +75,14 @@ def lubrication(
 
 
 def _print_report(rep: dict, name: str) -> None:
-    from .clitools import make_console
     from rich.table import Table
+
+    from .clitools import make_console
 
     con = make_console()
     con.print(f"[bold]{name}[/]  {rep['lubricant']} at {rep['temperature_K'] - 273.15:.1f} °C "
-              f"(η₀ = {rep['dynamic_viscosity_Pa_s'] * 1e3:.2f} mPa·s), speed {rep['speed_rad_s'] * 30 / math.pi:.0f} rpm, "
+              f"(η₀ = {rep['dynamic_viscosity_Pa_s'] * 1e3:.2f} mPa·s), "
+              f"speed {rep['speed_rad_s'] * 30 / math.pi:.0f} rpm, "
               f"σ = {rep['roughness_m'] * 1e6:.3f} µm, model {rep['model']}"
               + ("" if rep["converged"] else "  [red]static solution NOT CONVERGED[/]"))
     t = Table(title="loaded contacts (traction and power at Jones' kinematics)")
@@ -99,8 +113,9 @@ def lubricants(as_json: bool = typer.Option(False, "--json", help="Print one JSO
     if as_json:
         typer.echo(json.dumps({n: lub.summary(333.15) for n, lub in lib.items()}))
         return
-    from .clitools import make_console
     from rich.table import Table
+
+    from .clitools import make_console
 
     t = Table(title="bearingsim lubricants (η at 60 °C)")
     t.add_column("name", no_wrap=True)
@@ -138,8 +153,11 @@ def traction_curve(
         raise InputError("--loads/--speeds", "give positive loads and speeds", 'e.g. --loads "500 N,2000 N"')
     if not (0 < s_max <= 1):
         raise InputError("--s-max", f"must lie in (0, 1], got {s_max}", "e.g. 0.05")
+    out = output_file(out, "--out")
+    announce_compilation()
     fig = plot_traction_curves(lubricant, t, qs, us, s_max=s_max)
-    fig.savefig(out, dpi=120)
+    with atomic_output(out, "--out", default_suffix=".png") as tmp:
+        fig.savefig(tmp, dpi=120)
     typer.echo(str(out))
 
 

@@ -8,6 +8,23 @@ answer and none could be had.
 
 from __future__ import annotations
 
+import enum
+
+
+class ExitCode(enum.IntEnum):
+    """Exit status of the ``bearingsim`` command (the one table; :func:`bearingsim.clitools.report_error`
+    maps every exception to one of them and one line on stderr)."""
+
+    OK = 0
+    #: the command ran but its answer is not the asked one (a solver did not converge; a map with
+    #: unconverged points), or an internal error (a bug: one line naming it, BEARINGSIM_DEBUG=1 shows it)
+    FAILED = 1
+    #: the command could not start: bad command line (unknown option or command, missing argument, bad
+    #: option value), bad input (:class:`InputError`), an unreadable input or unwritable output file
+    USAGE = 2
+    #: interrupted by the user (Ctrl-C)
+    INTERRUPTED = 130
+
 
 class BearingSimError(Exception):
     """Base class of every error raised on purpose by bearingsim."""
