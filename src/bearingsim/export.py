@@ -20,6 +20,7 @@ under the given constant loads (:mod:`bearingsim.statics._batch`, warm-started a
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import numpy as np
@@ -32,31 +33,75 @@ DROPPED = ("K[x,y]", "K[x,z]", "K[x,gamma_y]", "K[x,gamma_z]", "K[y,gamma_y]", "
            "K[z,gamma_z]", "K[gamma_y,gamma_y]", "K[gamma_y,gamma_z]", "K[gamma_z,gamma_y]", "K[gamma_z,gamma_z]")
 
 
+def _preloaded(bearing) -> bool:
+    """True when the bearing carries load without external load: a radial interference
+    (diametral_clearance < 0) of a row, or a set's preload (positive axial offsets)."""
+    rows = getattr(bearing, "rows", None)
+    if rows is None:
+        return getattr(bearing, "diametral_clearance", 0.0) < 0.0
+    return (getattr(bearing, "preload", 0.0) > 0.0
+            or any(getattr(r, "axial_offset", 0.0) > 0.0 or getattr(r.bearing, "diametral_clearance", 0.0) < 0.0
+                   for r in rows))
+
+
+def _check_arguments(bearing, speeds, loads, control):
+    """The API boundary of the export functions: wrong types and an unloaded bearing raise InputError."""
+    from .io import load_bearing
+    from .statics.jones_harris import Loads
+
+    if isinstance(bearing, str | Path):
+        bearing = load_bearing(bearing)
+    if not (hasattr(bearing, "row_parameters") or hasattr(bearing, "rows_parameters")):
+        raise InputError("bearing", f"expected a BallBearing, a BearingSystem, a catalogue name or a TOML path, "
+                         f"got {type(bearing).__name__}", "e.g. bearingsim.io.load_bearing('skf-7011-cdga-hc')")
+    if isinstance(speeds, str | bytes) or speeds is None:
+        raise InputError("speeds", f"expected inner-ring speeds in rad/s (numbers), got {speeds!r}"[:160],
+                         'give numbers in rad/s, or parse text with bearingsim.sweep.parse_grid("0:10000:11", '
+                         '"speed", "speed")')
+    try:
+        speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
+    except (TypeError, ValueError):
+        raise InputError("speeds", f"expected numbers in rad/s, got {speeds!r}"[:160], "give a list of floats") \
+            from None
+    if speeds.ndim != 1 or speeds.size == 0 or not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
+        raise InputError("speed", "give one or more finite speeds ≥ 0", 'e.g. --speed "0:12000:13"')
+    if loads is None:
+        loads = Loads()
+    if not isinstance(loads, Loads):
+        raise InputError("loads", f"expected a Loads object, got {type(loads).__name__}",
+                         "e.g. Loads(fa=1000.0, fr_y=500.0) [N, N·m]")
+    if not isinstance(control, str) or control not in ("outer", "inner", "auto"):
+        raise InputError("control", f"unknown raceway control {control!r}", "use outer, inner or auto")
+    if not np.any(np.asarray(loads.as_array(), dtype=float) != 0.0) and not _preloaded(bearing):
+        raise InputError("loads (--fa/--fr)", "an unloaded bearing has no stiffness to export (its balls carry "
+                         "no load, so every coefficient is zero up to round-off)",
+                         "give a load (--fa, --fr) or a preloaded bearing (a set with preload)")
+    return bearing, speeds, loads
+
+
 def ross_coefficients(bearing, speeds, loads=None, control: str = "outer") -> dict:
     """Stiffness coefficients over ``speeds`` [rad/s] in ROSS's names [N/m], plus the full 5×5 matrices.
 
     Parameters
     ----------
-    bearing : BallBearing or BearingSystem
+    bearing : BallBearing or BearingSystem (or a catalogue name / TOML path)
     speeds : array of inner-ring speeds [rad/s] (ROSS ``frequency``)
     loads : :class:`~bearingsim.statics.jones_harris.Loads` (constant over the speeds)
     control : raceway control
 
-    Raises :class:`ConvergenceError` if any speed did not converge.
+    Raises :class:`InputError` for arguments of the wrong type and for a bearing with neither
+    load nor preload (its stiffness is zero: nothing to export), :class:`ConvergenceError` if any
+    speed did not converge.
     """
     from .statics._batch import run_batch
-    from .statics.jones_harris import Loads
 
-    speeds = np.atleast_1d(np.asarray(speeds, dtype=float))
-    if speeds.size == 0 or not np.all(np.isfinite(speeds)) or np.any(speeds < 0):
-        raise InputError("speed", "give one or more finite speeds ≥ 0", 'e.g. --speed "0:12000:13"')
-    loads = loads or Loads()
+    bearing, speeds, loads = _check_arguments(bearing, speeds, loads, control)
     arr = np.tile(loads.as_array(), (speeds.size, 1))
     out = run_batch(bearing, arr, speeds, control)
     if not out["converged"].all():
         bad = speeds[~out["converged"]]
-        raise ConvergenceError(f"no equilibrium at speeds {bad.tolist()} rad/s", iterations=int(out["iterations"].max()),
-                               residual=float(out["residual"].max()))
+        raise ConvergenceError(f"no equilibrium at speeds {bad.tolist()} rad/s",
+                               iterations=int(out["iterations"].max()), residual=float(out["residual"].max()))
     k = out["k"]
     res = {"frequency": speeds, "stiffness_5x5": k}
     for name, i, j in ROSS_MAP:
@@ -71,6 +116,11 @@ def to_ross_bearing(bearing, n: int, speeds, loads=None, control: str = "outer",
     damping [N·s/m] is applied as cxx = cyy (the quasi-static model gives none).  Requires the optional
     extra ``bearingsim[ross]``.
     """
+    if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 0:
+        raise InputError("n", f"expected a shaft node number ≥ 0, got {n!r}", "e.g. 0")
+    if isinstance(damping, bool) or not isinstance(damping, int | float) or not (math.isfinite(damping)
+                                                                                 and damping >= 0):
+        raise InputError("damping", f"expected a damping ≥ 0 in N·s/m, got {damping!r}", "e.g. 0.0")
     try:
         import ross as rs
     except ImportError:
@@ -86,6 +136,8 @@ def to_ross_bearing(bearing, n: int, speeds, loads=None, control: str = "outer",
 
 def export_json(bearing, speeds, path, loads=None, control: str = "outer") -> Path:
     """Write the ROSS coefficients (and the dropped 5×5 terms) to a JSON file in SI."""
+    if not isinstance(path, str | Path) or not str(path).strip():
+        raise InputError("path", f"expected an output file path, got {path!r}"[:160], 'e.g. "bearing_ross.json"')
     c = ross_coefficients(bearing, speeds, loads, control)
     k = c["stiffness_5x5"]
     doc = {

@@ -11,6 +11,40 @@ unloaded position with the balls just touching both raceways, minus any extra
 diametral clearance P_d.  A deep-groove bearing has its groove centres in one plane;
 its free contact angle follows from the clearance, cos α₀ = 1 − P_d / (2A)
 (Harris & Kotzalas 2007 vol. 1 eq. 2.10).
+
+Plausibility bounds (issue 11 item 5): values outside them are refused with
+:class:`~bearingsim.errors.InputError` when a bearing is built (from a file or in code).  They are
+wide engineering bounds, meant to catch unit slips (a bare ``72.5`` read as metres, ``E = 1 Pa``)
+and impossible geometry, not to judge a design.  :data:`LIMITS` holds the numbers.
+
+========================  ==============================  ==================================================
+field                     accepted                        why
+========================  ==============================  ==================================================
+ball_diameter D           0.5 mm – 200 mm                 miniature bearings (0.5–1 mm balls) to the largest
+                                                          balls of slewing rings
+pitch_diameter d_m        1.5 mm – 10 m, and > 1.05 D     smallest miniature bearings to large slewing
+                                                          rings; the inner raceway must exist
+ball_count Z              3 – 1000, and d_m sin(π/Z) > D  three balls centre a ring; slewing rings of some
+                                                          metres carry a few hundred balls; neighbours must
+                                                          not overlap (checked before anything is sized by Z)
+inner/outer_conformity f  0.5 < f ≤ 1                     the groove radius exceeds the ball radius
+contact_angle α₀          0 – 89°                         angular contact (up to thrust-like angles)
+diametral_clearance P_d   ≥ −5 % A and α_f ≤ 80°          interference beyond 5 % of A is no preload; the free
+                                                          contact angle once the clearance is taken up,
+                                                          cos α_f = cos α₀ − P_d/(2A) (Harris & Kotzalas 2007
+                                                          vol. 1 eq. 2.10 for α₀ = 0), past 80° puts the
+                                                          contact on or over the groove shoulder
+bore, outside_diameter    ≥ 0 (0 = unknown); bore < d_m−D, the rings must hold the ball set
+                          OD > d_m+D
+width                     ≥ 0 (0 = unknown), ≥ D if given  the rings enclose the balls
+dynamic_load_rating C     ≥ 0 (0 = unknown), finite       a rating is a positive force
+Young's modulus E         1 GPa – 1000 GPa                polymers (~2 GPa) to tungsten carbide (~600 GPa)
+Poisson's ratio ν         0 ≤ ν < 0.5                     isotropic engineering solids
+density ρ                 500 – 25 000 kg/m³              polymers to tungsten carbide (15 600 kg/m³)
+========================  ==============================  ==================================================
+
+(E, ν, ρ are checked by :class:`~bearingsim.materials.Material`, with the bounds in
+:data:`bearingsim.materials.LIMITS`.)
 """
 
 from __future__ import annotations
@@ -25,6 +59,17 @@ from .contact import hertz
 from .errors import InputError
 from .materials import Material
 from .statics import _kernels as kn
+
+#: plausibility bounds (module docstring table), SI: [m], [-], [rad]
+LIMITS = {
+    "ball_diameter": (0.5e-3, 0.2),
+    "pitch_diameter": (1.5e-3, 10.0),
+    "ball_count": (3, 1000),
+    "max_free_contact_angle": (0.0, math.radians(80.0)),
+}
+
+_FLOAT_FIELDS = ("ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity", "contact_angle",
+                 "diametral_clearance", "bore", "outside_diameter", "width", "dynamic_load_rating")
 
 
 @dataclass(frozen=True)
@@ -65,16 +110,27 @@ class BallBearing:
     notes: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):
+        self._check_types()
         d = self.ball_diameter
         if self.kind not in ("angular_contact", "deep_groove"):
             raise InputError("type", f"unknown bearing type {self.kind!r}",
                              'use "angular_contact" or "deep_groove"')
+        zlo, zhi = LIMITS["ball_count"]
+        if not zlo <= self.ball_count <= zhi:  # first: nothing may be sized by an absurd count
+            raise InputError("ball_count", f"must be an integer in {zlo}–{zhi}, got {self.ball_count!r}",
+                             "give the number of balls of one row, e.g. 16")
         if not (math.isfinite(d) and d > 0):
             raise InputError("ball_diameter", f"must be positive, got {d!r} m", 'e.g. "11.1 mm"')
+        lo, hi = LIMITS["ball_diameter"]
+        if not lo <= d <= hi:
+            raise InputError("ball_diameter", f"{d * 1e3:.4g} mm is outside the plausible {lo * 1e3:g}–{hi * 1e3:g} mm",
+                             'check the value and its unit, e.g. "11.1 mm"')
         if not (math.isfinite(self.pitch_diameter) and self.pitch_diameter > 0):
             raise InputError("pitch_diameter", f"must be positive, got {self.pitch_diameter!r} m", 'e.g. "61 mm"')
-        if not isinstance(self.ball_count, (int, np.integer)) or self.ball_count < 3:
-            raise InputError("ball_count", f"must be an integer ≥ 3, got {self.ball_count!r}", "e.g. 16")
+        lo, hi = LIMITS["pitch_diameter"]
+        if not lo <= self.pitch_diameter <= hi:
+            raise InputError("pitch_diameter", f"{self.pitch_diameter * 1e3:.6g} mm is outside the plausible "
+                             f"{lo * 1e3:g} mm – {hi:g} m", 'check the value and its unit, e.g. "61 mm"')
         for fname in ("inner_conformity", "outer_conformity"):
             f = getattr(self, fname)
             if not (math.isfinite(f) and f > 0.5):
@@ -93,21 +149,61 @@ class BallBearing:
             raise InputError("ball_count", f"{self.ball_count} balls of {d * 1e3:.4g} mm do not fit on a "
                              f"{self.pitch_diameter * 1e3:.4g} mm pitch circle (they would overlap)",
                              f"use at most {zmax} balls")
-        if not (0.0 <= self.contact_angle < math.radians(89.0)):
+        if not (math.isfinite(self.contact_angle) and 0.0 <= self.contact_angle < math.radians(89.0)):
             raise InputError("contact_angle", f"must lie in [0, 89) deg, got {math.degrees(self.contact_angle)!r} deg",
                              'e.g. "15 deg" for a spindle bearing')
+        for fname, what in (("bore", "a bore"), ("outside_diameter", "an outside diameter"), ("width", "a width"),
+                            ("dynamic_load_rating", "a load rating")):
+            v = getattr(self, fname)
+            if not (math.isfinite(v) and v >= 0):
+                raise InputError(fname, f"must be positive (or 0 when unknown), got {v!r}",
+                                 f"give {what} > 0 with its unit, or leave it out")
         if self.bore > 0 and self.bore >= self.pitch_diameter - d:
             raise InputError("bore", "the bore is larger than the inner raceway (pitch_diameter − ball_diameter)",
                              "check bore, pitch diameter and ball diameter")
         if self.outside_diameter > 0 and self.outside_diameter <= self.pitch_diameter + d:
             raise InputError("outside_diameter", "smaller than the outer raceway (pitch_diameter + ball_diameter)",
                              "check outside diameter, pitch diameter and ball diameter")
-        if self.diametral_clearance < -0.05 * self.total_curvature_distance:
-            raise InputError("diametral_clearance", f"{self.diametral_clearance * 1e6:.4g} µm of interference "
+        if self.width > 0 and self.width < d:
+            raise InputError("width", f"{self.width * 1e3:.4g} mm is narrower than the balls ({d * 1e3:.4g} mm)",
+                             "check width and ball diameter (the rings enclose the balls)")
+        big_a = self.total_curvature_distance
+        pd = self.diametral_clearance
+        if not math.isfinite(pd):
+            raise InputError("diametral_clearance", f"must be finite, got {pd!r}", 'e.g. "20 um"')
+        if pd < -0.05 * big_a:
+            raise InputError("diametral_clearance", f"{pd * 1e6:.4g} µm of interference "
                              "is beyond any realistic preload", "use a clearance ≥ −5 % of (f_i+f_o−1)·D")
-        if self.kind == "deep_groove" and self.diametral_clearance > 1.9 * self.total_curvature_distance:
-            raise InputError("diametral_clearance", "larger than the groove geometry allows (2A)",
-                             "check the clearance and the conformities")
+        a_max = LIMITS["max_free_contact_angle"][1]
+        pd_max = max(0.0, 2.0 * big_a * (math.cos(self.contact_angle if self.kind == "angular_contact" else 0.0)
+                                         - math.cos(a_max)))
+        if pd > 0 and pd > pd_max * (1.0 + 1e-12):
+            raise InputError("diametral_clearance", f"{pd * 1e6:.4g} µm puts the free contact angle past "
+                             f"{math.degrees(a_max):.0f}° (over the groove shoulder): the groove geometry allows at "
+                             f"most {pd_max * 1e6:.4g} µm (2A(cos α₀ − cos 80°), A = (f_i+f_o−1)·D)",
+                             "check the clearance, its unit and the conformities")
+
+    def _check_types(self):
+        """API boundary: every field of the right type, else InputError naming it (issue 11 item 10)."""
+        if not isinstance(self.name, str):
+            raise InputError("name", f"expected a string, got {type(self.name).__name__}", 'e.g. name = "6205"')
+        if not isinstance(self.kind, str):
+            raise InputError("type", f"expected a string, got {type(self.kind).__name__}",
+                             'use "angular_contact" or "deep_groove"')
+        for fname in _FLOAT_FIELDS:
+            v = getattr(self, fname)
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)):
+                raise InputError(fname, f"expected a number in SI units, got {type(v).__name__} {v!r}"[:160],
+                                 "give a float (SI: m, rad, N); quantities with units are read by bearingsim.io")
+        z = self.ball_count
+        if isinstance(z, (bool, np.bool_)) or not isinstance(z, (int, np.integer)):
+            raise InputError("ball_count", f"must be an integer, got {type(z).__name__} {z!r}"[:160], "e.g. 16")
+        for fname in ("ball_material", "ring_material"):
+            if not isinstance(getattr(self, fname), Material):
+                raise InputError(fname, f"expected a Material, got {type(getattr(self, fname)).__name__}",
+                                 "use bearingsim.materials.get_material(name) or Material(...)")
+        if not isinstance(self.notes, dict):
+            raise InputError("notes", f"expected a dict, got {type(self.notes).__name__}", "e.g. notes={}")
 
     # ---- derived geometry -------------------------------------------------
     @property

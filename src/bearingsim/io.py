@@ -1,13 +1,20 @@
 """Reading bearing files (TOML with units) and the built-in catalogue.
 
-Quantities are strings with units (``"11.1 mm"``), parsed once here into SI floats.
-A bearing argument is either a catalogue name (``bearingsim catalog`` lists them) or
-a path to a TOML file.
+Quantities are strings with units (``"11.1 mm"``), parsed once here into SI floats; a bare
+number for a dimensional field is refused (:func:`bearingsim.units.file_input`).  A bearing
+argument is either a catalogue name (``bearingsim catalog`` lists them) or a path to a TOML file.
+
+Every input file of bearingsim (bearing, arrangement, lubricant, case) is read by
+:func:`read_toml` (text by :func:`read_text`): a missing file, a directory, a file larger than
+:data:`MAX_FILE_BYTES`, a binary file, UTF-16 or Latin-1 text, malformed or too deeply nested
+TOML all raise :class:`~bearingsim.errors.InputError` naming the file and the fix — never
+``UnicodeDecodeError`` or ``RecursionError``.
 """
 
 from __future__ import annotations
 
 import math
+import os
 import tomllib
 from importlib import resources
 from pathlib import Path
@@ -15,7 +22,10 @@ from pathlib import Path
 from .errors import InputError
 from .geometry import BallBearing
 from .materials import Material, get_material
-from .units import parse_quantity
+from .units import file_input, parse_quantity
+
+#: largest input file read [bytes]; bearing, lubricant and case files are a few kB
+MAX_FILE_BYTES = 4 * 2**20
 
 _BEARING_KEYS = {
     "name", "type", "ball_diameter", "ball_count", "pitch_diameter", "inner_groove_radius",
@@ -41,25 +51,91 @@ def catalog_entries() -> list[dict]:
 
 
 def _read_catalog(name: str) -> dict:
-    root = resources.files("bearingsim") / "catalog"
-    return tomllib.loads((root / f"{name}.toml").read_text(encoding="utf-8"))
+    return read_toml(resources.files("bearingsim") / "catalog" / f"{name}.toml", "bearing")
 
 
-def read_toml(path: Path, field: str = "file") -> dict:
-    """Read a TOML file; a missing or malformed file raises :class:`InputError`."""
+def check_path(path, field: str, what: str = "a TOML file"):
+    """``path`` as a :class:`~pathlib.Path` (or a package resource); anything else (None, a number,
+    a list) raises :class:`InputError` naming ``field``."""
+    if isinstance(path, (str, os.PathLike)):
+        if isinstance(path, str) and not path.strip():
+            raise InputError(field, "empty path", f"give {what}")
+        if "\0" in str(path):
+            raise InputError(field, "the path contains a NUL character", f"give {what}")
+        return Path(path)
+    if hasattr(path, "read_bytes") and hasattr(path, "is_file"):  # importlib.resources Traversable
+        return path
+    raise InputError(field, f"expected a path to {what}, got {type(path).__name__} {path!r}"[:200],
+                     f"give {what} as a string or pathlib.Path")
+
+
+def read_text(path, field: str = "file") -> str:
+    """The text of an input file, read as UTF-8 (a UTF-8 byte-order mark is allowed).
+
+    Raises :class:`InputError` (naming ``field`` and the file, with the fix) for a missing or
+    unreadable file, a directory, a file over :data:`MAX_FILE_BYTES`, a binary file and text that
+    is not UTF-8 (UTF-16, Latin-1/Windows-1252).
+    """
+    p = check_path(path, field)
+    name = str(p)
+    fix_exist = "give an existing TOML file or a catalogue name (bearingsim catalog)"
     try:
-        text = Path(path).read_text(encoding="utf-8")
+        if p.is_dir():
+            raise InputError(field, f"{name!r} is a directory, not a file", "give the path of a TOML file in it")
+        if isinstance(p, Path):
+            with p.open("rb") as fh:
+                data = fh.read(MAX_FILE_BYTES + 1)
+        else:
+            data = p.read_bytes()
+    except InputError:
+        raise
+    except FileNotFoundError:
+        raise InputError(field, f"{name!r} does not exist", fix_exist) from None
     except OSError as exc:
-        raise InputError(field, f"cannot read {str(path)!r} ({exc.strerror})",
-                         "give an existing TOML file or a catalogue name (bearingsim catalog)") from None
+        raise InputError(field, f"cannot read {name!r} ({exc.strerror or exc.__class__.__name__})",
+                         "check the path and its permissions") from None
+    except ValueError as exc:  # e.g. an embedded NUL from os.PathLike objects
+        raise InputError(field, f"cannot open {name!r} ({exc})", fix_exist) from None
+    if len(data) > MAX_FILE_BYTES:
+        raise InputError(field, f"{name!r} is larger than {MAX_FILE_BYTES // 2**20} MiB",
+                         "an input file is a few kB of TOML: check that this is the right file")
+    utf16 = data[:2] in (b"\xff\xfe", b"\xfe\xff") or (b"\x00" in data[:4] and 3 * data.count(b"\x00") > len(data))
+    if utf16:
+        raise InputError(field, f"{name!r} is UTF-16 text (TOML files are UTF-8)",
+                         "save the file as UTF-8 (e.g. Notepad: Save as, Encoding UTF-8)")
+    if b"\x00" in data:
+        raise InputError(field, f"{name!r} is a binary file, not TOML text",
+                         "give the bearing/case/lubricant TOML file")
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        line = data[:exc.start].count(b"\n") + 1
+        raise InputError(field, f"{name!r} is not UTF-8 text (byte 0x{data[exc.start]:02x} on line {line}; "
+                         "Latin-1 or Windows-1252?)", "save the file as UTF-8") from None
+
+
+def parse_toml(text: str, name: str, field: str = "file") -> dict:
+    """Parse TOML text; malformed or too deeply nested TOML raises :class:`InputError`."""
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise InputError(field, f"{path} is not valid TOML: {exc}", "fix the TOML syntax at that line") from None
+        raise InputError(field, f"{name} is not valid TOML: {exc}", "fix the TOML syntax at that line") from None
+    except RecursionError:
+        raise InputError(field, f"{name} nests arrays or tables too deeply for a TOML parser",
+                         "an input file needs only a few levels of nesting: check the file") from None
+
+
+def read_toml(path, field: str = "file") -> dict:
+    """Read a TOML input file (every input file goes through here, see :func:`read_text`)."""
+    return parse_toml(read_text(path, field), str(path), field)
 
 
 def resolve_bearing_data(spec: str | Path) -> dict:
     """The raw TOML table of a bearing given by catalogue name or path."""
+    if not isinstance(spec, (str, os.PathLike)):
+        raise InputError("bearing", f"expected a catalogue name or a path to a TOML file, got "
+                         f"{type(spec).__name__} {spec!r}"[:200], f"use one of {', '.join(catalog_names())} "
+                         "or a path to a .toml file")
     spec_s = str(spec)
     if spec_s in catalog_names():
         return _read_catalog(spec_s)
@@ -76,6 +152,8 @@ def load_bearing(spec: str | Path):
     Returns a :class:`~bearingsim.geometry.BallBearing` (or, for arrangement files, the
     object built by :mod:`bearingsim.statics.arrangements` when available).
     """
+    if isinstance(spec, BallBearing) or hasattr(spec, "rows_parameters"):
+        return spec  # already a bearing (or bearing system)
     data = resolve_bearing_data(spec)
     return bearing_from_dict(data)
 
@@ -126,7 +204,21 @@ def _conformity(data: dict, side: str, ball_diameter: float) -> float:
 
 
 def bearing_from_dict(data: dict) -> BallBearing:
-    """Build a :class:`BallBearing` from a parsed TOML table (units parsed here)."""
+    """Build a :class:`BallBearing` from a parsed TOML table (units parsed here).
+
+    Every dimensional field needs its unit (``ball_diameter = "11.1 mm"``; a bare number is an
+    :class:`InputError` naming the unit to add); ``ball_count``, the conformities and Poisson's
+    ratio are bare numbers.  The plausibility bounds of the values are those of
+    :mod:`bearingsim.geometry` (table in its docstring).
+    """
+    if not isinstance(data, dict):
+        raise InputError("bearing", f"expected a table of bearing data, got {type(data).__name__}",
+                         "give the parsed TOML table (a dict) of a bearing file")
+    with file_input():
+        return _bearing_from_dict(data)
+
+
+def _bearing_from_dict(data: dict) -> BallBearing:
     if "rows" in data or "arrangement" in data:
         from .statics import arrangements  # noqa: F401  (issue 3: sets and double-row units)
 
@@ -139,12 +231,19 @@ def bearing_from_dict(data: dict) -> BallBearing:
         if key not in data:
             raise InputError(key, "missing", f"add {key} to the bearing file")
     kind = data.get("type", "angular_contact")
-    d = parse_quantity(data["ball_diameter"], "length", "ball_diameter")
-    if not d > 0:
-        raise InputError("ball_diameter", f"must be positive, got {data['ball_diameter']!r}", 'e.g. "11.1 mm"')
+    if not isinstance(kind, str):
+        raise InputError("type", f"expected a string, got {kind!r}", 'type = "angular_contact" or "deep_groove"')
     z = data["ball_count"]
     if isinstance(z, bool) or not isinstance(z, int):
         raise InputError("ball_count", f"must be an integer, got {z!r}", "e.g. ball_count = 16")
+    from .geometry import LIMITS
+
+    if not LIMITS["ball_count"][0] <= z <= LIMITS["ball_count"][1]:  # before anything is sized by it
+        raise InputError("ball_count", f"{z} balls is outside {LIMITS['ball_count'][0]}–{LIMITS['ball_count'][1]}",
+                         "give the number of balls in one row, e.g. ball_count = 16")
+    d = parse_quantity(data["ball_diameter"], "length", "ball_diameter")
+    if not d > 0:
+        raise InputError("ball_diameter", f"must be positive, got {data['ball_diameter']!r}", 'e.g. "11.1 mm"')
     dm = parse_quantity(data["pitch_diameter"], "length", "pitch_diameter")
     fi = _conformity(data, "inner", d)
     fo = _conformity(data, "outer", d)
@@ -165,9 +264,10 @@ def bearing_from_dict(data: dict) -> BallBearing:
     def opt(key, dim):
         return parse_quantity(data[key], dim, key) if key in data else 0.0
 
-    notes = dict(data.get("sources", {}))
+    src = data.get("sources", {})
+    notes = dict(src) if isinstance(src, dict) else {"sources": str(src)}
     if "description" in data:
-        notes["description"] = data["description"]
+        notes["description"] = str(data["description"])
     return BallBearing(
         name=str(data.get("name", "bearing")), kind=kind, ball_diameter=d, ball_count=z, pitch_diameter=dm,
         inner_conformity=fi, outer_conformity=fo, contact_angle=alpha,

@@ -25,13 +25,12 @@ Library files are ``bearingsim/data/lubricant-<name>.toml``; every number cites 
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 
 from .errors import InputError
-from .units import parse_quantity
+from .units import file_input, parse_quantity
 
 T15 = 288.15
 
@@ -80,8 +79,11 @@ class Lubricant:
     sources: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):
+        if not isinstance(self.name, str):
+            raise InputError("lubricant.name", f"expected a string, got {type(self.name).__name__}", 'e.g. "my-oil"')
+
         def pos(fname, v):
-            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise InputError(f"{self.name}.{fname}", f"must be a positive finite number, got {v!r}",
                                  "check the value and its unit")
         for f in ("temperature_1", "kinematic_viscosity_1", "temperature_2", "kinematic_viscosity_2",
@@ -90,7 +92,7 @@ class Lubricant:
             pos(f, getattr(self, f))
         for f in ("density_temperature_coefficient", "lss_c3", "lss_c4", "lss_floor"):
             v = getattr(self, f)
-            if not (math.isfinite(v) and v >= 0):
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and v >= 0):
                 raise InputError(f"{self.name}.{f}", f"must be finite and >= 0, got {v!r}", "")
         if self.temperature_1 == self.temperature_2:
             raise InputError(f"{self.name}.viscosity", "the two viscosity points are at the same temperature",
@@ -191,9 +193,18 @@ _NUMBERS = {"lss_ratio": "lss_ratio", "lss_c1": "lss_c1", "lss_c2": "lss_c2", "l
 
 
 def lubricant_from_dict(data: dict, fname: str = "lubricant") -> Lubricant:
-    """Build a :class:`Lubricant` from a TOML table (see the library files for the layout)."""
+    """Build a :class:`Lubricant` from a TOML table (see the library files for the layout).
+
+    Dimensional values need their unit (``"68 mm^2/s"``, ``"40 degC"``; a bare number is an
+    :class:`InputError` naming the unit to add); ``lss_*`` are bare numbers.
+    """
     if not isinstance(data, dict):
-        raise InputError(fname, "expected a table", "")
+        raise InputError(fname, f"expected a table, got {type(data).__name__}", "give the parsed TOML table (a dict)")
+    with file_input():
+        return _lubricant_from_dict(data, fname)
+
+
+def _lubricant_from_dict(data: dict, fname: str) -> Lubricant:
     name = str(data.get("name", "user-lubricant"))
     visc = data.get("viscosity")
     if not isinstance(visc, list) or len(visc) != 2 or not all(isinstance(p, list) and len(p) == 2 for p in visc):
@@ -252,15 +263,19 @@ def library() -> dict[str, Lubricant]:
 
 def get_lubricant(spec: str | Path | Lubricant, fname: str = "lubricant") -> Lubricant:
     """A lubricant from the library by name, or from a TOML file path."""
+    from .io import read_toml
+
     if isinstance(spec, Lubricant):
         return spec
+    if not isinstance(spec, (str, Path)):
+        raise InputError(fname, f"expected a lubricant name, a path to a TOML file or a Lubricant, got "
+                         f"{type(spec).__name__} {spec!r}"[:200],
+                         f"use one of {', '.join(library_names())} or a path to a .toml file")
     s = str(spec)
     if s in library_names():
-        text = (_data_dir() / f"lubricant-{s}.toml").read_text(encoding="utf-8")
-        return lubricant_from_dict(tomllib.loads(text), fname)
+        return lubricant_from_dict(read_toml(_data_dir() / f"lubricant-{s}.toml", fname), fname)
     p = Path(s)
     if p.suffix.lower() == ".toml" or p.exists():
-        from .io import read_toml
         return lubricant_from_dict(read_toml(p, fname), fname)
     raise InputError(fname, f"{s!r} is neither a library lubricant nor a TOML file",
                      f"use one of {', '.join(library_names())} or a path to a .toml file")

@@ -2,6 +2,12 @@
 
 Every entry cites where its numbers come from.  Values are SI:
 Young's modulus [Pa], Poisson's ratio [-], density [kg/m³].
+
+Plausibility bounds (:data:`LIMITS`, issue 11 item 5; the table of all bearing-input bounds is in
+:mod:`bearingsim.geometry`): E 1–1000 GPa (polymers ~2 GPa to tungsten carbide ~600 GPa),
+0 ≤ ν < 0.5, ρ 500–25 000 kg/m³.  Outside them a material is refused with
+:class:`~bearingsim.errors.InputError`: ``E = 1 Pa`` or a density in g/cm³ written as kg/m³ is a
+unit slip, not a material.
 """
 
 from __future__ import annotations
@@ -10,6 +16,9 @@ import math
 from dataclasses import dataclass
 
 from .errors import InputError
+
+#: plausibility bounds: Young's modulus [Pa], Poisson's ratio [-], density [kg/m³]
+LIMITS = {"youngs_modulus": (1e9, 1e12), "poisson_ratio": (0.0, 0.5), "density": (500.0, 25000.0)}
 
 
 @dataclass(frozen=True)
@@ -33,15 +42,32 @@ class Material:
     source: str = "user input"
 
     def __post_init__(self):
+        if not isinstance(self.name, str):
+            raise InputError("material.name", f"expected a string, got {type(self.name).__name__}",
+                             'e.g. "bearing_steel"')
+        for key in ("youngs_modulus", "poisson_ratio", "density"):
+            v = getattr(self, key)
+            if isinstance(v, bool) or not isinstance(v, (int, float)) and type(v).__module__ != "numpy":
+                raise InputError(f"{self.name}.{key}", f"expected a number in SI units, got {type(v).__name__}",
+                                 "give a float (Pa, -, kg/m^3)")
         if not (math.isfinite(self.youngs_modulus) and self.youngs_modulus > 0):
             raise InputError(f"{self.name}.youngs_modulus", f"must be positive, got {self.youngs_modulus!r}",
                              'e.g. "208 GPa" for bearing steel')
-        if not (-1.0 < self.poisson_ratio < 0.5):
-            raise InputError(f"{self.name}.poisson_ratio", f"must lie in (-1, 0.5), got {self.poisson_ratio!r}",
+        lo, hi = LIMITS["youngs_modulus"]
+        if not lo <= self.youngs_modulus <= hi:
+            raise InputError(f"{self.name}.youngs_modulus", f"{self.youngs_modulus:.4g} Pa is outside the plausible "
+                             f"{lo / 1e9:g}–{hi / 1e9:g} GPa", 'check the value and its unit, e.g. "208 GPa"')
+        lo, hi = LIMITS["poisson_ratio"]
+        if not (lo <= self.poisson_ratio < hi):
+            raise InputError(f"{self.name}.poisson_ratio", f"must lie in [0, 0.5), got {self.poisson_ratio!r}",
                              "e.g. 0.3 for steel, 0.26 for silicon nitride")
         if not (math.isfinite(self.density) and self.density > 0):
             raise InputError(f"{self.name}.density", f"must be positive, got {self.density!r}",
                              'e.g. "7850 kg/m^3"')
+        lo, hi = LIMITS["density"]
+        if not lo <= self.density <= hi:
+            raise InputError(f"{self.name}.density", f"{self.density:.4g} kg/m³ is outside the plausible "
+                             f"{lo:g}–{hi:g} kg/m³", 'check the value and its unit, e.g. "7850 kg/m^3"')
 
     @property
     def reduced_compliance(self) -> float:
@@ -75,6 +101,9 @@ LIBRARY: dict[str, Material] = {
 
 def get_material(name: str, field: str = "material") -> Material:
     """Return a library material by name, or raise :class:`InputError` listing the choices."""
+    if not isinstance(name, str):
+        raise InputError(field, f"expected a material name, got {type(name).__name__}",
+                         f"use one of {', '.join(sorted(LIBRARY))}")
     key = name.strip().lower().replace("-", "_").replace(" ", "_")
     try:
         return LIBRARY[key]

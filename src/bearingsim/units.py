@@ -2,17 +2,46 @@
 
 Everything inside bearingsim is a plain SI float.  Strings such as ``"11.1 mm"``,
 ``"11200 rpm"`` or ``"310 GPa"`` from TOML files and the command line are parsed
-here once, with pint, and checked for dimension.  A bare number is taken in the
-field's default unit (e.g. N for forces, rpm for speeds).
+here once and checked for dimension.
+
+Grammar (issue 11 item 3: a quantity is never evaluated as arithmetic)::
+
+    quantity := number [unit]
+    number   := [+|-] digits [. digits] [(e|E) [+|-] digits]        (one number, decimal point)
+    unit     := term { ("*" | "/" | "·" | "." | " ") term }
+    term     := (name | "(" unit ")" | "1") [("^" | "**") [+|-] digits]   (|exponent| ≤ 12)
+
+The number is read by Python's ``float`` (never by an expression evaluator); unit names are
+looked up one at a time in pint's registry and combined here, so neither ``"9**9**9 N"`` nor
+``"m**9**9**9"`` nor ``"1/0 N"`` is ever evaluated.  A decimal comma (``"3000,5 N"``) is refused
+with a hint; strings longer than :data:`MAX_LENGTH` characters are refused before parsing; the
+value must be finite in SI.  What users type is accepted: ``"10000 RPM"``, ``"10 krpm"``,
+``"3kN"``, ``"1/min"``, ``"rev/min"``, ``"N*m"``, ``"N·m"``, ``"N m"``, ``"Nm"``, ``"µm"``/``"um"``,
+``"degC"``/``"°C"``, ``"mm²/s"``.
+
+A bare number (``3000`` or ``"3000"``) is taken in the dimension's default unit (N for forces,
+N·m for moments, rpm for speeds, deg for angles: the command-line convention of the README) —
+except inside :func:`file_input` (or with ``require_unit=True``), where the file readers parse:
+a bare number for a dimensional field of a bearing, lubricant or case file is an error naming
+the unit to add (``all lengths bare`` once read a 72.5 m bearing).  Dimensionless fields
+(ball_count, conformities, Poisson's ratio) stay bare numbers.
 """
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import math
+import numbers
+import re
 from functools import lru_cache
-from tokenize import TokenError
 
 from .errors import InputError
+
+#: longest quantity string accepted [characters]
+MAX_LENGTH = 100
+#: largest |exponent| of a unit factor ("m^3", "s^-2"); bounds what a unit string can ask of pint
+MAX_UNIT_EXPONENT = 12
 
 # dimension name -> (pint dimensionality string, SI unit used inside, default unit for bare numbers)
 DIMENSIONS: dict[str, tuple[str, str, str]] = {
@@ -33,7 +62,51 @@ DIMENSIONS: dict[str, tuple[str, str, str]] = {
     "inverse_temperature": ("1 / [temperature]", "1/K", "1/K"),
     "inverse_pressure": ("[length] * [time] ** 2 / [mass]", "1/Pa", "1/Pa"),
     "thermal_conductivity": ("[mass] * [length] / [time] ** 3 / [temperature]", "W/(m*K)", "W/(m*K)"),
+    "velocity": ("[length] / [time]", "m/s", "m/s"),
+    "acceleration": ("[length] / [time] ** 2", "m/s^2", "m/s^2"),
+    "inertia": ("[mass] * [length] ** 2", "kg*m^2", "kg*m^2"),
 }
+
+#: the unit suggested when a file gives a bare number for a dimensional field
+FILE_UNIT: dict[str, str] = {
+    "length": "mm", "angle": "deg", "force": "N", "moment": "N*m", "speed": "rpm", "pressure": "GPa",
+    "density": "kg/m^3", "mass": "kg", "time": "s", "frequency": "Hz", "temperature": "degC",
+    "stiffness": "N/um", "kinematic_viscosity": "mm^2/s", "inverse_temperature": "1/K",
+    "inverse_pressure": "1/GPa", "thermal_conductivity": "W/(m*K)", "velocity": "m/s",
+    "acceleration": "m/s^2", "inertia": "kg*m^2",
+}
+
+#: spellings people type that pint does not know (or reads as something else: pint's "Nm" is a
+#: "number_meter"); each maps to a unit expression of the grammar above
+_ALIASES = {
+    "RPM": "rpm", "Rpm": "rpm", "rpms": "rpm", "kRPM": "krpm", "rev": "revolution", "revs": "revolution",
+    "Nm": "N*m", "kNm": "kN*m", "Nmm": "N*mm", "mNm": "mN*m", "sec": "s", "secs": "s",
+    "micron": "um", "microns": "um", "%": "percent",
+}
+
+#: set while a file (bearing, lubricant, case) is being read: dimensional fields need a unit
+_FILE_INPUT: contextvars.ContextVar[bool] = contextvars.ContextVar("bearingsim_file_input", default=False)
+
+
+@contextlib.contextmanager
+def file_input():
+    """Inside this block :func:`parse_quantity` refuses a bare number for a dimensional field
+    (unless the caller says otherwise): the file readers (:func:`bearingsim.io.bearing_from_dict`,
+    :func:`bearingsim.lubricants.lubricant_from_dict`, :func:`bearingsim.dynamics.case.case_from_dict`)
+    wrap their parsing in it, so every quantity of a file — also those parsed by the modules they
+    call (arrangements, load histories) — carries its unit.  An exact zero needs none (0 mm = 0 m),
+    except a temperature."""
+    token = _FILE_INPUT.set(True)
+    try:
+        yield
+    finally:
+        _FILE_INPUT.reset(token)
+
+_NUMBER = re.compile(r"[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?")
+_DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d")
+_TOKEN = re.compile(r"\s*(?:(?P<name>%|[A-Za-z_µμ°Ωå][A-Za-z_µμ°Ωå0-9]*)|(?P<pow>\*\*|\^)|(?P<op>[*/·⋅.()])"
+                    r"|(?P<int>[+-]?\d+))")
+_SUPERSCRIPTS = str.maketrans({"²": "^2", "³": "^3", "⁻": "^-", "¹": "1"})
 
 
 @lru_cache(maxsize=1)
@@ -47,7 +120,12 @@ def registry():
         return pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
 
 
-def parse_quantity(value, dimension: str, field: str) -> float:
+def _example(dimension: str) -> str:
+    dim = DIMENSIONS[dimension]
+    return FILE_UNIT.get(dimension) or dim[2] or dim[1] or "%"
+
+
+def parse_quantity(value, dimension: str, field: str, *, require_unit: bool | None = None) -> float:
     """Convert ``value`` to a plain SI float of the given dimension.
 
     Parameters
@@ -59,73 +137,253 @@ def parse_quantity(value, dimension: str, field: str) -> float:
         One of the keys of :data:`DIMENSIONS`.
     field : str
         Name of the input field, used in error messages.
+    require_unit : bool | None
+        Refuse a bare number for a dimensional field (file readers: a bare ``72.5`` must not
+        silently become metres).  None (default): refuse inside :func:`file_input`, else accept.
 
     Returns
     -------
     float
-        The value in SI units [m, rad, N, N·m, rad/s, Pa, kg/m³, kg, s, Hz, K].
+        The value in SI units [m, rad, N, N·m, rad/s, Pa, kg/m³, kg, s, Hz, K, ...].
 
     Raises
     ------
     InputError
-        Unknown unit, wrong dimension, or a value that is not a finite number.
+        Unknown unit, wrong dimension, arithmetic or a decimal comma, a string longer than
+        :data:`MAX_LENGTH`, a bare number where a unit is required, or a value that is not a
+        finite number in SI.
     """
+    if dimension not in DIMENSIONS:
+        raise InputError(field, f"unknown dimension {dimension!r}", f"use one of {', '.join(DIMENSIONS)}")
     dim, si, default = DIMENSIONS[dimension]
-    if isinstance(value, bool):
-        raise InputError(field, f"expected a quantity, got {value!r}", f'write e.g. "1 {default or si}"')
-    if isinstance(value, (int, float)):
-        out = float(value)
-        if default and default != si:
-            out = _convert(f"{value} {default}", si, field)
-        if not math.isfinite(out):
-            raise InputError(field, f"{value!r} is not a finite number", "give a finite value")
-        return out
+    example = _example(dimension)
+    if require_unit is None:
+        require_unit = _FILE_INPUT.get()
+    if isinstance(value, bool) or type(value).__name__ == "bool_":
+        raise InputError(field, f"expected a quantity, got {value!r}", f'write e.g. "1 {example}"'.rstrip())
+    if isinstance(value, numbers.Real):
+        try:
+            number = float(value)
+        except (OverflowError, ValueError, TypeError):
+            raise InputError(field, f"{value!r} is not a finite number", "give a finite value") from None
+        return _bare(number, repr(value), dimension, field, require_unit)
     if not isinstance(value, str):
-        raise InputError(field, f"expected a quantity string such as '1 {default or si}', got {type(value).__name__}",
+        raise InputError(field, f"expected a quantity string such as '1 {example}', got {type(value).__name__}",
                          "write the value as a string with its unit")
+    if len(value) > MAX_LENGTH:
+        raise InputError(field, f"the value is {len(value)} characters long (at most {MAX_LENGTH})",
+                         f'write one number and a unit, e.g. "1 {example}"'.rstrip())
     text = value.strip()
     if not text:
-        raise InputError(field, "empty value", f'write e.g. "1 {default or si}"')
+        raise InputError(field, "empty value", f'write e.g. "1 {example}"'.rstrip())
+    m = _NUMBER.match(text)
+    if m is None:
+        raise InputError(field, f"{text!r} does not start with a number",
+                         f'write a number then a unit, e.g. "1 {example}"'.rstrip())
+    rest = text[m.end():]
+    if _DECIMAL_COMMA.match(text) and rest.startswith(","):
+        fixed = text.replace(",", ".", 1)
+        raise InputError(field, f"{text!r} has a decimal comma (or a thousands separator)",
+                         f'use a decimal point and no separators: "{fixed}"')
     try:
-        out = float(text)
-    except ValueError:
-        out = None
-    if out is not None:
-        return parse_quantity(out, dimension, field)
-    return _convert(text, si, field, dim, default)
+        number = float(m.group(0))
+    except ValueError:  # pragma: no cover - the pattern admits only float syntax
+        raise InputError(field, f"cannot read the number in {text!r}", "write e.g. 1.5e3") from None
+    if not math.isfinite(number):
+        raise InputError(field, f"{m.group(0)!r} is beyond the floating-point range", "give a finite value")
+    unit_text = rest.strip()
+    if not unit_text:
+        return _bare(number, m.group(0), dimension, field, require_unit)
+    return _to_si(number, _parse_unit(unit_text, text, field, example), text, dimension, field)
 
 
-def _convert(text: str, si: str, field: str, dim: str | None = None, default: str = "") -> float:
+def _bare(number: float, shown: str, dimension: str, field: str, require_unit: bool) -> float:
+    """A number without a unit: an error where a unit is required, else the default unit."""
+    dim, si, default = DIMENSIONS[dimension]
+    if not math.isfinite(number):
+        raise InputError(field, f"{shown} is not a finite number", "give a finite value")
+    if not default and not si:  # dimensionless
+        return number
+    if require_unit and not (number == 0.0 and dimension != "temperature"):
+        raise InputError(field, f"the number {shown} has no unit",
+                         f'write it as a string with its unit, e.g. "{shown} {FILE_UNIT.get(dimension, si)}"')
+    if default == si:
+        return number
+    return _to_si(number, registry().Unit(default), f"{shown} {default}", dimension, field)
+
+
+def _parse_unit(unit_text: str, text: str, field: str, example: str):
+    """A pint Unit from a unit expression (grammar in the module docstring), never evaluating numbers."""
+    src = unit_text.translate(_SUPERSCRIPTS)
+    tokens = []
+    pos = 0
+    while pos < len(src):
+        if src[pos:].strip() == "":
+            break
+        t = _TOKEN.match(src, pos)
+        if t is None:
+            raise InputError(field, f"cannot read the unit in {text!r} (at {src[pos:].strip()[:10]!r})",
+                             f'write one number then a unit, e.g. "1 {example}" (no arithmetic)')
+        kind = t.lastgroup
+        gap = t.start(kind) > pos
+        tokens.append((kind, t.group(kind), gap))
+        pos = t.end()
+    ureg = registry()
+    state = {"i": 0}
+
+    def bad(why: str):
+        return InputError(field, f"cannot read the unit in {text!r} ({why})",
+                          f'write one number then a unit, e.g. "1 {example}" (no arithmetic)')
+
+    def peek():
+        return tokens[state["i"]] if state["i"] < len(tokens) else (None, None, False)
+
+    def take():
+        tok = peek()
+        state["i"] += 1
+        return tok
+
+    def factor():
+        kind, tx, _ = take()
+        if kind == "name":
+            return lookup(tx)
+        if kind == "op" and tx == "(":
+            u = expr()
+            k2, t2, _ = take()
+            if (k2, t2) != ("op", ")"):
+                raise bad("unbalanced parenthesis")
+            return u
+        if kind == "int" and tx == "1" and peek()[:2] == ("op", "/"):
+            return ureg.Unit("dimensionless")
+        raise bad(f"unexpected {tx!r}" if tx is not None else "it ends too early")
+
+    def term():
+        u = factor()
+        if peek()[0] == "pow":
+            take()
+            k2, t2, _ = take()
+            if k2 != "int":
+                raise bad("an exponent must be a whole number")
+            n = int(t2)
+            if abs(n) > MAX_UNIT_EXPONENT:
+                raise bad(f"exponent {n} is beyond ±{MAX_UNIT_EXPONENT}")
+            u = u ** n
+            if peek()[0] == "pow":
+                raise bad("repeated exponent")
+        return u
+
+    def expr():
+        u = term()
+        while True:
+            kind, tx, gap = peek()
+            if kind == "op" and tx in "*·⋅.":
+                take()
+                u = u * term()
+            elif kind == "op" and tx == "/":
+                take()
+                u = u / term()
+            elif kind == "name" or (kind == "op" and tx == "("):
+                if not gap and kind == "op":
+                    raise bad("missing operator before '('")
+                u = u * term()  # "N m": a space multiplies
+            else:
+                return u
+
+    def lookup(name: str):
+        alias = _ALIASES.get(name)
+        if alias is not None:
+            return _parse_unit(alias, text, field, example)
+        try:
+            return ureg.Unit(name)
+        except Exception:  # noqa: BLE001 - pint raises several kinds for an unknown name
+            raise InputError(field, f"unknown unit {name!r} in {text!r}",
+                             f'write a unit such as "{example}"') from None
+
+    if not tokens:
+        raise bad("no unit")
+    if tokens[0][:2] == ("op", "/"):  # "1/min" was read as the number 1 and the unit "/min"
+        tokens.insert(0, ("int", "1", False))
+    try:
+        unit = expr()
+    except InputError:
+        raise
+    except Exception as exc:  # noqa: BLE001 - pint's unit algebra (offset units, ...) on validated tokens
+        raise bad(f"{exc.__class__.__name__}: {exc}") from None
+    if state["i"] != len(tokens):
+        raise bad(f"unexpected {tokens[state['i']][1]!r}")
+    if any(abs(p) > MAX_UNIT_EXPONENT for p in unit._units.values()):
+        raise bad(f"an exponent beyond ±{MAX_UNIT_EXPONENT}")
+    return unit
+
+
+def _to_si(number: float, unit, text: str, dimension: str, field: str) -> float:
+    """``number`` × ``unit`` in the SI unit of ``dimension`` (checked), as a finite float."""
     import pint
 
+    dim, si, default = DIMENSIONS[dimension]
     ureg = registry()
     try:
-        q = ureg.Quantity(text)
-    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError, AttributeError,
-            ValueError, TypeError, AssertionError, SyntaxError, TokenError) as exc:
-        raise InputError(field, f"cannot read {text!r} as a quantity ({exc.__class__.__name__}: {exc})",
-                         f'write a number and a unit, e.g. "1 {default or si}"') from None
-    try:
+        q = ureg.Quantity(number, unit)
         if si == "":
-            mag = q.to("dimensionless").magnitude if hasattr(q, "to") else float(q)
+            mag = q.to("dimensionless").magnitude
         elif si == "rad" and q.dimensionless:
             mag = q.to("rad").magnitude
         elif si in ("rad/s", "Hz"):
             # pint treats the radian as dimensionless, so it cannot tell "50 Hz" (cycles per second)
             # from "50 rad/s".  A rate written with an angle unit (rpm, rad/s, deg/s) converts as an
             # angular speed; a bare reciprocal time (Hz, 1/s, 1/min) counts cycles.
+            if q.dimensionality != ureg.Quantity(1, "Hz").dimensionality:
+                raise pint.errors.DimensionalityError(q.units, si)
             cycles = all(name.endswith("hertz") or ureg.Quantity(1, name).dimensionality == {"[time]": 1}
                          for name, _ in q.unit_items())
-            angular = not cycles
-            w = q.to("rad/s").magnitude if angular else 2.0 * math.pi * q.to("Hz").magnitude
+            w = q.to("rad/s").magnitude if not cycles else 2.0 * math.pi * q.to("Hz").magnitude
             mag = w if si == "rad/s" else w / (2.0 * math.pi)
         else:
             mag = q.to(si).magnitude
+        out = float(mag)
     except pint.errors.DimensionalityError:
-        raise InputError(field, f"{text!r} has dimension {q.dimensionality}, expected {dim or si}",
-                         f'give it in a unit such as "{default or si}"') from None
-    out = float(mag)
+        raise InputError(field, f"{text!r} has dimension {_dimensionality(unit)}, expected {dimension}",
+                         f'give it in a unit such as "{_example(dimension) or si}"') from None
+    except (OverflowError, ZeroDivisionError):
+        raise InputError(field, f"{text!r} is beyond the floating-point range in SI", "give a finite value") from None
+    except Exception as exc:  # noqa: BLE001 - pint's offset-unit and conversion errors
+        raise InputError(field, f"cannot convert {text!r} to {si or 'a number'} ({exc.__class__.__name__})",
+                         f'give it in a unit such as "{_example(dimension) or si}"') from None
     if not math.isfinite(out):
-        raise InputError(field, f"{text!r} is not a finite number", "give a finite value")
+        raise InputError(field, f"{text!r} is beyond the floating-point range in SI", "give a finite value")
     return out
 
+
+def _dimensionality(unit) -> str:
+    try:
+        d = str(unit.dimensionality)
+    except Exception:  # noqa: BLE001  # pragma: no cover
+        return "?"
+    return d if d != "dimensionless" else "none (a pure number or an angle)"
+
+
+def format_quantity(value: float, dimension: str, unit: str | None = None) -> str:
+    """``value`` [SI] written in ``unit`` (default: the dimension's default unit) so that
+    :func:`parse_quantity` reads it back: ``format_quantity(0.0111, "length", "mm") == "11.1 mm"``."""
+    dim, si, default = DIMENSIONS[dimension]
+    unit = unit or default or si
+    if not unit:
+        return repr(float(value))
+    if unit == si:
+        return f"{float(value)!r} {unit}"
+    if dimension in ("speed", "frequency") or dimension == "temperature":
+        # the same angular/cycle rule as parse_quantity: convert through its own inverse
+        one = parse_quantity(f"1 {unit}", dimension, "unit")
+        zero = parse_quantity(f"0 {unit}", dimension, "unit") if dimension == "temperature" else 0.0
+        return f"{(float(value) - zero) / (one - zero)!r} {unit}"
+    q = registry().Quantity(float(value), registry().Unit(si))
+    return f"{float(q.to(unit).magnitude)!r} {unit}"
+
+
+def _convert(text: str, si: str, field: str, dim: str | None = None, default: str = "") -> float:
+    """Compatibility wrapper (``cli_lubrication`` reads ``--speeds`` with it): ``text`` with its unit in
+    the dimension whose SI unit is ``si``, through :func:`parse_quantity` (no expression evaluation)."""
+    for name, (_, si_name, _) in DIMENSIONS.items():
+        if si_name == si and name not in ("frequency", "angle"):
+            return parse_quantity(text, name, field)
+    raise InputError(field, f"no dimension with SI unit {si!r}", "")  # pragma: no cover

@@ -58,7 +58,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..errors import InputError
-from ..units import parse_quantity, registry
+from ..units import file_input, parse_quantity
 from .loads import LoadHistory, SpeedHistory, parse_loads, parse_speed
 
 _KEYS = {"bearing", "lubricant", "temperature", "speed", "duration", "output_interval", "traction", "n_slices",
@@ -164,21 +164,28 @@ _CAGE_RING = {"axial_width": "length", "radial_thickness": "length", "pocket_dia
 
 
 def _inertia(value, fname: str) -> float:
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        v = float(value)
-    else:
-        try:
-            v = registry().Quantity(str(value)).to("kg*m**2").magnitude
-        except Exception as exc:  # pint errors
-            raise InputError(fname, f"cannot read {value!r} as a moment of inertia ({exc})", 'e.g. "0.01 kg*m^2"') \
-                from None
+    v = parse_quantity(value, "inertia", fname)
     if not (math.isfinite(v) and v > 0):
         raise InputError(fname, f"must be positive, got {value!r}", 'e.g. "0.01 kg*m^2"')
     return v
 
 
 def case_from_dict(data: dict, base: Path | None = None) -> Case:
-    """Build a :class:`Case` from a parsed TOML table (units parsed here)."""
+    """Build a :class:`Case` from a parsed TOML table (units parsed here).
+
+    Every dimensional value needs its unit (``duration = "20 ms"``; a bare number is an
+    :class:`InputError` naming the unit to add, :func:`bearingsim.units.file_input`); ``tolerance``,
+    ``contact_damping`` [s/m], ``n_slices``, ``chunk`` and ``cage.friction`` are bare numbers.
+    """
+    if not isinstance(data, dict):
+        raise InputError("case", f"expected a table, got {type(data).__name__}", "give the parsed TOML table (a dict)")
+    if base is not None and not isinstance(base, (str, Path)):
+        raise InputError("base", f"expected a folder path, got {type(base).__name__}", "give a pathlib.Path or None")
+    with file_input():
+        return _case_from_dict(data, None if base is None else Path(base))
+
+
+def _case_from_dict(data: dict, base: Path | None) -> Case:
     from ..io import load_bearing
 
     unknown = sorted(set(data) - _KEYS)
@@ -192,13 +199,19 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
         bspec = str(base / bspec)
     bearing = load_bearing(bspec)
     lub = data.get("lubricant")
+    if lub is not None and not isinstance(lub, str):
+        raise InputError("lubricant", f"expected a library name or a TOML path, got {lub!r}"[:160],
+                         'e.g. lubricant = "iso-vg-68"')
     if isinstance(lub, str) and base is not None and lub.endswith(".toml") and not Path(lub).is_absolute():
         lub = str(base / lub)
     traction = data.get("traction", "slices" if lub is not None else "none")
     ring = data.get("inner_ring", {})
+    if not isinstance(ring, dict):
+        raise InputError("inner_ring", "expected a table", "write an [inner_ring] table")
     unknown = set(ring) - {"mass", "transverse_inertia", "polar_inertia"}
     if unknown:
-        raise InputError(f"inner_ring.{sorted(unknown)[0]}", "unknown key", "use mass, transverse_inertia, polar_inertia")
+        raise InputError(f"inner_ring.{sorted(unknown)[0]}", "unknown key",
+                         "use mass, transverse_inertia, polar_inertia")
     ring_mass = parse_quantity(ring.get("mass", "2 kg"), "mass", "inner_ring.mass")
     inertia = None
     if "transverse_inertia" in ring or "polar_inertia" in ring:
@@ -207,6 +220,8 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
         inertia = (_inertia(ring["transverse_inertia"], "inner_ring.transverse_inertia"),
                    _inertia(ring["polar_inertia"], "inner_ring.polar_inertia"))
     cage_in = data.get("cage", {})
+    if not isinstance(cage_in, dict):
+        raise InputError("cage", "expected a table", "write a [cage] table")
     unknown = set(cage_in) - {"mass", "pocket_clearance", "friction", "guidance", "land_clearance", "pocket_shape",
                               "enabled", "n_modes", "modal_damping"} - set(_CAGE_RING)
     if unknown:
@@ -235,15 +250,7 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
     grav = data.get("gravity", (0.0, 0.0, 0.0))
     if not (isinstance(grav, (list, tuple)) and len(grav) == 3):
         raise InputError("gravity", "expected three components", 'e.g. ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]')
-    gvec = []
-    for i, g in enumerate(grav):
-        if isinstance(g, (int, float)):
-            gvec.append(float(g))
-        else:
-            try:
-                gvec.append(registry().Quantity(str(g)).to("m/s**2").magnitude)
-            except Exception as exc:
-                raise InputError(f"gravity[{i}]", f"cannot read {g!r} ({exc})", 'e.g. "-9.81 m/s^2"') from None
+    gvec = [parse_quantity(g, "acceleration", f"gravity[{i}]") for i, g in enumerate(grav)]
     sys_lp = getattr(bearing, "load_point", 0.0) if hasattr(bearing, "rows_parameters") else 0.0
     load_point = 0.0
     if "load_point" in data:
