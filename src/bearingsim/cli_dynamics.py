@@ -29,7 +29,11 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
     @app.command()
     def simulate(case: Path = typer.Argument(..., help="case TOML file (see examples/spindle-7011.toml)"),
                  out: Path = typer.Option(..., "--out", "-o", help="output netCDF file (streamed in chunks)"),
-                 resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint OUT.ckpt.npz"),
+                 resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint OUT.ckpt.npz "
+                                             "(none: start from the beginning, with a note)"),
+                 checkpoint_every: Optional[str] = typer.Option(
+                     None, "--checkpoint-every",
+                     help="wall-clock time between checkpoints, e.g. '10 s' (default: the case's, else 30 s)"),
                  duration: Optional[str] = typer.Option(None, "--duration", help="override the case duration, e.g. '2 ms'"),
                  json_out: bool = typer.Option(False, "--json", help="print a JSON summary (SI)"),
                  quiet: bool = typer.Option(False, "--quiet", help="no progress bar")):
@@ -46,9 +50,17 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         if duration is not None:
             c = dataclasses.replace(c, duration=parse_quantity(duration, "time", "--duration"))
         con = make_console(stderr=True)
+        every = None
+        if checkpoint_every is not None:
+            from .errors import InputError
+
+            every = parse_quantity(checkpoint_every, "time", "--checkpoint-every")
+            if not every > 0:
+                raise InputError("--checkpoint-every", f"must be a positive time, got {checkpoint_every!r}", "e.g. '30 s'")
         announce_compilation()
         with writing("--out", out):  # a full disk while streaming: one line; the checkpoint (if any) allows --resume
-            res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con)
+            res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con,
+                          checkpoint_seconds=every)
         summary = dict(res.summary)
         summary["output"] = str(out)
         try:

@@ -39,6 +39,8 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         out: Optional[Path] = typer.Option(None, "--out", help="netCDF file to write (streamed, atomic)"),
         workers: Optional[int] = typer.Option(None, "--workers", help="Local processes (default: all cores)"),
         scheduler: Optional[str] = typer.Option(None, "--scheduler", help="Dask scheduler address tcp://host:port"),
+        worker_timeout: float = typer.Option(60.0, "--worker-timeout",
+                                             help="With --scheduler: fail after this many seconds without workers"),
         chunk: int = typer.Option(2000, "--chunk", help="Points per block"),
         plot: Optional[Path] = typer.Option(None, "--plot", help="Write a K_xx stiffness map (PNG)"),
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary in SI"),
@@ -61,7 +63,8 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         with writing("--out", out) if out is not None else contextlib.nullcontext():
             ds = map_grid(bearing, fa=opt(fa), fr=opt(fr), fr_z=opt(fz), m_y=opt(my), moment=opt(moment),
                           speed=opt(speed), preload=preload, control=control, out=out, workers=workers,
-                          scheduler=scheduler, chunk_points=chunk, progress=not as_json)
+                          scheduler=scheduler, chunk_points=chunk, progress=not as_json,
+                          worker_timeout=worker_timeout)
         if out is not None:
             apply_umask(out)
         dt = time.perf_counter() - t0

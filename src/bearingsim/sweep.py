@@ -25,12 +25,11 @@ from __future__ import annotations
 
 import dataclasses
 import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
-from .errors import InputError
+from .errors import BearingSimError, InputError
 
 #: grid axes in storage order (outermost first), with their dimension for units.py and SI unit
 AXES = (("preload", "force", "N"), ("fa", "force", "N"), ("fr", "force", "N"), ("fr_z", "force", "N"),
@@ -270,10 +269,20 @@ class _NetCDFSink:
         import netCDF4
 
         self.final = Path(path)
-        fd, tmp = tempfile.mkstemp(prefix=self.final.name + ".", suffix=".part", dir=self.final.parent or ".")
-        os.close(fd)
-        self.tmp = Path(tmp)
-        self.nc = netCDF4.Dataset(self.tmp, "w", format="NETCDF4")
+        self.tmp = None
+        self.nc = None
+        try:
+            _remove_stale_parts(self.final)
+            self.tmp = _create_part(self.final)
+            self.nc = netCDF4.Dataset(self.tmp, "w", format="NETCDF4")
+            self._define(dims, shape, axes, attrs)
+        except BaseException as exc:
+            self.abort()
+            if isinstance(exc, OSError | RuntimeError):
+                raise _write_error(self.final, exc) from None
+            raise
+
+    def _define(self, dims, shape, axes, attrs):
         for d, n in zip(dims, shape):
             self.nc.createDimension(d, n)
         self.nc.createDimension("dof", 5)
@@ -302,19 +311,92 @@ class _NetCDFSink:
             setattr(self.nc, k, v)
 
     def write(self, block, res):
-        for name, (key, _, _, _, _) in _VARS.items():
-            self.nc.variables[name][block] = _block_var(res, key)
+        try:
+            for name, (key, _, _, _, _) in _VARS.items():
+                self.nc.variables[name][block] = _block_var(res, key)
+        except (OSError, RuntimeError) as exc:  # netCDF/HDF5 errors (full disk, I/O): one line, no file
+            raise _write_error(self.final, exc) from None
 
     def close(self):
-        self.nc.close()
-        os.replace(self.tmp, self.final)
-
-    def abort(self):
+        """Close the temporary file and give it the final name (one atomic rename)."""
         try:
             self.nc.close()
-        except Exception:  # noqa: BLE001  (already closed or broken: remove the file anyway)
+            self.nc = None
+            os.replace(self.tmp, self.final)
+        except (OSError, RuntimeError) as exc:
+            self.abort()
+            raise _write_error(self.final, exc) from None
+
+    def abort(self):
+        """Close and remove the temporary file (the final name is never created)."""
+        if self.nc is not None:
+            try:
+                self.nc.close()
+            except Exception:  # noqa: BLE001  (already closed or broken: remove the file anyway)
+                pass
+            self.nc = None
+        if self.tmp is not None:
+            try:
+                self.tmp.unlink(missing_ok=True)
+            except OSError:
+                pass
+
+
+def _part_prefix(final: Path) -> str:
+    """Hidden temporary name of a map being written to ``final``: ``.NAME.HOST-PID-RANDOM.part``."""
+    return f".{final.name}."
+
+
+def _create_part(final: Path) -> Path:
+    """Create the temporary file of ``final`` in the same folder (so that the last step is an atomic
+    rename) with mode 0666 filtered by the user's umask, as any file the user creates (``mkstemp``
+    would give 0600, which ``os.replace`` carries over to the map).  The name holds the host and
+    process id, so that a later map can recognise the leftover of a killed process."""
+    import secrets
+    import socket
+
+    folder = final.parent
+    host = socket.gethostname().replace(".", "_").replace("-", "_") or "host"
+    for _ in range(100):
+        tmp = folder / f"{_part_prefix(final)}{host}-{os.getpid()}-{secrets.token_hex(4)}.part"
+        try:
+            fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        except FileExistsError:
+            continue
+        os.close(fd)
+        return tmp
+    raise FileExistsError(f"cannot create a temporary file next to {final}")  # pragma: no cover
+
+
+def _remove_stale_parts(final: Path) -> None:
+    """Remove temporary files of ``final`` left by map processes of this host that no longer run
+    (a process killed with SIGKILL cannot remove its own)."""
+    import socket
+
+    host = socket.gethostname().replace(".", "_").replace("-", "_") or "host"
+    prefix = _part_prefix(final)
+    try:
+        names = [p for p in final.parent.iterdir() if p.name.startswith(prefix) and p.name.endswith(".part")]
+    except OSError:
+        return
+    for p in names:
+        tag = p.name[len(prefix):-len(".part")].split("-")
+        if len(tag) != 3 or tag[0] != host or not tag[1].isdigit():
+            continue
+        pid = int(tag[1])
+        if pid == os.getpid():
+            continue
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            p.unlink(missing_ok=True)
+        except OSError:  # alive (e.g. another user's process): leave it
             pass
-        self.tmp.unlink(missing_ok=True)
+
+
+def _write_error(final: Path, exc: BaseException) -> InputError:
+    return InputError("out", f"cannot write the map {str(final)!r} ({type(exc).__name__}: {exc})",
+                      "check that the folder exists, is writable and has free space; nothing was written")
 
 
 def _dataset_from_memory(sink: _MemorySink, axes: dict, attrs: dict):
@@ -335,24 +417,121 @@ def _dataset_from_memory(sink: _MemorySink, axes: dict, attrs: dict):
 
 
 # ---- executors -----------------------------------------------------------------------------------
+class MapError(BearingSimError, RuntimeError):
+    """A map could not be completed (its Dask cluster lost every worker, a block was lost with the
+    workers that ran it, or the scheduler went away); the output file is not written."""
+
+
 def _connect(scheduler, timeout: float):
+    """``(client, owned)``: a ``distributed.Client`` connected to ``scheduler`` (an address; owned, to be
+    closed by the map) or the caller's Client.  An unreachable address is an :class:`InputError`."""
     try:
         from distributed import Client
     except ImportError:  # pragma: no cover
         raise InputError("scheduler", "dask.distributed is not installed", "pip install 'dask[distributed]'") from None
     if not isinstance(scheduler, str):
+        if not all(hasattr(scheduler, a) for a in ("map", "gather", "loop")):
+            raise InputError("scheduler", f"expected an address tcp://host:port or a distributed.Client, got "
+                             f"{type(scheduler).__name__}", "e.g. --scheduler tcp://127.0.0.1:8786")
         return scheduler, False  # a Client given by the caller
     try:
         return Client(scheduler, timeout=f"{timeout}s", set_as_default=False), True
-    except (OSError, TimeoutError, ValueError) as exc:
+    except (OSError, TimeoutError, ValueError, TypeError) as exc:
         raise InputError("scheduler", f"cannot reach the Dask scheduler at {scheduler!r} ({type(exc).__name__}: "
                          f"{exc})", "start it (dask scheduler) or check the address, e.g. tcp://127.0.0.1:8786") \
             from None
 
 
+def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout: float, poll: float = 1.0):
+    """Solve ``blocks`` on the cluster of ``client``, calling ``done(block, result)`` as they finish.
+
+    Everything goes through ``client`` itself (never the process's default client: a client connected
+    to an address by :func:`_connect` is not the default, and ``distributed.as_completed`` without a
+    loop looks up the default and fails with "No clients found").  The bearing travels with each task
+    (a few kB): tasks without data dependencies are balanced freely by the scheduler (a scattered
+    dependency pinned most tasks to one worker).  The results of all blocks finished so far are fetched
+    in one gather (not one round trip per block), so that this process — which also hosts the scheduler
+    of a LocalCluster — takes as little CPU as possible from the workers.
+
+    A worker that dies takes its running block with it; the scheduler runs the block again on another
+    worker (the result is the same: blocks are deterministic).  When the cluster has had no worker for
+    ``worker_timeout`` [s], when a block has killed its workers too often (dask's ``allowed-failures``)
+    or when the scheduler goes away, :class:`MapError` is raised (one line; the caller removes the
+    temporary file).
+    """
+    import queue
+    import time
+
+    futures = client.map(solve_block, [bearing] * len(blocks), [axes] * len(blocks), blocks,
+                         [control] * len(blocks), pure=False)
+    remaining = {f.key: (f, b) for f, b in zip(futures, blocks)}
+    finished_q: queue.SimpleQueue = queue.SimpleQueue()
+    for f in futures:
+        f.add_done_callback(finished_q.put)  # runs on the client's own loop (no default client needed)
+    del futures
+    alone_since = None
+    try:
+        while remaining:
+            finished = []
+            try:
+                finished.append(finished_q.get(timeout=poll))
+                while True:  # and every other block finished by now: one gather
+                    finished.append(finished_q.get_nowait())
+            except queue.Empty:
+                pass
+            finished = [remaining[f.key][0] for f in finished if f.key in remaining]
+            if finished:
+                alone_since = None
+                try:
+                    results = client.gather(finished)
+                except Exception as exc:  # noqa: BLE001 - cluster failures become one line
+                    err = _cluster_error(exc)
+                    if err is None:
+                        raise  # an error of the block itself (InputError, or a bug to report)
+                    raise err from None
+                for f, res in zip(finished, results):
+                    done(remaining.pop(f.key)[1], res)
+                    f.release()  # the block's result leaves the cluster once written
+                continue
+            if client.status not in ("running", "connecting"):
+                raise MapError(f"lost the connection to the Dask scheduler (client {client.status}); "
+                               f"{len(remaining)} of {len(blocks)} blocks unfinished")
+            try:
+                nworkers = len(client.nthreads())
+            except Exception as exc:  # noqa: BLE001
+                raise (_cluster_error(exc) or exc) from None
+            if nworkers:
+                alone_since = None
+            elif alone_since is None:
+                alone_since = time.monotonic()
+            elif time.monotonic() - alone_since > worker_timeout:
+                raise MapError(f"the Dask cluster has had no worker for {worker_timeout:g} s; "
+                               f"{len(remaining)} of {len(blocks)} blocks unfinished (start workers with "
+                               "dask worker ADDRESS, or raise --worker-timeout)")
+    except BaseException:
+        if remaining:
+            try:
+                client.cancel([f for f, _ in remaining.values()])
+            except Exception:  # noqa: BLE001 - the cluster may be gone already
+                pass
+        raise
+
+
+def _cluster_error(exc: BaseException) -> MapError | None:
+    """The :class:`MapError` for a failure of the cluster itself; None for any other error."""
+    name = type(exc).__name__
+    if name == "KilledWorker":
+        return MapError(f"a block of the map was lost with every worker that ran it ({exc}); the workers may "
+                        "be running out of memory")
+    if name in ("CancelledError", "FutureCancelledError", "CommClosedError") or isinstance(exc, OSError):
+        return MapError(f"lost the Dask scheduler during the map ({name}: {exc})")
+    return None
+
+
 def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.0, preload=None,
              control: str = "outer", out: str | Path | None = None, workers: int | None = None,
-             scheduler=None, chunk_points: int = 2000, progress: bool = False, scheduler_timeout: float = 3.0):
+             scheduler=None, chunk_points: int = 2000, progress: bool = False, scheduler_timeout: float = 3.0,
+             worker_timeout: float = 60.0):
     """Quasi-static map of ``bearing`` over a grid → :class:`xarray.Dataset`.
 
     Parameters
@@ -368,6 +547,9 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
     workers : local processes (default: all cores for maps of SERIAL_BELOW points or more, else this
         process; 1 = in this process)
     scheduler : Dask scheduler address or a ``distributed.Client`` (overrides ``workers``)
+    scheduler_timeout : seconds to wait for the scheduler at the start (unreachable: :class:`InputError`)
+    worker_timeout : seconds the map waits on a cluster without workers before it fails
+        (:class:`MapError`); a block lost with a dead worker is run again on another one
     chunk_points : maximum points per block
     progress : show a rich progress bar
     """
@@ -404,17 +586,25 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
     attrs = {"bearing": getattr(bearing, "name", "bearing"), "control": control, "model": "Jones-Harris quasi-static",
              "source": "bearingsim.sweep.map_grid", "stiffness_order": "x, y, z, gamma_y, gamma_z",
              "load_convention": "loads on the inner ring at the load point; fr along +y, moment about z"}
-    client = own_client = None
-    if scheduler is not None:
-        client, own_client = _connect(scheduler, scheduler_timeout)  # before any file is created
-    if workers is not None and (not isinstance(workers, int) or workers < 1):
+    if isinstance(worker_timeout, bool) or not isinstance(worker_timeout, int | float) or \
+            not (0 < worker_timeout < float("inf")):
+        raise InputError("worker_timeout", f"must be a positive number of seconds, got {worker_timeout!r}", "e.g. 60")
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int) or workers < 1):
         raise InputError("workers", f"must be a positive integer, got {workers!r}", "e.g. --workers 2")
     if workers is not None:
         nworkers = workers
     else:
         # starting processes costs seconds (interpreter + compiled kernels): small maps run here
         nworkers = 1 if npts < SERIAL_BELOW else (os.cpu_count() or 1)
-    sink = _NetCDFSink(Path(out), dims, shape, axes, attrs) if out is not None else _MemorySink(dims, shape)
+    client = own_client = None
+    if scheduler is not None:
+        client, own_client = _connect(scheduler, scheduler_timeout)  # before any file is created
+    try:
+        sink = _NetCDFSink(Path(out), dims, shape, axes, attrs) if out is not None else _MemorySink(dims, shape)
+    except BaseException:
+        if own_client:
+            client.close()
+        raise
     bar = None
     try:
         if progress:
@@ -431,22 +621,7 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
                 bar.advance(task, int(res["status"].size))
 
         if client is not None:
-            from distributed import as_completed
-
-            # the bearing travels with each task (a few kB): tasks without data dependencies are
-            # balanced freely by the scheduler (a scattered dependency pinned most tasks to one worker).
-            # One batched submission, and the results of all blocks finished so far fetched in one
-            # gather (not one round trip per block), so that the main process — which also hosts the
-            # scheduler of a LocalCluster — takes as little CPU as possible from the workers.
-            fl = client.map(solve_block, [bearing] * len(blocks), [axes] * len(blocks), blocks,
-                            [control] * len(blocks), pure=False)
-            block_of = {f.key: b for f, b in zip(fl, blocks)}
-            pending = as_completed(fl)
-            del fl  # held by ``pending`` until finished, then released below
-            for batch in pending.batches():
-                for f, res in zip(batch, client.gather(batch)):
-                    done(block_of.pop(f.key), res)
-                    f.release()  # the block's result leaves the cluster once written
+            _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout)
         elif nworkers == 1 or len(blocks) == 1:
             for b in blocks:
                 done(b, solve_block(bearing, axes, b, control))
@@ -456,11 +631,16 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
             import multiprocessing as mp
 
             ctx = mp.get_context("spawn")
+            from concurrent.futures.process import BrokenProcessPool
+
             with ProcessPoolExecutor(max_workers=min(nworkers, len(blocks)), mp_context=ctx) as ex:
                 futs = {ex.submit(solve_block, bearing, axes, b, control): b for b in blocks}
                 try:
                     for f in cf_completed(list(futs)):
                         done(futs.pop(f), f.result())  # pop: the result is released once written
+                except BrokenProcessPool as exc:
+                    raise MapError(f"a worker process of the map died ({exc}); {len(futs)} of {len(blocks)} "
+                                   "blocks unfinished (out of memory? try fewer --workers)") from None
                 except BaseException:
                     for f in futs:
                         f.cancel()

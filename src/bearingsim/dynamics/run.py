@@ -443,8 +443,39 @@ class _Writer:
         self.ds.close()
 
 
+#: wall-clock seconds between checkpoints unless the case (``checkpoint_every = "10 s"``) or the caller
+#: says otherwise: a run killed at any time loses at most this much work (plus one output interval)
+CHECKPOINT_SECONDS = 30.0
+
+
 def _checkpoint_path(out: Path) -> Path:
     return out.with_name(out.name + ".ckpt.npz")
+
+
+def _note(console, text: str) -> None:
+    """One line for the user: on ``console`` (the CLI's stderr) or as a Python warning (the API)."""
+    if console is not None:
+        console.print(text, markup=False, highlight=False, soft_wrap=True)
+    else:
+        import warnings
+
+        warnings.warn(text, stacklevel=3)
+
+
+def _read_checkpoint(ckpt: Path, out: Path, fingerprint: str):
+    """The checkpoint's arrays, or ``(None, why)`` when there is nothing to resume from."""
+    if not ckpt.exists():
+        return None, f"no checkpoint {ckpt.name} (the run was stopped before its first one, or it had finished)"
+    if not out.exists():
+        return None, f"the checkpoint {ckpt.name} has no output file {out.name} to continue"
+    try:
+        with np.load(ckpt) as c:
+            data = {k: c[k] for k in c.files}
+    except (OSError, ValueError, EOFError) as exc:  # written by rename, so only a foreign or damaged file
+        return None, f"the checkpoint {ckpt.name} cannot be read ({type(exc).__name__})"
+    if str(data.get("fingerprint")) != fingerprint:
+        raise InputError("--resume", "the checkpoint belongs to a different case", "resume with the same case")
+    return data, ""
 
 
 def _save_checkpoint(path: Path, stepper: Stepper, index: int, fingerprint: str) -> None:
@@ -456,18 +487,25 @@ def _save_checkpoint(path: Path, stepper: Stepper, index: int, fingerprint: str)
 
 
 def simulate(case, out: str | Path | None = None, resume: bool = False, progress: bool = False,
-             console=None) -> Results:
+             console=None, checkpoint_seconds: float | None = None) -> Results:
     """Run a dynamic case.
 
     Parameters
     ----------
     case : :class:`~.case.Case` or a path to a case TOML file
-    out : netCDF file for the output (streamed in chunks; a checkpoint ``OUT.ckpt.npz``
-        is written after every ``checkpoint_every`` chunks); None keeps the samples in memory
+    out : netCDF file for the output (streamed in chunks); None keeps the samples in memory.  A
+        checkpoint ``OUT.ckpt.npz`` is written after every ``checkpoint_every`` chunks and at the first
+        output time after ``checkpoint_seconds`` of wall-clock time since the last one (so a long run
+        killed at any time can be resumed); it is removed when the run completes
     resume : continue from the checkpoint of ``out`` (same case required); the trajectory
         is bitwise the same as an uninterrupted run (the integrator restarts from the
-        checkpointed t, y and step size, and every output time is hit exactly)
+        checkpointed t, y, step size and Jacobian, and every output time is hit exactly).
+        Without a checkpoint (the run was killed before its first one, or it had completed) the run
+        starts from the beginning with a one-line note (on ``console``, else a Python warning)
     progress : show a progress bar (simulated time, rate, ETA)
+    console : a ``rich`` console for the progress bar and notes
+    checkpoint_seconds : wall-clock interval between checkpoints [s] (default: the case's
+        ``checkpoint_every = "… s"``, else :data:`CHECKPOINT_SECONDS`)
 
     Returns :class:`Results`.  On a diverging step or when every ball has separated
     the data so far are saved and :class:`SimulationError` is raised.
@@ -476,6 +514,12 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
 
     if not isinstance(case, Case):
         case = load_case(case)
+    if checkpoint_seconds is None:
+        checkpoint_seconds = getattr(case, "checkpoint_interval", None) or CHECKPOINT_SECONDS
+    if isinstance(checkpoint_seconds, bool) or not isinstance(checkpoint_seconds, int | float) or \
+            not (0 < checkpoint_seconds < math.inf):
+        raise InputError("checkpoint_every", f"must be a positive wall-clock time, got {checkpoint_seconds!r} s",
+                         'e.g. "30 s"')
     model, loadspec, y0, static = build(case)
     fp = case.fingerprint()
     stepper = Stepper(model, loadspec, y0, tol=case.tolerance, h=min(1e-7, case.output_interval),
@@ -494,13 +538,12 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     samples_mem: list[dict] = []
     if out_path is not None:
         ckpt = _checkpoint_path(out_path)
+        c = None
         if resume:
-            if not ckpt.exists() or not out_path.exists():
-                raise InputError("--resume", f"no checkpoint {ckpt.name} next to {out_path.name}",
-                                 "run without --resume first")
-            c = np.load(ckpt)
-            if str(c["fingerprint"]) != fp:
-                raise InputError("--resume", "the checkpoint belongs to a different case", "resume with the same case")
+            c, why = _read_checkpoint(ckpt, out_path, fp)
+            if c is None:
+                _note(console, f"--resume: {why}; starting from the beginning")
+        if c is not None:
             stepper.y[:] = c["y"]
             stepper.t = float(c["t"])
             stepper.h = float(c["h"])
@@ -508,13 +551,18 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
             stepper.rejected = int(c["rejected"])
             # the integrator's Jacobian: the same steps as without the stop (a checkpoint of an older version
             # has none: the run then starts from a fresh Jacobian, the same trajectory to the tolerance)
-            saved = [c[f"jacobian_{i}"] if f"jacobian_{i}" in c.files else None for i in range(len(stepper._ws))]
+            saved = [c.get(f"jacobian_{i}") for i in range(len(stepper._ws))]
             if all(v is not None and v.shape == a.shape for v, a in zip(saved, stepper._ws)):
                 for v, a in zip(saved, stepper._ws):
                     a[...] = v
             start = int(c["index"])
             writer = _Writer(out_path, model, attrs, start)
+            if len(writer.ds.dimensions["time"]) < start:
+                writer.close()
+                raise InputError("--resume", f"{out_path.name} holds fewer samples than its checkpoint counts (was "
+                                 "the file replaced?)", "run without --resume to start again")
         else:
+            ckpt.unlink(missing_ok=True)  # a stale checkpoint must never meet the new file
             writer = _Writer(out_path, model, attrs, None)
     buf: list[dict] = []
     if start == 0:
@@ -535,15 +583,22 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     first = start if start > 0 else 1
     chunks = 0
     error = None
+    completed = False
     t_sim0 = stepper.t
+    last_ckpt = time.monotonic()
 
-    def flush(final=False):
-        nonlocal buf, chunks
+    def flush(final=False, checkpoint=False):
+        """Write the buffered samples; then a checkpoint after every ``checkpoint_every`` full chunks, when
+        asked (wall-clock interval) and at the end of an incomplete run.  The samples are synced before
+        the checkpoint that counts them is renamed into place."""
+        nonlocal buf, chunks, last_ckpt
         if writer is not None:
+            full = len(buf) >= case.chunk
             writer.write(buf)
-            chunks += 1
-            if final or chunks % max(case.checkpoint_every, 1) == 0:
+            chunks += full
+            if checkpoint or (final and not completed) or (full and chunks % max(case.checkpoint_every, 1) == 0):
                 _save_checkpoint(ckpt, stepper, writer.index, fp)
+                last_ckpt = time.monotonic()
         else:
             samples_mem.extend(buf)
         buf = []
@@ -567,16 +622,22 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
                 break
             if len(buf) >= case.chunk:
                 flush()
+            elif writer is not None and time.monotonic() - last_ckpt >= checkpoint_seconds:
+                flush(checkpoint=True)  # the run can be resumed from here, chunk or not
             if prog is not None:
                 el = time.perf_counter() - t_wall0
                 prog.update(task, completed=i, simt=stepper.t * 1e3,
                             rate=el / max(stepper.t - t_sim0, 1e-30))
+        else:
+            completed = True
     finally:
         flush(final=True)
         if prog is not None:
             prog.stop()
         if writer is not None:
             writer.close()
+    if completed and ckpt is not None:
+        ckpt.unlink(missing_ok=True)  # a completed run leaves no checkpoint behind
     wall = time.perf_counter() - t_wall0
     summary = {"wall_seconds": wall, "simulated_seconds": stepper.t - t_sim0, "steps": stepper.steps,
                "rejected_steps": stepper.rejected,

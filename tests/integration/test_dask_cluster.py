@@ -1,0 +1,195 @@
+"""``bearingsim map --scheduler tcp://HOST:PORT`` on a real Dask cluster, run the way a user runs it.
+
+A ``dask scheduler`` and ``dask worker`` processes are started on 127.0.0.1 (their own process groups,
+killed in the fixture's finalizer even when a test fails); the map runs through the installed
+``bearingsim`` script with the scheduler's address.  The cluster map must equal the local map exactly,
+survive a worker killed mid-map (SIGKILL: the scheduler runs its block again elsewhere), and fail in
+one line leaving no file when the cluster has no worker left.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+distributed = pytest.importorskip("distributed")
+
+GRID = ["skf-7011-cdga-hc", "--fa", "1000:5000:5", "--speed", "0:11200:5", "--chunk", "5"]
+#: every wait of these tests is bounded
+START_TIMEOUT = 40.0
+MAP_TIMEOUT = 60.0
+
+
+class _Cluster:
+    def __init__(self, folder: Path):
+        self.folder = folder
+        self.procs: list[subprocess.Popen] = []
+        self.workers: dict[str, subprocess.Popen] = {}
+        self.address = None
+
+    def _start(self, args, log):
+        p = subprocess.Popen([sys.executable, "-m", "dask", *args], stdout=subprocess.DEVNULL,
+                             stderr=open(self.folder / log, "wb"), start_new_session=True)
+        self.procs.append(p)
+        return p
+
+    def start_scheduler(self):
+        sfile = self.folder / "scheduler.json"
+        self._start(["scheduler", "--host", "127.0.0.1", "--port", "0", "--no-dashboard",
+                     "--scheduler-file", str(sfile)], "scheduler.log")
+        t0 = time.monotonic()
+        while time.monotonic() - t0 < START_TIMEOUT:
+            if sfile.exists():
+                try:
+                    self.address = json.loads(sfile.read_text())["address"]
+                    return self.address
+                except (ValueError, KeyError):  # being written
+                    pass
+            if self.procs[-1].poll() is not None:
+                break
+            time.sleep(0.05)
+        pytest.fail("the dask scheduler did not start: " + (self.folder / "scheduler.log").read_text()[-2000:])
+
+    def start_worker(self, name: str):
+        self.workers[name] = self._start(["worker", self.address, "--nworkers", "1", "--nthreads", "1",
+                                          "--no-dashboard", "--name", name], f"worker-{name}.log")
+
+    def kill(self, name: str):
+        """SIGKILL a worker (nanny and worker process: its whole process group)."""
+        p = self.workers.pop(name)
+        os.killpg(p.pid, signal.SIGKILL)
+        p.wait(timeout=10)
+
+    def close(self):
+        for p in self.procs:
+            if p.poll() is None:
+                try:
+                    os.killpg(p.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
+            try:
+                p.wait(timeout=10)
+            except subprocess.TimeoutExpired:  # pragma: no cover
+                pass
+
+
+@pytest.fixture
+def cluster(tmp_path):
+    c = _Cluster(tmp_path)
+    try:
+        c.start_scheduler()
+        yield c
+    finally:
+        c.close()
+
+
+def _client(address):
+    return distributed.Client(address, timeout="20s", set_as_default=False)
+
+
+def _wait_workers(client, names, timeout=START_TIMEOUT):
+    """{name: worker address} once every named worker is registered with the scheduler."""
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < timeout:
+        info = client.scheduler_info()["workers"]
+        by_name = {w["name"]: a for a, w in info.items()}
+        if all(n in by_name for n in names):
+            return {n: by_name[n] for n in names}
+        time.sleep(0.1)
+    pytest.fail(f"workers {names} did not register in {timeout} s")
+
+
+def _map(args, out=None):
+    cmd = ["bearingsim", "map", *GRID, *args, "--json"] + (["--out", str(out)] if out is not None else [])
+    return subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+
+
+def _finish(p, timeout=MAP_TIMEOUT):
+    try:
+        out, err = p.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        p.communicate()
+        pytest.fail(f"the map did not finish in {timeout} s")
+    return p.returncode, out.decode(), err.decode()
+
+
+def _wait_busy(client, address, proc, timeout=START_TIMEOUT):
+    """Wait until the worker at ``address`` is running a block of the map (and the map still runs)."""
+    t0 = time.monotonic()
+    while time.monotonic() - t0 < timeout:
+        if proc.poll() is not None:
+            return False
+        if client.processing().get(address):
+            return True
+        time.sleep(0.02)
+    return False
+
+
+def test_cli_map_on_a_real_cluster_equals_the_local_map_and_survives_a_killed_worker(cluster, tmp_path):
+    """Two workers; worker A is SIGKILLed while it runs a block: the scheduler reruns the block on B, the
+    map exits 0, and every variable equals the local (in-process) map bitwise."""
+    import xarray as xr
+
+    local = _map(["--workers", "1"], tmp_path / "local.nc")  # runs while the cluster starts
+    cluster.start_worker("A")
+    cluster.start_worker("B")
+    with _client(cluster.address) as client:
+        addr = _wait_workers(client, ["A", "B"])
+        p = _map(["--scheduler", cluster.address], tmp_path / "cluster.nc")
+        busy = _wait_busy(client, addr["A"], p)
+        if busy:
+            cluster.kill("A")
+        rc, out, err = _finish(p)
+        assert rc == 0, err
+        assert busy, "worker A never ran a block of the map before it finished"
+    assert json.loads(out)["converged"] == 25
+    rcl, _, errl = _finish(local)
+    assert rcl == 0, errl
+    with xr.open_dataset(tmp_path / "local.nc") as a, xr.open_dataset(tmp_path / "cluster.nc") as b:
+        assert set(a.data_vars) == set(b.data_vars)
+        for v in a.data_vars:
+            assert np.array_equal(a[v].values, b[v].values), v
+    assert sorted(p.name for p in tmp_path.glob("*.nc")) == ["cluster.nc", "local.nc"]
+    assert not list(tmp_path.glob(".*.part")), "a temporary map file was left behind"
+    # the map gets the user's file mode (umask), not mkstemp's 0600
+    umask = os.umask(0)
+    os.umask(umask)
+    assert (tmp_path / "cluster.nc").stat().st_mode & 0o777 == 0o666 & ~umask
+
+
+def test_cluster_losing_its_last_worker_fails_in_one_line_and_leaves_no_file(cluster, tmp_path):
+    cluster.start_worker("A")
+    with _client(cluster.address) as client:
+        addr = _wait_workers(client, ["A"])
+        out = tmp_path / "m.nc"
+        t0 = time.monotonic()
+        p = _map(["--scheduler", cluster.address, "--worker-timeout", "2"], out)
+        busy = _wait_busy(client, addr["A"], p)
+        if busy:
+            cluster.kill("A")
+        rc, _, err = _finish(p)
+    assert busy, "the worker never ran a block of the map"
+    assert rc == 1, err
+    lines = [ln for ln in err.strip().splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("error:") and "no worker" in lines[0], err
+    assert time.monotonic() - t0 < 30
+    assert list(tmp_path.glob("m.nc*")) == [] and list(tmp_path.glob(".m.nc*")) == []
+
+
+def test_cli_unreachable_scheduler_is_one_line_exit_2(tmp_path):
+    t0 = time.monotonic()
+    rc, _, err = _finish(_map(["--scheduler", "tcp://127.0.0.1:1"], tmp_path / "m.nc"), timeout=30)
+    assert rc == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: scheduler:"), err
+    assert time.monotonic() - t0 < 20
+    assert list(tmp_path.iterdir()) == []
