@@ -93,7 +93,8 @@ class Lubricant:
         for f in ("density_temperature_coefficient", "lss_c3", "lss_c4", "lss_floor"):
             v = getattr(self, f)
             if isinstance(v, bool) or not isinstance(v, (int, float)) or not (math.isfinite(v) and v >= 0):
-                raise InputError(f"{self.name}.{f}", f"must be finite and >= 0, got {v!r}", "")
+                raise InputError(f"{self.name}.{f}", f"must be finite and >= 0, got {v!r}",
+                                 "give a number >= 0 (SI units; in a file, with its unit)")
         if self.temperature_1 == self.temperature_2:
             raise InputError(f"{self.name}.viscosity", "the two viscosity points are at the same temperature",
                              "give viscosities at two temperatures, e.g. 40 degC and 100 degC")
@@ -106,7 +107,8 @@ class Lubricant:
             raise InputError(f"{self.name}.viscosity", "ASTM D341 (with 0.7) is valid down to 2 mm²/s",
                              "give viscosity points above 2 mm^2/s")
         if not self.min_temperature < self.max_temperature:
-            raise InputError(f"{self.name}.min_temperature", "must be below max_temperature", "")
+            raise InputError(f"{self.name}.min_temperature", "must be below max_temperature",
+                             'e.g. temperature_range = ["-20 degC", "150 degC"]')
         if self.pressure_viscosity_coefficient > 1e-7 or self.pressure_viscosity_coefficient < 1e-10:
             raise InputError(f"{self.name}.pressure_viscosity_coefficient",
                              f"{self.pressure_viscosity_coefficient!r} 1/Pa is outside 0.1–100 1/GPa",
@@ -225,7 +227,7 @@ def _lubricant_from_dict(data: dict, fname: str) -> Lubricant:
         if key in data:
             v = data[key]
             if isinstance(v, bool) or not isinstance(v, (int, float)):
-                raise InputError(f"{fname}.{key}", f"expected a number, got {v!r}", "")
+                raise InputError(f"{fname}.{key}", f"expected a number, got {v!r}", "write a bare number, e.g. 0.25")
             kw[attr] = float(v)
     rng = data.get("temperature_range")
     if rng is not None:

@@ -221,3 +221,105 @@ def test_catalogue_7011_boundary_dimensions_fit(b7011):
     assert b7011.pitch_diameter + b7011.ball_diameter < b7011.outside_diameter
     assert b7011.ball_material.youngs_modulus > b7011.ring_material.youngs_modulus  # ceramic balls
     assert any("ESTIMATE" in str(v) for v in b7011.notes.values()), "the estimate must say it is one"
+
+
+# ---- issue 11 item 10: wrong types at the public API name the argument -----------------------------
+@pytest.mark.parametrize("spec", [None, 7, 2.5, ["skf-7011-cdga-hc"], {"name": "x"}])
+def test_load_bearing_wrong_type(spec):
+    with pytest.raises(InputError) as info:
+        load_bearing(spec)
+    check(info.value, "bearing")
+
+
+def test_load_bearing_passes_a_bearing_through(b7011):
+    assert load_bearing(b7011) is b7011
+
+
+@pytest.mark.parametrize("data", [None, "ball_diameter = 1", ["a"], 3])
+def test_bearing_from_dict_wrong_type(data):
+    with pytest.raises(InputError) as info:
+        bearing_from_dict(data)
+    check(info.value, "bearing")
+
+
+@pytest.mark.parametrize("key, value, field", [
+    ("ball_diameter", None, "ball_diameter"),
+    ("ball_diameter", "10 mm", "ball_diameter"),  # the dataclass is SI floats; units are read by io
+    ("pitch_diameter", [70e-3], "pitch_diameter"),
+    ("contact_angle", True, "contact_angle"),
+    ("diametral_clearance", None, "diametral_clearance"),
+    ("bore", "55 mm", "bore"),
+    ("ball_count", 20.0, "ball_count"),
+    ("ball_count", "20", "ball_count"),
+    ("ball_count", True, "ball_count"),
+    ("ball_count", 10**12, "ball_count"),
+    ("ball_material", "silicon_nitride", "ball_material"),
+    ("ring_material", None, "ring_material"),
+    ("name", None, "name"),
+    ("kind", None, "type"),
+    ("notes", None, "notes"),
+])
+def test_ball_bearing_wrong_types(key, value, field):
+    kw = _direct()
+    kw[key] = value
+    with pytest.raises(InputError) as info:
+        BallBearing(**kw)
+    check(info.value, field)
+
+
+@pytest.mark.parametrize("kw, field", [
+    (dict(youngs_modulus="208 GPa"), "steel.youngs_modulus"),
+    (dict(poisson_ratio=None), "steel.poisson_ratio"),
+    (dict(density=[7850.0]), "steel.density"),
+    (dict(name=None), "material.name"),
+])
+def test_material_wrong_types(kw, field):
+    base = dict(name="steel", youngs_modulus=208e9, poisson_ratio=0.3, density=7850.0)
+    base.update(kw)
+    with pytest.raises(InputError) as info:
+        Material(**base)
+    check(info.value, field)
+
+
+@pytest.mark.parametrize("name", [None, 3, ["bearing_steel"]])
+def test_get_material_wrong_type(name):
+    from bearingsim.materials import get_material
+
+    with pytest.raises(InputError) as info:
+        get_material(name, "ball_material")
+    check(info.value, "ball_material")
+
+
+@pytest.mark.parametrize("spec", [None, 68, ["iso-vg-68"], {"name": "x"}])
+def test_get_lubricant_wrong_type(spec):
+    from bearingsim.lubricants import get_lubricant
+
+    with pytest.raises(InputError) as info:
+        get_lubricant(spec)
+    check(info.value, "lubricant")
+
+
+@pytest.mark.parametrize("data, field", [
+    (None, "lubricant"),
+    ([1, 2], "lubricant"),
+    ({"viscosity": [[40, "68 mm^2/s"], ["100 degC", "8.7 mm^2/s"]], "density_15C": "875 kg/m^3",
+      "pressure_viscosity_coefficient": "21 1/GPa", "thermal_conductivity": "0.13 W/(m*K)"},
+     "lubricant.viscosity[0].temperature"),  # a bare temperature in a file needs its unit
+    ({"viscosity": [["40 degC", 68], ["100 degC", "8.7 mm^2/s"]], "density_15C": "875 kg/m^3",
+      "pressure_viscosity_coefficient": "21 1/GPa", "thermal_conductivity": "0.13 W/(m*K)"},
+     "lubricant.viscosity[0].kinematic_viscosity"),
+])
+def test_lubricant_from_dict_wrong_types_and_bare_numbers(data, field):
+    from bearingsim.lubricants import lubricant_from_dict
+
+    with pytest.raises(InputError) as info:
+        lubricant_from_dict(data)
+    check(info.value, field)
+
+
+def test_lubricant_dataclass_wrong_type():
+    from bearingsim.lubricants import Lubricant
+
+    with pytest.raises(InputError) as info:
+        Lubricant("oil", 313.15, 68e-6, 373.15, 8.7e-6, 875.0, 21e-9, 0.13, density_temperature_coefficient="6e-4")
+    check(info.value, "oil.density_temperature_coefficient")

@@ -216,7 +216,8 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
     inertia = None
     if "transverse_inertia" in ring or "polar_inertia" in ring:
         if not ("transverse_inertia" in ring and "polar_inertia" in ring):
-            raise InputError("inner_ring.polar_inertia", "give both transverse_inertia and polar_inertia", "")
+            raise InputError("inner_ring.polar_inertia", "give both transverse_inertia and polar_inertia",
+                             'e.g. transverse_inertia = "0.002 kg*m^2", polar_inertia = "0.004 kg*m^2"')
         inertia = (_inertia(ring["transverse_inertia"], "inner_ring.transverse_inertia"),
                    _inertia(ring["polar_inertia"], "inner_ring.polar_inertia"))
     cage_in = data.get("cage", {})
