@@ -171,3 +171,69 @@ def test_cli_simulate_bad_case_file(bad_files, kind, tmp_path):
     assert len(out.splitlines()) == 1 and "Traceback" not in out, out
     assert str(path) in out and words in out
     assert not (tmp_path / "run.nc").exists()
+
+
+# ---- fuzz: any table of any TOML values gives a result or an InputError, nothing else ----------------
+from hypothesis import HealthCheck, given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from bearingsim.dynamics.case import _KEYS as CASE_KEYS  # noqa: E402
+from bearingsim.dynamics.case import case_from_dict  # noqa: E402
+from bearingsim.lubricants import lubricant_from_dict  # noqa: E402
+
+_WORDS = ["10 mm", "72.5 mm", "15 deg", "0 mm", "-5 mm", "1e9 mm", "5 kg", "3 N", "0.52", "1e400", "208 GPa",
+          "7850 kg/m^3", "20 kN", "abc", "", "60 degC", "10 ms", "1000 rpm", "9**9 N", "3000,5 N", "silicon_nitride",
+          "bearing_steel", "angular_contact", "deep_groove", "DB", "skf-7011-cdga-hc", "iso-vg-68", "slices", "none",
+          "outer"]
+_SCALAR = st.one_of(st.sampled_from(_WORDS), st.integers(-10**20, 10**20), st.floats(), st.booleans(),
+                    st.text(max_size=12))
+_VALUE = st.recursive(_SCALAR, lambda ch: st.one_of(st.lists(ch, max_size=3), st.dictionaries(st.sampled_from(
+    ["youngs_modulus", "poisson_ratio", "density", "name", "mass", "offset", "amplitude", "frequency", "start", "stop",
+     "ramp", "table", "fa", "mz", "bearing", "position"]), ch, max_size=3)), max_leaves=6)
+_BEARING = dict(GOOD_TABLE := {"name": "t", "type": "angular_contact", "ball_diameter": "10.319 mm", "ball_count": 21,
+                               "pitch_diameter": "72.5 mm", "inner_conformity": 0.52, "outer_conformity": 0.53,
+                               "contact_angle": "15 deg", "ball_material": "silicon_nitride",
+                               "ring_material": "bearing_steel"})
+_LUB = {"viscosity": [["40 degC", "68 mm^2/s"], ["100 degC", "8.7 mm^2/s"]], "density_15C": "875 kg/m^3",
+        "pressure_viscosity_coefficient": "21 1/GPa", "thermal_conductivity": "0.13 W/(m*K)"}
+_CASE = {"bearing": "skf-7011-cdga-hc", "speed": "1000 rpm", "duration": "1 ms", "output_interval": "0.1 ms",
+         "traction": "none"}
+_FUZZ = settings(max_examples=250, deadline=None, suppress_health_check=list(HealthCheck))
+
+
+def _only_input_error(fn, data):
+    try:
+        fn(data)
+    except InputError as exc:
+        assert "\n" not in str(exc) and exc.field
+
+
+@_FUZZ
+@given(upd=st.dictionaries(st.sampled_from(sorted(io._BEARING_KEYS) + ["rows", "arrangement", "row", "preload"]),
+                           _VALUE, max_size=4), drop=st.sets(st.sampled_from(sorted(_BEARING)), max_size=2))
+def test_fuzz_bearing_tables(upd, drop):
+    _only_input_error(io.bearing_from_dict, {k: v for k, v in _BEARING.items() if k not in drop} | upd)
+
+
+@_FUZZ
+@given(upd=st.dictionaries(st.sampled_from(sorted(_LUB) + ["lss_ratio", "lss_c4", "temperature_range", "name",
+                                                             "sources", "eyring_stress"]), _VALUE, max_size=3))
+def test_fuzz_lubricant_tables(upd):
+    _only_input_error(lubricant_from_dict, _LUB | upd)
+
+
+@_FUZZ
+@given(upd=st.dictionaries(st.sampled_from(sorted(CASE_KEYS)), _VALUE, max_size=3))
+def test_fuzz_case_tables(upd):
+    _only_input_error(case_from_dict, _CASE | upd)
+
+
+@_FUZZ
+@given(parts=st.lists(st.sampled_from(list('[]{}="., \n#abc019-:+eE') + ["a = ", "\\u", "'''", '"""']),
+                     max_size=120))
+def test_fuzz_toml_text(parts):
+    text = "".join(parts)
+    try:
+        io.parse_toml(text, "fuzz.toml", "bearing")
+    except InputError as exc:
+        assert exc.field == "bearing"

@@ -252,6 +252,9 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
     if not (isinstance(grav, (list, tuple)) and len(grav) == 3):
         raise InputError("gravity", "expected three components", 'e.g. ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]')
     gvec = [parse_quantity(g, "acceleration", f"gravity[{i}]") for i, g in enumerate(grav)]
+    if not isinstance(data.get("loads", {}), dict):
+        raise InputError("loads", f"expected a [loads] table, got {data['loads']!r}"[:160],
+                         'write [loads] with fa = "3000 N" etc. (fa, fr, fz, my, mz)')
     sys_lp = getattr(bearing, "load_point", 0.0) if hasattr(bearing, "rows_parameters") else 0.0
     load_point = 0.0
     if "load_point" in data:
