@@ -517,6 +517,17 @@ def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout
         raise
 
 
+def _close(client, quiet) -> None:
+    """Close a client the map opened (quietly and briefly: its scheduler may be gone)."""
+    try:
+        client.close(timeout=5)
+    except Exception:  # noqa: BLE001 - nothing left to save
+        pass
+    finally:
+        if quiet is not None:
+            quiet.__exit__(None, None, None)
+
+
 def _cluster_error(exc: BaseException) -> MapError | None:
     """The :class:`MapError` for a failure of the cluster itself; None for any other error."""
     name = type(exc).__name__
@@ -524,8 +535,28 @@ def _cluster_error(exc: BaseException) -> MapError | None:
         return MapError(f"a block of the map was lost with every worker that ran it ({exc}); the workers may "
                         "be running out of memory")
     if name in ("CancelledError", "FutureCancelledError", "CommClosedError") or isinstance(exc, OSError):
-        return MapError(f"lost the Dask scheduler during the map ({name}: {exc})")
+        why = "connection lost" if "connection" in str(exc).lower() else f"{name}: {str(exc)[:120]}"
+        return MapError(f"lost the Dask scheduler during the map ({why}); restart the scheduler and run the map again")
     return None
+
+
+class _QuietDistributed:
+    """Silence the client-side loggers of ``distributed`` while a map owns its client (the CLI path): a lost
+    worker or scheduler is reported in one line by the map, not by pages of reconnect tracebacks."""
+
+    def __enter__(self):
+        import logging
+
+        names = ["distributed"] + [n for n in logging.root.manager.loggerDict if n.startswith("distributed.")]
+        self.saved = [(lg, lg.level) for lg in map(logging.getLogger, names)]
+        for lg, _ in self.saved:
+            lg.setLevel(logging.CRITICAL + 1)
+        return self
+
+    def __exit__(self, *exc):
+        for lg, level in self.saved:
+            lg.setLevel(level)
+        return False
 
 
 def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.0, preload=None,
@@ -599,11 +630,12 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
     client = own_client = None
     if scheduler is not None:
         client, own_client = _connect(scheduler, scheduler_timeout)  # before any file is created
+    quiet = _QuietDistributed().__enter__() if own_client else None
     try:
         sink = _NetCDFSink(Path(out), dims, shape, axes, attrs) if out is not None else _MemorySink(dims, shape)
     except BaseException:
         if own_client:
-            client.close()
+            _close(client, quiet)
         raise
     bar = None
     try:
@@ -654,10 +686,10 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
         if isinstance(sink, _NetCDFSink):
             sink.abort()
         if own_client:
-            client.close()
+            _close(client, quiet)
         raise
     if own_client:
-        client.close()
+        _close(client, quiet)
     if isinstance(sink, _NetCDFSink):
         sink.close()
         import xarray as xr

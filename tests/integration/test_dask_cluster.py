@@ -68,6 +68,10 @@ class _Cluster:
         os.killpg(p.pid, signal.SIGKILL)
         p.wait(timeout=10)
 
+    def kill_scheduler(self):
+        os.killpg(self.procs[0].pid, signal.SIGKILL)
+        self.procs[0].wait(timeout=10)
+
     def close(self):
         for p in self.procs:
             if p.poll() is None:
@@ -182,6 +186,21 @@ def test_cluster_losing_its_last_worker_fails_in_one_line_and_leaves_no_file(clu
     lines = [ln for ln in err.strip().splitlines() if ln.strip()]
     assert len(lines) == 1 and lines[0].startswith("error:") and "no worker" in lines[0], err
     assert time.monotonic() - t0 < 30
+    assert list(tmp_path.glob("m.nc*")) == [] and list(tmp_path.glob(".m.nc*")) == []
+
+
+def test_scheduler_killed_mid_map_fails_in_one_line_and_leaves_no_file(cluster, tmp_path):
+    cluster.start_worker("A")
+    with _client(cluster.address) as client:
+        addr = _wait_workers(client, ["A"])
+        p = _map(["--scheduler", cluster.address], tmp_path / "m.nc")
+        busy = _wait_busy(client, addr["A"], p)
+        if busy:
+            cluster.kill_scheduler()
+        rc, _, err = _finish(p)
+    assert busy, "the worker never ran a block of the map"
+    lines = [ln for ln in err.strip().splitlines() if ln.strip()]
+    assert rc == 1 and len(lines) == 1 and lines[0].startswith("error: lost the Dask scheduler"), err
     assert list(tmp_path.glob("m.nc*")) == [] and list(tmp_path.glob(".m.nc*")) == []
 
 

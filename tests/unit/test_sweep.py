@@ -1,5 +1,8 @@
 """Design-space maps (sweep.py, statics/_batch.py): grid parsing, correctness, executors, safety."""
 
+import os
+import signal
+import subprocess
 import time
 
 import numpy as np
@@ -247,3 +250,97 @@ def test_map_blocks_spanning_outer_dimensions_equal_small_blocks():
     np.testing.assert_array_equal(big.status.values, small.status.values)
     k = small.stiffness.values
     np.testing.assert_allclose(big.stiffness.values, k, rtol=0, atol=1e-7 * np.abs(k).max())
+
+
+def test_map_file_takes_the_users_umask_and_a_write_error_is_one_line_leaving_nothing(tmp_path, monkeypatch):
+    """The map is created 0666 & ~umask like any file the user writes (mkstemp's 0600 used to reach the
+    final file); a full disk while writing is an InputError naming ``out``, and no file remains."""
+    import errno
+
+    old = os.umask(0o027)
+    try:
+        sweep.map_grid("skf-7011-cdga-hc", fa="100:200:2", workers=1, out=tmp_path / "m.nc").close()
+    finally:
+        os.umask(old)
+    assert (tmp_path / "m.nc").stat().st_mode & 0o777 == 0o640
+    (tmp_path / "m.nc").unlink()
+    calls = {"n": 0}
+    real = sweep._block_var
+
+    def full_disk(res, key):  # the first variable of the second block hits a full disk
+        calls["n"] += 1
+        if calls["n"] == len(sweep._VARS) + 1:
+            raise OSError(errno.ENOSPC, "No space left on device")
+        return real(res, key)
+
+    monkeypatch.setattr(sweep, "_block_var", full_disk)
+    with pytest.raises(InputError) as exc:
+        sweep.map_grid("skf-7011-cdga-hc", fa="100:200:4", chunk_points=1, workers=1, out=tmp_path / "m.nc")
+    assert exc.value.field == "out" and "No space left" in str(exc.value)
+    assert list(tmp_path.iterdir()) == []
+
+
+_SOLVE_BLOCK = sweep.solve_block
+
+
+def _fails_on_the_second_block(bearing, axes, block, control="outer"):
+    if block[0].start == 1:
+        raise RuntimeError("block failed")
+    return _SOLVE_BLOCK(bearing, axes, block, control)
+
+
+def test_a_failing_block_on_a_dask_cluster_leaves_no_file(tmp_path, monkeypatch):
+    """An error raised by a block on a worker reaches the caller as itself, and the file is removed."""
+    distributed = pytest.importorskip("distributed")
+    monkeypatch.setattr(sweep, "solve_block", _fails_on_the_second_block)
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=False, dashboard_address=None) as cl, \
+            distributed.Client(cl) as client:
+        with pytest.raises(RuntimeError, match="block failed"):
+            sweep.map_grid("skf-7011-cdga-hc", fa="100:400:4", chunk_points=1, scheduler=client,
+                           out=tmp_path / "m.nc")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_killed_map_process_leaves_no_map_and_the_next_map_clears_its_leftover(tmp_path):
+    """SIGKILL of the real ``bearingsim map`` while it writes: the final name never appears (only the hidden
+    temporary file of the dead process), and the next map to that name removes that leftover."""
+    out = tmp_path / "m.nc"
+    p = subprocess.Popen(["bearingsim", "map", "skf-7011-cdga-hc", "--fa", "1000:5000:6", "--speed", "0:11200:6",
+                          "--chunk", "1", "--workers", "1", "--json", "--out", str(out)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+    t0 = time.monotonic()
+    while not list(tmp_path.glob(".m.nc.*.part")) and p.poll() is None and time.monotonic() - t0 < 60:
+        time.sleep(0.01)
+    alive = p.poll() is None
+    os.killpg(p.pid, signal.SIGKILL)
+    p.wait(timeout=10)
+    assert alive, "the map finished before it could be killed"
+    assert not out.exists() and len(list(tmp_path.glob(".m.nc.*.part"))) == 1
+    r = subprocess.run(["bearingsim", "map", "skf-7011-cdga-hc", "--fa", "1000:2000:2", "--workers", "1", "--json",
+                        "--out", str(out)], capture_output=True, timeout=120)
+    assert r.returncode == 0, r.stderr.decode()
+    assert out.exists() and list(tmp_path.iterdir()) == [out]
+
+
+def test_cli_map_on_a_full_disk_is_one_line_exit_2_and_leaves_nothing(tmp_path):
+    """A full disk for the real CLI process: a 30 kB file-size limit (RLIMIT_FSIZE, SIGXFSZ ignored, so a
+    write past it fails with EFBIG as on a full file system).  The same map without the limit succeeds
+    (it also loads the compiled kernels, whose cache files must not meet the limit)."""
+    import resource
+
+    args = ["bearingsim", "map", "skf-7011-cdga-hc", "--fa", "1000:5000:5", "--speed", "0:11200:5", "--workers",
+            "1", "--json", "--out"]
+    ok = subprocess.run(args + [str(tmp_path / "ok.nc")], capture_output=True, timeout=120)
+    assert ok.returncode == 0, ok.stderr.decode()
+    assert (tmp_path / "ok.nc").stat().st_size > 30000
+
+    def limit():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (30000, 30000))
+
+    out = tmp_path / "sub" / "m.nc"
+    out.parent.mkdir()
+    r = subprocess.run(args + [str(out)], capture_output=True, timeout=120, preexec_fn=limit)
+    lines = r.stderr.decode().strip().splitlines()
+    assert r.returncode == 2 and len(lines) == 1 and lines[0].startswith("error: out:"), r.stderr.decode()
+    assert list(out.parent.iterdir()) == []
