@@ -434,12 +434,31 @@ def _connect(scheduler, timeout: float):
             raise InputError("scheduler", f"expected an address tcp://host:port or a distributed.Client, got "
                              f"{type(scheduler).__name__}", "e.g. --scheduler tcp://127.0.0.1:8786")
         return scheduler, False  # a Client given by the caller
+    _check_address(scheduler)  # a malformed address must not reach Client (it fails late and noisily)
     try:
         return Client(scheduler, timeout=f"{timeout}s", set_as_default=False), True
     except (OSError, TimeoutError, ValueError, TypeError) as exc:
         raise InputError("scheduler", f"cannot reach the Dask scheduler at {scheduler!r} ({type(exc).__name__}: "
                          f"{exc})", "start it (dask scheduler) or check the address, e.g. tcp://127.0.0.1:8786") \
             from None
+
+
+def _check_address(address: str) -> None:
+    """``tcp://HOST:PORT`` (or tls://, ws://, wss://, or HOST:PORT) with a port in 1..65535, else InputError."""
+    from distributed.comm.addressing import parse_address, parse_host_port
+
+    fix = "give the scheduler's address, e.g. tcp://127.0.0.1:8786"
+    try:
+        scheme, loc = parse_address(address.strip(), strict=False)
+        if scheme not in ("tcp", "tls", "ws", "wss", "ucx"):
+            raise InputError("scheduler", f"unknown protocol {scheme!r} in {address!r}", fix)
+        _, port = parse_host_port(loc)
+    except (ValueError, TypeError) as exc:
+        if isinstance(exc, InputError):
+            raise
+        raise InputError("scheduler", f"not a scheduler address: {address!r} ({exc})", fix) from None
+    if not 1 <= int(port) <= 65535:
+        raise InputError("scheduler", f"port {port} out of range in {address!r}", fix)
 
 
 def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout: float, poll: float = 1.0):
