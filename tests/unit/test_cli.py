@@ -1,16 +1,20 @@
-"""Command-line interface: JSON schema, units at the edge, one-line errors with exit status 2."""
+"""Command-line interface through the installed console script: JSON schema, units at the edge, one-line errors
+with exit status 2."""
 
 import json
 import math
+import shutil
 import subprocess
-import sys
 
 import numpy as np
 import pytest
 
+SCRIPT = shutil.which("bearingsim")
+
 
 def run(*args, check=True):
-    p = subprocess.run([sys.executable, "-m", "bearingsim", *args], capture_output=True, text=True)
+    assert SCRIPT is not None, "the console script `bearingsim` is not installed (pip install -e .)"
+    p = subprocess.run([SCRIPT, *args], capture_output=True, text=True)
     if check:
         assert p.returncode == 0, p.stderr
     return p
@@ -107,3 +111,4 @@ def test_reproduce_spindle(tmp_path):
     assert (tmp_path / "spindle_axial_stiffness.csv").stat().st_size > 0
     assert (tmp_path / "spindle_axial_stiffness_fig5.png").stat().st_size > 0
     assert "T2" in p.stdout
+
