@@ -56,7 +56,8 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
 
             every = parse_quantity(checkpoint_every, "time", "--checkpoint-every")
             if not every > 0:
-                raise InputError("--checkpoint-every", f"must be a positive time, got {checkpoint_every!r}", "e.g. '30 s'")
+                raise InputError("--checkpoint-every", f"must be a positive time, got {checkpoint_every!r}",
+                                 "e.g. '30 s'")
         announce_compilation()
         with writing("--out", out):  # a full disk while streaming: one line; the checkpoint (if any) allows --resume
             res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con,
