@@ -324,7 +324,8 @@ def order_points(loads: np.ndarray, omega: np.ndarray, bits: int = 5) -> np.ndar
 
 
 def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "outer",
-              q_start: np.ndarray | None = None, reorder: bool = False, predictor: bool = True) -> dict:
+              q_start: np.ndarray | None = None, reorder: bool = False, predictor: bool = True,
+              fallback: bool = True) -> dict:
     """Solve many operating points of one bearing (or bearing system) in one compiled loop.
 
     Parameters
@@ -338,6 +339,8 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
     predictor : start each point from the previous solution plus the tangent step K⁻¹ ΔF
     reorder : visit scattered points along a Z-order curve (:func:`order_points`); results are
         returned in the caller's order
+    fallback : points the loop does not converge are solved again by the single-point path
+        (:func:`_fallback_points`)
 
     Returns a dict of arrays (see the module docstring).
     """
@@ -366,8 +369,9 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
                         out["status"], out["iterations"], out["residual"], out["summary"], TOL_BALL, TOL_RING,
                         MAXIT_BALL, MAXIT_RING, predictor, TOL_VERIFY)
         except Exception:  # noqa: BLE001  (one bad point must not lose the call: redo it point by point)
-            out["status"][:] = -1
-        _fallback_points(bearing, rows, loads, omega, control, out)
+            out["status"][:] = -1 if fallback else 7
+        if fallback:
+            _fallback_points(bearing, rows, loads, omega, control, out)
     if perm is not None:
         for key in list(out):
             v = np.empty_like(out[key])
@@ -386,12 +390,12 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
 
 
 def _fallback_points(bearing, rows, loads, omega, control, out) -> None:
-    """Points the compiled loop did not converge (or lost to an exception, status −1) are solved again by the
-    single-point path :func:`bearingsim.statics.jones_harris.solve` (its own start and load continuation), so
+    """Points the compiled loop did not converge (any status but 0 and 8; or lost to an exception, status −1)
+    are solved again by the single-point path :func:`bearingsim.statics.jones_harris.solve` (its own start and load continuation), so
     that the batch and the single path agree on convergence; a point that raises gets status 7."""
     from .jones_harris import Loads, solve
 
-    bad = np.flatnonzero((out["status"] == 1) | (out["status"] == 2) | (out["status"] == 5) | (out["status"] < 0))
+    bad = np.flatnonzero((out["status"] != 0) & (out["status"] != 8))
     summ = np.empty(NSUMMARY)
     for i in bad:
         try:

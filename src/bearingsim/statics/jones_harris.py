@@ -314,6 +314,57 @@ def _verified(rows, loads_arr, omega, control, q, scale) -> tuple[bool, float]:
     return bool(bc) and bool(rv <= TOL_VERIFY * scale), float(rv)
 
 
+def _attempt(rows, la, omega, control, q, scale) -> list:
+    """One solve from q (a copy is taken) plus the independent check → [status, q, its, rn, lam, xb, kmat,
+    ballout]; status 0 only for a verified equilibrium (a failed check gets one restart with fresh balls from
+    the same displacement, then status 5); 4 when a ball's own balance failed."""
+    q = np.array(q, dtype=float)
+    status, its, rn, bconv, lam, xb, kmat, ballout = _solve_kernel(rows, la, omega, control, q, scale)
+    if status == 0 and bconv:
+        ok, rv = _verified(rows, la, omega, control, q, scale)
+        if not ok:
+            # the balls were carried into another branch by their warm starts: continue from the fresh state
+            status, its2, rn, bconv, lam, xb, kmat, ballout = _solve_kernel(rows, la, omega, control, q, scale)
+            its += its2
+            if status == 0 and bconv:
+                ok, rv = _verified(rows, la, omega, control, q, scale)
+                if not ok:
+                    status, rn = 5, max(rn, rv)
+    if status == 0 and not bconv:
+        status = 4
+    return [status, q, its, rn, lam, xb, kmat, ballout]
+
+
+def _alternative_starts(bearing, loads, speed, control, initial, q_first, rows, la, omega, scale):
+    """Callables giving further starts of :func:`solve` (see there), cheapest first."""
+    if initial is not None:
+        yield lambda: np.array(initial_guess(bearing, loads), dtype=float)
+    if control != "outer" and omega > 0:
+        def outer_solution():
+            r = solve(bearing, loads, speed, "outer")
+            return r.displacement if r.converged else None
+        yield outer_solution
+
+    def continuation():
+        q1 = np.array(q_first, dtype=float)
+        z = rows.shape[0], int(rows[:, kn.P_Z].max())
+        for f in (0.1, 0.25, 0.5, 0.75):
+            kn.solve_ring(rows, f * la, omega, CONTROLS[control], q1,
+                          np.full(z, 1 if control == "inner" else 0, dtype=np.int64), np.zeros(z + (2,)),
+                          np.zeros((5, 5)), np.zeros(z + (12,)), TOL_BALL, TOL_RING, MAXIT_BALL, MAXIT_RING,
+                          max(f * scale, 1.0))
+        return q1
+    yield continuation
+
+    def batch_ramp():
+        from ._batch import run_batch
+
+        ramp = np.array([0.05, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 1.0])
+        out = run_batch(bearing, ramp[:, None] * la[None, :], np.full(len(ramp), omega), control, fallback=False)
+        return out["q"][-1].copy() if out["status"][-1] == 0 else None
+    yield batch_ramp
+
+
 def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str = "outer",
           initial: np.ndarray | None = None) -> StaticResult:
     """Quasi-static equilibrium of ``bearing`` under ``loads`` at inner-ring ``speed`` [rad/s].
@@ -349,41 +400,24 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
     la = loads.as_array()
     omega = float(abs(speed))
     scale = _scale(loads, rows)
-    q_in = q.copy()
-    status, its, rn, bconv, lam, xb, kmat, ballout = _solve_kernel(rows, la, omega, control, q, scale)
-    if status in (1, 2):
-        # other starts before giving up: the default start (when the caller gave one), then a continuation
-        # in the load from a tenth of it (each step warm-started from the last), the path the batch takes
-        starts = [] if initial is None else [np.array(initial_guess(bearing, loads), dtype=float)]
-        for q1 in starts + [None]:
-            if q1 is None:
-                q1 = q_in.copy()
-                for f in (0.1, 0.25, 0.5, 0.75):
-                    kn.solve_ring(rows, f * la, omega, CONTROLS[control], q1,
-                                  np.full(lam.shape, 1 if control == "inner" else 0, dtype=np.int64),
-                                  np.zeros(xb.shape), np.zeros((5, 5)), np.zeros(ballout.shape), TOL_BALL, TOL_RING,
-                                  MAXIT_BALL, MAXIT_RING, max(f * scale, 1.0))
-                if not np.all(np.isfinite(q1)):
-                    continue
-            st1, its1, rn1, bc1, lam1, xb1, kmat1, bo1 = _solve_kernel(rows, la, omega, control, q1, scale)
-            its += its1
-            if st1 not in (1, 2):
-                status, rn, bconv, lam, xb, kmat, ballout = st1, rn1, bc1, lam1, xb1, kmat1, bo1
-                q = q1
+    state = _attempt(rows, la, omega, control, q, scale)
+    if state[0] not in (0, 8):
+        # other starts before giving up (the first answer's status is kept when none converges): the default
+        # start (when the caller gave one); for inner/auto control at speed the outer-control equilibrium (a
+        # ball switches to outer control where its inner contact opens, a kink that can stall the line
+        # search); a continuation in the load from a tenth of it; the batch loop along a load ramp (tangent
+        # predictor, coupled ring–ball Newton), so that a point the batch path converges is not refused here
+        for make in _alternative_starts(bearing, loads, speed, control, initial, q, rows, la, omega, scale):
+            q1 = make()
+            if q1 is None or not np.all(np.isfinite(q1)):
+                continue
+            st1 = _attempt(rows, la, omega, control, q1, scale)
+            if st1[0] == 0:
+                st1[2] += state[2]
+                state = st1
                 break
-    if status == 0 and bconv:
-        ok, rv = _verified(rows, la, omega, control, q, scale)
-        if not ok:
-            # the balls were carried into another branch by their warm starts: continue from the fresh state
-            st2, its2, rn2, bc2, lam, xb, kmat, ballout = _solve_kernel(rows, la, omega, control, q, scale)
-            its += its2
-            status, rn, bconv = st2, rn2, bc2
-            if status == 0 and bconv:
-                ok, rv = _verified(rows, la, omega, control, q, scale)
-            if status == 0 and bconv and not ok:
-                status, rn = 5, max(rn, rv)
-    if status == 0 and not bconv:
-        status = 4
+            state[2] += st1[2]
+    status, q, its, rn, lam, xb, kmat, ballout = state
     if status == 0 and _free_ring(ballout, rows, scale):
         status = 8
     converged = status == 0
