@@ -178,6 +178,7 @@ def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``bearingsim`` script: every error ends in one line on stderr and the exit status of
     :class:`~bearingsim.errors.ExitCode` (:func:`bearingsim.clitools.report_error`)."""
     from .clitools import finish_compilation_note, report_error
+    from .errors import ExitCode
 
     try:
         rc = app(args=argv, prog_name="bearingsim", standalone_mode=False)
@@ -189,6 +190,8 @@ def main(argv: list[str] | None = None) -> None:
         sys.exit(report_error(exc))
     finish_compilation_note()
     if isinstance(rc, int) and rc != 0:  # typer.Exit(code) comes back as a return value
+        if rc == ExitCode.INTERRUPTED:  # typer turns Ctrl-C into Exit(130)
+            typer.echo("aborted", err=True)
         sys.exit(rc)
 
 

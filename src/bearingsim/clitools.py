@@ -313,33 +313,34 @@ def apply_umask(path) -> None:
 # ---- first-run compilation note ------------------------------------------------------------------------------
 class _CompileNote:
     """numba listener: says once, on stderr, that kernels are being compiled (a cache miss: first run after an
-    install or a change of the kernels), with a count on a terminal, and how long it took at the end."""
+    install or a change of the kernels), with a count on a terminal, and how long it took at the end.  Only
+    bearingsim's kernels are counted (numba compiles some of its own helpers inside them); kernels without
+    ``cache=True`` are counted apart, since they compile on every run."""
+
+    HEAD = "compiling numerical kernels"
 
     def __init__(self):
-        self.count = 0
-        self.depth = 0
+        self.cached = 0
+        self.uncached = 0
         self.t0 = None
         self.tty = False
-        self.last = ""
 
-    def start(self, name: str) -> None:
+    def start(self, name: str, cached: bool) -> None:
         import time
 
         if self.t0 is None:
             self.t0 = time.perf_counter()
             self.tty = bool(getattr(sys.stderr, "isatty", lambda: False)())
-            msg = ("compiling numerical kernels (first run only, or after an update; typically 10–60 s, "
-                   "cached for the next runs)…")
-            self._write(msg + ("" if self.tty else "\n"))
-            self.last = msg
-        self.depth += 1
+            what = " (first run only, or after an update; typically 10–60 s)" if cached else ""
+            self._write(f"{self.HEAD}{what}…" + ("" if self.tty else "\n"))
         if self.tty:
-            self._write(f"\r\x1b[2Kcompiling numerical kernels (first run only, cached for the next runs): "
-                        f"{self.count} done, now {name}…")
+            self._write(f"\r\x1b[2K{self.HEAD}: {self.cached + self.uncached} done, now {name}…")
 
-    def end(self) -> None:
-        self.depth = max(self.depth - 1, 0)
-        self.count += 1
+    def end(self, cached: bool) -> None:
+        if cached:
+            self.cached += 1
+        else:
+            self.uncached += 1
 
     def finish(self) -> None:
         import time
@@ -347,9 +348,12 @@ class _CompileNote:
         if self.t0 is None:
             return
         dt = time.perf_counter() - self.t0
-        self._write(("\r\x1b[2K" if self.tty else "") + f"compiled {self.count} kernels in {dt:.0f} s (cached)\n")
+        n = self.cached + self.uncached
+        tail = "cached for the next runs" if not self.uncached else (
+            f"{self.uncached} of them without a disk cache, compiled on every run")
+        self._write(("\r\x1b[2K" if self.tty else "") + f"compiled {n} kernels in {dt:.0f} s ({tail})\n")
         self.t0 = None
-        self.count = 0
+        self.cached = self.uncached = 0
 
     @staticmethod
     def _write(text: str) -> None:
@@ -373,13 +377,24 @@ def announce_compilation() -> None:
 
     note = _CompileNote()
 
+    def kernel(ev):
+        """(name, cached) of a bearingsim kernel being compiled, None for numba's own helpers."""
+        disp = (ev.data or {}).get("dispatcher")
+        func = getattr(disp, "py_func", None)
+        if not str(getattr(func, "__module__", "")).startswith("bearingsim"):
+            return None
+        return func.__name__, type(getattr(disp, "_cache", None)).__name__ not in ("NullCache", "NoneType")
+
     class _Listener(event.Listener):
         def on_start(self, ev):
-            disp = (ev.data or {}).get("dispatcher")
-            note.start(getattr(getattr(disp, "py_func", None), "__name__", "kernel"))
+            k = kernel(ev)
+            if k is not None:
+                note.start(*k)
 
         def on_end(self, ev):
-            note.end()
+            k = kernel(ev)
+            if k is not None:
+                note.end(k[1])
 
     event.register("numba:compile", _Listener())
     _NOTE = note

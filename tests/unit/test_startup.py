@@ -79,9 +79,28 @@ def test_compilation_note_on_a_cache_miss_only(tmp_path):
     assert cold.returncode == 0, cold.stderr
     err = cold.stderr.splitlines()
     assert err[0].startswith("compiling numerical kernels (first run only")
-    assert err[-1].startswith("compiled 1 kernels in")
+    assert err[-1].startswith("compiled 1 kernels in") and err[-1].endswith("(cached for the next runs)")
     warm = run_py(COMPILE_SMALL, env)
     assert warm.returncode == 0 and warm.stderr == ""  # loaded from the cache: nothing to say
+
+
+def test_compilation_note_counts_uncached_kernels_apart():
+    """A kernel without cache=True compiles on every run: the note does not promise a first run only."""
+    code = ("from bearingsim.clitools import announce_compilation, finish_compilation_note\n"
+            "announce_compilation()\n"
+            "from numba import njit\n"
+            "def f(x):\n    return x + 1\n"
+            "f.__module__ = 'bearingsim.probe'\n"
+            "njit(f)(1)\n"
+            "def g(x):\n    return x - 1\n"  # not a bearingsim kernel: not counted
+            "njit(g)(1)\n"
+            "finish_compilation_note()\n")
+    p = run_py(code, {})
+    assert p.returncode == 0, p.stderr
+    lines = p.stderr.splitlines()
+    assert len(lines) == 2 and lines[0] == "compiling numerical kernels…", p.stderr
+    assert lines[1].startswith("compiled 1 kernels in ") and lines[1].endswith(
+        "(1 of them without a disk cache, compiled on every run)")
 
 
 # ---- numba cache folder fallback ---------------------------------------------------------------------------
