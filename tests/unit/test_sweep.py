@@ -344,3 +344,46 @@ def test_cli_map_on_a_full_disk_is_one_line_exit_2_and_leaves_nothing(tmp_path):
     lines = r.stderr.decode().strip().splitlines()
     assert r.returncode == 2 and len(lines) == 1 and lines[0].startswith("error: out:"), r.stderr.decode()
     assert list(out.parent.iterdir()) == []
+
+
+def _children(pid: int) -> list[tuple[int, str]]:
+    """(pid, command line) of the processes whose parent is ``pid`` (Linux /proc)."""
+    out = []
+    for d in os.listdir("/proc"):
+        if not d.isdigit():
+            continue
+        try:
+            with open(f"/proc/{d}/stat") as f:
+                ppid = int(f.read().rsplit(")", 1)[1].split()[1])
+            if ppid == pid:
+                with open(f"/proc/{d}/cmdline", "rb") as f:
+                    out.append((int(d), f.read().replace(b"\0", b" ").decode(errors="replace")))
+        except (OSError, ValueError, IndexError):
+            continue
+    return out
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self"), reason="needs /proc to find the pool's processes")
+def test_killed_local_pool_worker_is_one_line_and_leaves_no_file(tmp_path):
+    """A process of the local pool dies (SIGKILL, as the OOM killer would): the map fails in one line (exit 1)
+    instead of a BrokenProcessPool traceback, and writes nothing."""
+    out = tmp_path / "m.nc"
+    p = subprocess.Popen(["bearingsim", "map", "skf-7011-cdga-hc", "--fa", "1000:5000:6", "--speed", "0:11200:6",
+                          "--chunk", "1", "--workers", "2", "--json", "--out", str(out)],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
+    victim = None
+    t0 = time.monotonic()
+    while victim is None and p.poll() is None and time.monotonic() - t0 < 60:
+        victim = next((c for c, cmd in _children(p.pid) if "spawn_main" in cmd), None)
+        time.sleep(0.01)
+    try:
+        assert victim is not None, "no pool process appeared while the map ran"
+        os.kill(victim, signal.SIGKILL)
+        _, err = p.communicate(timeout=60)
+    finally:
+        if p.poll() is None:
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+    lines = err.decode().strip().splitlines()
+    assert p.returncode == 1 and len(lines) == 1 and "worker process of the map died" in lines[0], err.decode()
+    assert list(tmp_path.iterdir()) == []
