@@ -308,65 +308,36 @@ def pocket_point(shape, par, radius, ut, ur, ux):
     return radius * ut / rho, h, radius * ux / rho
 
 
+# accumulators of rhs (one float array, summed in the same order as the equations are written)
+A_PIN, A_POUT, A_PCAGE, A_PLAND, A_EPOT, A_ECAGE = range(6)
+NACC = 6
+
+
 @njit(cache=True)
-def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag):
-    """Time derivative of the state (equations of motion, inertial frame).
+def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
+                      diag, acc):
+    """Every ball on its two raceways, and Newton–Euler for every ball.
 
-    Inner ring (seed 001 Table 3; Lagrange with constant mass matrix):
-    m c̈ = F + m g;  I_t γ̈y = Q_γy − I_p Ω γ̇z;  I_t γ̈z = Q_γz + I_p Ω γ̇y, with the
-    generalized moments Q_γy = M·e_y and Q_γz = M·R_y e_z of the contact moment M about
-    the ring centre, plus the applied loads (moments about the bearing centre of the
-    forces applied at the load point x_L: M_y − x_L F_z, M_z + x_L F_y).
-    Balls (Newton and Euler; a sphere's inertia is isotropic so Euler's equations in
-    the inertial frame reduce to J ω̇ = M, centrifugal and gyroscopic effects arise
-    from the motion itself): m v̇ = F + m g, J ω̇ = M.
-    Cage: m v̇ = F + m g; I_p θ̈ = M·(R_y R_z e_x); I_t β̈y = M·e_y − I_p θ̇ β̇z;
-    I_t β̈z = M·R_y e_z + I_p θ̇ β̇y.
-    Elastic cage (mode synthesis, seed 001 Table 3; Craig 1981 ch. 17): the pockets move in the cage
-    frame by u_j = Σ η_k φ_k^u(j) and turn by ρ_j = Σ η_k φ_k^ρ(j) (free–free mass-normalised modes,
-    :mod:`bearingsim.cage_modes`); η̈_k + 2 ζ_k ω_k η̇_k + ω_k² η_k = Σ_j (φ_k^u(j)·F_j + φ_k^ρ(j)·(r_j × F_j))
-    with F_j the pocket force on the cage (cage frame) and r_j its point from the deformed pocket
-    centre.  The modes are orthogonal to the rigid motions, so the rigid and elastic inertias decouple
-    to first order; the cage's spin couples them only through centrifugal and Coriolis terms of
-    relative size (θ̇/ω_1)², neglected (docs/dynamics.md).
-
-    cm (n_cages × n_max_modes × (2 + 6 Z)): per mode ω_k [rad/s], 2 ζ_k ω_k [1/s], then the six
-    shape components (u_x, u_y, u_z [m], ρ_x, ρ_y, ρ_z [rad] per unit η, cage frame) of every pocket.
-
-    lubs (2 n_rows × L_SIZE): lubrication parameters of the inner (2r) and outer (2r+1)
-    contacts of row r for the sliced-ellipse kernel.
-    diag (n_balls × NDB) and gdiag (NDG) receive output quantities when diag has rows.
+    Inner raceway: the groove-curvature centre g in the ball's meridian plane of the tilted, displaced
+    ring, g = c + R (ξ_g e_x + r_ic (cos ψ e_y + sin ψ e_z)) with ψ the ball's azimuth in the ring
+    frame, moving with ċ + ω_tilt × (g − c); outer raceway (fixed): g = (x_go, r_go cos ψ, r_go sin ψ)
+    at rest.  Each contact is :func:`race_contact` (Hunt–Crossley Hertz normal force and traction);
+    the ring's reactions accumulate in (fring, mring) about c and (fout, mout).  Ball (isotropic
+    inertia: J ω̇ = M in the inertial frame, centrifugal and gyroscopic effects arise from the motion
+    itself): ṙ = v, m v̇ = F + m g, J ω̇ = M.  ``rm``, ``ax``, ``c``, ``cd``, ``wtilt``, ``wring``: the
+    inner ring's rotation R_y R_z, axis, centre, centre velocity, tilt rate and total angular velocity.
+    With diagnostics (diag has rows): loads, approaches, contact angles (inner atan2(−s u·e_ax, −u·e_r),
+    outer atan2(s u_x, u·e_r)), slide-roll ratios, power losses, the orbital speed ω_m = (r × v)_x/r²,
+    the spin ω_R relative to the orbiting frame (Jones sign: positive along +x) and pitch angle
+    β = atan2(−s ω_rad, ω_x) (Jones 1960); acc ← raceway power losses and elastic energies (2/5) K δ^2.5.
     """
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
-    omega = speed_at(t, gp)
     alpha = gp[ly.G_ALPHA]
     g0 = gp[ly.G_GX]
     g1 = gp[ly.G_GX + 1]
     g2 = gp[ly.G_GX + 2]
-    rm = np.empty((3, 3))
-    _rot_yz(y[3], y[4], rm)
-    cy = math.cos(y[3])
-    sy = math.sin(y[3])
-    c = y[0:3]
-    cd = y[5:8]
-    ax = np.empty(3)
-    ax[0] = rm[0, 0]
-    ax[1] = rm[1, 0]
-    ax[2] = rm[2, 0]
-    wtilt = np.empty(3)
-    wtilt[0] = y[9] * sy
-    wtilt[1] = y[8]
-    wtilt[2] = y[9] * cy
-    wring = np.empty(3)
-    for i in range(3):
-        wring[i] = wtilt[i] + omega * ax[i]
     zero3 = np.zeros(3)
-    ocen = np.zeros(3)
-    fring = np.zeros(3)
-    mring = np.zeros(3)
-    fout = np.zeros(3)
-    mout = np.zeros(3)
     fb = np.empty(3)
     mb = np.empty(3)
     bp = np.empty(3)
@@ -377,13 +348,6 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
     res = np.empty(8)
     tbuf = np.empty(44)
     tmp = np.empty(3)
-    loads = np.empty(5)
-    loads_at(t, loadspec, loads)
-    p_in = 0.0
-    p_out = 0.0
-    p_cage = 0.0
-    p_land = 0.0
-    epot = 0.0
     for k in range(nb):
         r = ball_row[k]
         par = rows[r]
@@ -423,14 +387,14 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
             urr = 0.0
             for i in range(3):
                 urr += res[2 + i] * (rm[i, 1] * cps + rm[i, 2] * sps)
-            diag[k, D_QI] = qi
-            diag[k, D_DI] = di
-            diag[k, D_AI] = math.atan2(-s * ua, -urr)
-            diag[k, D_SRI] = res[5]
-            diag[k, D_PI] = res[6]
-            p_in += res[6]
+            diag[k, ly.D_QI] = qi
+            diag[k, ly.D_DI] = di
+            diag[k, ly.D_AI] = math.atan2(-s * ua, -urr)
+            diag[k, ly.D_SRI] = res[5]
+            diag[k, ly.D_PI] = res[6]
+            acc[A_PIN] += res[6]
             if di > 0.0:
-                epot += 0.4 * par[kn.P_KI] * di ** 2.5
+                acc[A_EPOT] += 0.4 * par[kn.P_KI] * di ** 2.5
         # ---- outer raceway (fixed)
         rr = math.hypot(b[1], b[2])
         cps = b[1] / rr
@@ -442,31 +406,33 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         tang[0] = 0.0
         tang[1] = -sps
         tang[2] = cps
-        race_contact(b, v, w, g, zero3, worb, ocen, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha, lubs[2 * r + 1], gp,
-                     rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang, fb, mb, fout, mout, res, tbuf)
+        race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
+                     lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang, fb, mb, fout,
+                     mout, res, tbuf)
         if want:
             s = par[kn.P_SIGN]
-            diag[k, D_QO] = res[0]
-            diag[k, D_DO] = res[1]
-            diag[k, D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
-            diag[k, D_SRO] = res[5]
-            diag[k, D_PO] = res[6]
-            p_out += res[6]
+            diag[k, ly.D_QO] = res[0]
+            diag[k, ly.D_DO] = res[1]
+            diag[k, ly.D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
+            diag[k, ly.D_SRO] = res[5]
+            diag[k, ly.D_PO] = res[6]
+            acc[A_POUT] += res[6]
             if res[1] > 0.0:
-                epot += 0.4 * par[kn.P_KO] * res[1] ** 2.5
+                acc[A_EPOT] += 0.4 * par[kn.P_KO] * res[1] ** 2.5
             # orbital speed and spin relative to the orbiting frame
             r2 = b[1] * b[1] + b[2] * b[2]
             wm = (b[1] * v[2] - b[2] * v[1]) / r2
-            diag[k, D_WM] = wm
+            diag[k, ly.D_WM] = wm
             wx = w[0] - wm
             wrad = w[1] * cps + w[2] * sps
             wtan = -w[1] * sps + w[2] * cps
             mag = math.sqrt(wx * wx + wrad * wrad + wtan * wtan)
             sg = 1.0 if wx >= 0.0 else -1.0
-            diag[k, D_WR] = sg * mag
-            diag[k, D_BETA] = math.atan2(-s * wrad * sg, wx * sg)
-            diag[k, D_QC] = 0.0
-            diag[k, D_PC] = 0.0
+            diag[k, ly.D_WR] = sg * mag
+            diag[k, ly.D_BETA] = math.atan2(-s * wrad * sg, wx * sg)
+            diag[k, ly.D_QC] = 0.0
+            diag[k, ly.D_PC] = 0.0
+        # ---- the ball: ṙ = v, m v̇ = F + m g, J ω̇ = M
         mass = par[kn.P_MASS]
         jb = par[kn.P_JB]
         dy[o] = v[0]
@@ -478,333 +444,474 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         dy[o + 6] = mb[0] / jb
         dy[o + 7] = mb[1] / jb
         dy[o + 8] = mb[2] / jb
-    # ---- cages
+
+
+@njit(cache=True, inline="always")
+def cage_kinematics(y, o, cpar, rm, rcm, occ, wc):
+    """Cage frame: rm ← R_y(βy) R_z(βz), rcm ← R_c = R_y R_z R_x(θ), occ ← the pocket-plane centre
+    (C_XP + r), wc ← angular velocity θ̇ R_y R_z e_x + β̇y e_y + β̇z R_y e_z.  Returns (sin βy, cos βy)."""
+    th = y[o + ly.K_THETA]
+    by_ = y[o + ly.K_BETA_Y]
+    bz_ = y[o + ly.K_BETA_Z]
+    thd = y[o + ly.K_THETA_DOT]
+    byd = y[o + ly.K_BETA_Y_DOT]
+    bzd = y[o + ly.K_BETA_Z_DOT]
+    _rot_yz(by_, bz_, rm)
+    ct = math.cos(th)
+    st = math.sin(th)
+    # Rc = R_y R_z R_x(θ)
+    for i in range(3):
+        rcm[i, 0] = rm[i, 0]
+        rcm[i, 1] = rm[i, 1] * ct + rm[i, 2] * st
+        rcm[i, 2] = -rm[i, 1] * st + rm[i, 2] * ct
+    occ[0] = cpar[ly.C_XP] + y[o]
+    occ[1] = y[o + 1]
+    occ[2] = y[o + 2]
+    cyb = math.cos(by_)
+    syb = math.sin(by_)
+    wc[0] = bzd * syb + thd * rm[0, 0]
+    wc[1] = byd + thd * rm[1, 0]
+    wc[2] = bzd * cyb + thd * rm[2, 0]
+    return syb, cyb
+
+
+@njit(cache=True, inline="always")
+def cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, wc, fc, mc, fm, diag, want, acc, work):
+    """The ball–pocket contacts of cage ci (seed 001 §3.2, eqs. 6–7; module docstring).
+
+    Per pocket j at azimuth φ_j = ψ₀ + 2πj/Z: the ball centre in the pocket frame (elastic cage: in the
+    pocket displaced by u_j and turned by ρ_j), the nearest pocket-surface point (:func:`pocket_point`),
+    the Hunt–Crossley force Q = K_c δ^1.5 (1 + (3/2) α δ̇) along the normal and the regularised sliding
+    friction −μ Q v_t/√(|v_t|² + v_ref²).  Accumulates the ball's accelerations in dy, the cage's force
+    fc and moment mc about its centre, the modal forces fm = Σ_j φ_k^u·F_j + φ_k^ρ·(r_j × F_j) (cage
+    frame), and with ``want`` the diagnostics, power loss and elastic energy (2/5) K_c δ^2.5.
+    work: tuple of float[3] work arrays (:func:`rhs`).
+    """
+    tmp, bp, wpk, ud, rho, udd, rhod, nlc, rpk, fcl, mcl, nvec, pc, pw, half, vbp, vcp, ff, ftot = work
+    if gp[ly.G_CAGE_ON] <= 0.0:
+        return
+    nm = int(cpar[ly.C_NMODES])
+    om0 = int(cpar[ly.C_MODE0])
+    z = int(cpar[ly.C_Z])
+    b0 = int(cpar[ly.C_BALL0])
+    rp = cpar[ly.C_RP]
+    clr = cpar[ly.C_CLR]
+    kcg = cpar[ly.C_KC]
+    mu = cpar[ly.C_MU]
+    vref = gp[ly.G_VREF]
+    for j in range(z):
+        k = b0 + j
+        ob = ly.N_RING + ly.N_BALL * k
+        b = y[ob:ob + 3]
+        v = y[ob + 3:ob + 6]
+        w = y[ob + 6:ob + 9]
+        half_d = 0.5 * rows[ball_row[k], kn.P_D]
+        phi = cpar[ly.C_PSI0] + 2.0 * math.pi * j / z
+        cph = math.cos(phi)
+        sph = math.sin(phi)
+        for i in range(3):
+            tmp[i] = b[i] - occ[i]
+        for i in range(3):
+            bp[i] = rcm[0, i] * tmp[0] + rcm[1, i] * tmp[1] + rcm[2, i] * tmp[2]
+        # ball centre from the pocket centre, cage frame
+        wpk[0] = bp[0]
+        wpk[1] = bp[1] - rp * cph
+        wpk[2] = bp[2] - rp * sph
+        if nm > 0:
+            # the pocket's elastic displacement and small rotation (cage frame), and their rates
+            for i in range(3):
+                ud[i] = 0.0
+                rho[i] = 0.0
+                udd[i] = 0.0
+                rhod[i] = 0.0
+            sb = ly.CM_SHAPE0 + 6 * j
+            for kk in range(nm):
+                et = y[om0 + kk]
+                ed = y[om0 + nm + kk]
+                for i in range(3):
+                    s1 = cm[ci, kk, sb + i]
+                    s2 = cm[ci, kk, sb + 3 + i]
+                    ud[i] += et * s1
+                    rho[i] += et * s2
+                    udd[i] += ed * s1
+                    rhod[i] += ed * s2
+            # ball centre in the displaced and turned pocket frame: R(ρ)ᵀ (w − u) ≈ (w − u) − ρ × (w − u)
+            for i in range(3):
+                wpk[i] -= ud[i]
+            _cross(rho, wpk, tmp)
+            for i in range(3):
+                wpk[i] -= tmp[i]
+        # no point of a pocket of radius D/2 + clr can touch a ball this close to its centre
+        if math.sqrt(wpk[0] * wpk[0] + wpk[1] * wpk[1] + wpk[2] * wpk[2]) <= clr:
+            continue
+        # ball centre in the pocket frame (t, r, x)
+        ut = -wpk[1] * sph + wpk[2] * cph
+        ur = wpk[1] * cph + wpk[2] * sph
+        ux = wpk[0]
+        # nearest point of the pocket surface to the ball centre (closed form) and the penetration
+        qt, qr, qx = pocket_point(int(cpar[ly.C_SHAPE]), cpar[ly.C_POCKET], half_d + clr, ut, ur, ux)
+        e0 = ut - qt
+        e1 = ur - qr
+        e2 = ux - qx
+        dd = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+        best = half_d - dd
+        if not (best > 0.0 and dd > 0.0):
+            continue
+        # normal (point → ball centre) and contact point from the pocket centre, cage frame
+        nlc[0] = e2 / dd
+        nlc[1] = (e1 * cph - e0 * sph) / dd
+        nlc[2] = (e1 * sph + e0 * cph) / dd
+        rpk[0] = qx
+        rpk[1] = qr * cph - qt * sph
+        rpk[2] = qr * sph + qt * cph
+        if nm > 0:
+            # turned with the pocket; the point's elastic velocity u̇ + ρ̇ × r (cage frame) in fcl
+            _cross(rho, nlc, tmp)
+            for i in range(3):
+                nlc[i] += tmp[i]
+            _cross(rho, rpk, tmp)
+            for i in range(3):
+                rpk[i] += tmp[i]
+            _cross(rhod, rpk, fcl)
+            for i in range(3):
+                fcl[i] += udd[i]
+            pl0 = rpk[0] + ud[0]
+            pl1 = rp * cph + rpk[1] + ud[1]
+            pl2 = rp * sph + rpk[2] + ud[2]
+        else:
+            pl0 = rpk[0]
+            pl1 = rp * cph + rpk[1]
+            pl2 = rp * sph + rpk[2]
+        for i in range(3):
+            nvec[i] = rcm[i, 0] * nlc[0] + rcm[i, 1] * nlc[1] + rcm[i, 2] * nlc[2]
+            pc[i] = occ[i] + rcm[i, 0] * pl0 + rcm[i, 1] * pl1 + rcm[i, 2] * pl2
+            pw[i] = pc[i] - b[i]
+            half[i] = pc[i] - occ[i]
+        _cross(w, pw, vbp)
+        _cross(wc, half, vcp)
+        for i in range(3):
+            vbp[i] += v[i]
+            vcp[i] += vc[i]
+        if nm > 0:
+            for i in range(3):
+                vcp[i] += rcm[i, 0] * fcl[0] + rcm[i, 1] * fcl[1] + rcm[i, 2] * fcl[2]
+        ddot = -(nvec[0] * (v[0] - vcp[0]) + nvec[1] * (v[1] - vcp[1]) + nvec[2] * (v[2] - vcp[2]))
+        qn = kcg * best * math.sqrt(best) * (1.0 + 1.5 * alpha * ddot)
+        if qn <= 0.0:
+            continue
+        vn = (vbp[0] - vcp[0]) * nvec[0] + (vbp[1] - vcp[1]) * nvec[1] + (vbp[2] - vcp[2]) * nvec[2]
+        vt2 = 0.0
+        for i in range(3):
+            ff[i] = (vbp[i] - vcp[i]) - vn * nvec[i]
+            vt2 += ff[i] * ff[i]
+        cf = -mu * qn / math.sqrt(vt2 + vref * vref)
+        ploss = 0.0
+        for i in range(3):
+            ploss -= cf * ff[i] * ff[i]
+            ff[i] *= cf
+            ftot[i] = qn * nvec[i] + ff[i]
+        dy[ob + 3] += ftot[0] / rows[ball_row[k], kn.P_MASS]
+        dy[ob + 4] += ftot[1] / rows[ball_row[k], kn.P_MASS]
+        dy[ob + 5] += ftot[2] / rows[ball_row[k], kn.P_MASS]
+        _cross(pw, ff, tmp)
+        jb = rows[ball_row[k], kn.P_JB]
+        dy[ob + 6] += tmp[0] / jb
+        dy[ob + 7] += tmp[1] / jb
+        dy[ob + 8] += tmp[2] / jb
+        _cross(half, ftot, tmp)
+        for i in range(3):
+            fc[i] -= ftot[i]
+            mc[i] -= tmp[i]
+        if nm > 0:
+            # generalized modal forces of the pocket force on the cage (cage frame) and of its
+            # moment about the deformed pocket centre
+            for i in range(3):
+                fcl[i] = -(rcm[0, i] * ftot[0] + rcm[1, i] * ftot[1] + rcm[2, i] * ftot[2])
+            _cross(rpk, fcl, mcl)
+            sb = ly.CM_SHAPE0 + 6 * j
+            for kk in range(nm):
+                acm = 0.0
+                for i in range(3):
+                    acm += cm[ci, kk, sb + i] * fcl[i] + cm[ci, kk, sb + 3 + i] * mcl[i]
+                fm[kk] += acm
+        if want:
+            diag[k, ly.D_QC] = qn
+            diag[k, ly.D_PC] = ploss
+            acc[A_PCAGE] += ploss
+            acc[A_EPOT] += 0.4 * kcg * best ** 2.5
+
+
+@njit(cache=True, inline="always")
+def land_guidance(cpar, occ, vc, wc, c, ax, wring, cd, fc, mc, fring, mring, vref, want, acc, work):
+    """Cage guided by a ring land (module docstring): the radial eccentricity e of the cage centre
+    (outer land: from the bearing axis; inner land: from the inner ring's axis) beyond the land
+    clearance c_L gives Q = K_L (|e| − c_L)^1.5 at the land radius r_L along ±e/|e|, and sliding friction
+    −μ_L Q v_t/√(|v_t|² + v_ref²) against the land (at rest, or moving with the inner ring).  Accumulates
+    the cage's force fc and moment mc, for an inner land the reaction on the ring (fring, mring), the
+    land power loss and elastic energy (2/5) K_L (|e| − c_L)^2.5.  work: as :func:`cage_pockets`."""
+    guide = int(cpar[ly.C_GUIDE])
+    if guide <= 0:
+        return
+    tmp, _, _, _, _, _, _, _, _, _, _, nvec, _, pw, half, vbp, vcp, ff, ftot = work
+    if guide == 1:
+        e0 = 0.0
+        e1 = occ[1]
+        e2 = occ[2]
+    else:
+        for i in range(3):
+            tmp[i] = occ[i] - c[i]
+        pr = tmp[0] * ax[0] + tmp[1] * ax[1] + tmp[2] * ax[2]
+        e0 = tmp[0] - pr * ax[0]
+        e1 = tmp[1] - pr * ax[1]
+        e2 = tmp[2] - pr * ax[2]
+    ecc = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
+    pen = ecc - cpar[ly.C_CLAND]
+    if pen > 0.0:
+        qn = cpar[ly.C_KLAND] * pen * math.sqrt(pen)
+        nvec[0] = e0 / ecc
+        nvec[1] = e1 / ecc
+        nvec[2] = e2 / ecc
+        sgn = 1.0 if guide == 1 else -1.0
+        for i in range(3):
+            half[i] = sgn * nvec[i] * cpar[ly.C_RLAND]
+        _cross(wc, half, vcp)
+        for i in range(3):
+            vcp[i] += vc[i]
+        if guide == 2:
+            for i in range(3):
+                tmp[i] = occ[i] + half[i] - c[i]
+            _cross(wring, tmp, vbp)
+            for i in range(3):
+                vbp[i] += cd[i]
+        else:
+            for i in range(3):
+                vbp[i] = 0.0
+        vn = 0.0
+        for i in range(3):
+            vn += (vcp[i] - vbp[i]) * nvec[i]
+        vt2 = 0.0
+        for i in range(3):
+            ff[i] = (vcp[i] - vbp[i]) - vn * nvec[i]
+            vt2 += ff[i] * ff[i]
+        cf = -cpar[ly.C_MULAND] * qn / math.sqrt(vt2 + vref * vref)
+        for i in range(3):
+            acc[A_PLAND] -= cf * ff[i] * ff[i]
+            ftot[i] = -qn * nvec[i] + cf * ff[i]
+            fc[i] += ftot[i]
+        _cross(half, ftot, tmp)
+        for i in range(3):
+            mc[i] += tmp[i]
+        if guide == 2:
+            for i in range(3):
+                fring[i] -= ftot[i]
+                tmp[i] = occ[i] + half[i] - c[i]
+            _cross(tmp, ftot, pw)
+            for i in range(3):
+                mring[i] -= pw[i]
+        if want:
+            acc[A_EPOT] += 0.4 * cpar[ly.C_KLAND] * pen ** 2.5
+
+
+@njit(cache=True, inline="always")
+def cage_equations(ci, o, y, dy, cpar, cm, rm, syb, cyb, fc, mc, fm, g0, g1, g2, acc):
+    """Rigid cage: ṙ = v, m v̇ = F + m g; I_p θ̈ = M·(R_y R_z e_x); I_t β̈y = M·e_y − I_p θ̇ β̇z;
+    I_t β̈z = M·R_y e_z + I_p θ̇ β̇y.  Elastic modes (Craig 1981 ch. 17): η̈_k + 2ζ_k ω_k η̇_k + ω_k² η_k
+    = fm_k; strain energy Σ ½ ω_k² η_k² [J] into acc."""
+    thd = y[o + ly.K_THETA_DOT]
+    byd = y[o + ly.K_BETA_Y_DOT]
+    bzd = y[o + ly.K_BETA_Z_DOT]
+    mcg = cpar[ly.C_MASS]
+    ip = cpar[ly.C_IP]
+    itc = cpar[ly.C_IT]
+    dy[o] = y[o + 3]
+    dy[o + 1] = y[o + 4]
+    dy[o + 2] = y[o + 5]
+    dy[o + 3] = fc[0] / mcg + g0
+    dy[o + 4] = fc[1] / mcg + g1
+    dy[o + 5] = fc[2] / mcg + g2
+    dy[o + 6] = thd
+    dy[o + 7] = byd
+    dy[o + 8] = bzd
+    dy[o + 9] = (mc[0] * rm[0, 0] + mc[1] * rm[1, 0] + mc[2] * rm[2, 0]) / ip
+    dy[o + 10] = (mc[1] - ip * thd * bzd) / itc
+    dy[o + 11] = (mc[0] * syb + mc[2] * cyb + ip * thd * byd) / itc
+    # modal coordinates of an elastic cage
+    nm = int(cpar[ly.C_NMODES])
+    om0 = int(cpar[ly.C_MODE0])
+    for kk in range(nm):
+        et = y[om0 + kk]
+        ed = y[om0 + nm + kk]
+        wk = cm[ci, kk, ly.CM_OMEGA]
+        dy[om0 + kk] = ed
+        dy[om0 + nm + kk] = fm[kk] - cm[ci, kk, ly.CM_DAMP] * ed - wk * wk * et
+        acc[A_ECAGE] += 0.5 * wk * wk * et * et
+
+
+@njit(cache=True, inline="always")
+def ring_equations(y, dy, gp, fring, mring, loads, omega, sy, cy, g0, g1, g2):
+    """Inner ring (seed 001 Table 3; Lagrange with a constant mass matrix): m c̈ = F + F_applied + m g;
+    I_t γ̈y = Q_γy − I_p Ω γ̇z; I_t γ̈z = Q_γz + I_p Ω γ̇y with Q_γy = M·e_y + M_y − x_L F_z and
+    Q_γz = M·R_y e_z + M_z + x_L F_y (applied loads at the load point x_L).  Held fixed: ẏ = 0."""
+    xl = gp[ly.G_XL]
+    if gp[ly.G_RING_FIXED] > 0.0:
+        for i in range(10):
+            dy[i] = 0.0
+        return
+    mr = gp[ly.G_MR]
+    itr = gp[ly.G_ITR]
+    ipr = gp[ly.G_IPR]
+    dy[0] = y[5]
+    dy[1] = y[6]
+    dy[2] = y[7]
+    dy[3] = y[8]
+    dy[4] = y[9]
+    dy[5] = (fring[0] + loads[0]) / mr + g0
+    dy[6] = (fring[1] + loads[1]) / mr + g1
+    dy[7] = (fring[2] + loads[2]) / mr + g2
+    qgy = mring[1] + loads[3] - xl * loads[2]
+    qgz = mring[0] * sy + mring[2] * cy + loads[4] + xl * loads[1]
+    dy[8] = (qgy - ipr * omega * y[9]) / itr
+    dy[9] = (qgz + ipr * omega * y[8]) / itr
+
+
+@njit(cache=True, inline="always")
+def global_diagnostics(gdiag, loads, mring, ax, mout, acc, omega):
+    """gdiag ← applied loads, friction torques on both rings about their axes, power losses, shaft speed,
+    elastic energies (layout GD_* in :mod:`.layout`)."""
+    gdiag[ly.GD_FA] = loads[0]
+    gdiag[ly.GD_FRY] = loads[1]
+    gdiag[ly.GD_FRZ] = loads[2]
+    gdiag[ly.GD_MY] = loads[3]
+    gdiag[ly.GD_MZ] = loads[4]
+    gdiag[ly.GD_TQI] = mring[0] * ax[0] + mring[1] * ax[1] + mring[2] * ax[2]
+    gdiag[ly.GD_TQO] = mout[0]
+    gdiag[ly.GD_PI] = acc[A_PIN]
+    gdiag[ly.GD_PO] = acc[A_POUT]
+    gdiag[ly.GD_PC] = acc[A_PCAGE]
+    gdiag[ly.GD_PL] = acc[A_PLAND]
+    gdiag[ly.GD_W] = omega
+    gdiag[ly.GD_EPOT] = acc[A_EPOT]
+    gdiag[ly.GD_ECAGE] = acc[A_ECAGE]
+
+
+@njit(cache=True)
+def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag):
+    """Time derivative of the state (equations of motion, inertial frame).
+
+    The equations, one helper each: balls on the raceways (:func:`ball_inner_raceway`,
+    :func:`ball_outer_raceway`) and Newton–Euler for every ball (:func:`ball_equations`); per cage its
+    frame (:func:`cage_kinematics`), the ball–pocket contacts with the elastic modes
+    (:func:`cage_pockets`), land guidance (:func:`land_guidance`) and its rigid and modal equations
+    (:func:`cage_equations`); the inner ring (:func:`ring_equations`).
+
+    Inner ring (seed 001 Table 3; Lagrange with constant mass matrix):
+    m c̈ = F + m g;  I_t γ̈y = Q_γy − I_p Ω γ̇z;  I_t γ̈z = Q_γz + I_p Ω γ̇y, with the
+    generalized moments Q_γy = M·e_y and Q_γz = M·R_y e_z of the contact moment M about
+    the ring centre, plus the applied loads (moments about the bearing centre of the
+    forces applied at the load point x_L: M_y − x_L F_z, M_z + x_L F_y).
+    Balls (Newton and Euler; a sphere's inertia is isotropic so Euler's equations in
+    the inertial frame reduce to J ω̇ = M, centrifugal and gyroscopic effects arise
+    from the motion itself): m v̇ = F + m g, J ω̇ = M.
+    Cage: m v̇ = F + m g; I_p θ̈ = M·(R_y R_z e_x); I_t β̈y = M·e_y − I_p θ̇ β̇z;
+    I_t β̈z = M·R_y e_z + I_p θ̇ β̇y.
+    Elastic cage (mode synthesis, seed 001 Table 3; Craig 1981 ch. 17): the pockets move in the cage
+    frame by u_j = Σ η_k φ_k^u(j) and turn by ρ_j = Σ η_k φ_k^ρ(j) (free–free mass-normalised modes,
+    :mod:`bearingsim.cage_modes`); η̈_k + 2 ζ_k ω_k η̇_k + ω_k² η_k = Σ_j (φ_k^u(j)·F_j + φ_k^ρ(j)·(r_j × F_j))
+    with F_j the pocket force on the cage (cage frame) and r_j its point from the deformed pocket
+    centre.  The modes are orthogonal to the rigid motions, so the rigid and elastic inertias decouple
+    to first order; the cage's spin couples them only through centrifugal and Coriolis terms of
+    relative size (θ̇/ω_1)², neglected (docs/dynamics.md).
+
+    cm (n_cages × n_max_modes × (2 + 6 Z)): per mode ω_k [rad/s], 2 ζ_k ω_k [1/s], then the six
+    shape components (u_x, u_y, u_z [m], ρ_x, ρ_y, ρ_z [rad] per unit η, cage frame) of every pocket
+    (layout CM_* in :mod:`.layout`).
+
+    lubs (2 n_rows × L_SIZE): lubrication parameters of the inner (2r) and outer (2r+1)
+    contacts of row r for the sliced-ellipse kernel.
+    diag (n_balls × NDB) and gdiag (NDG) receive output quantities when diag has rows.
+    """
+    nb = ball_row.shape[0]
+    want = diag.shape[0] > 0
+    omega = speed_at(t, gp)
+    alpha = gp[ly.G_ALPHA]
+    g0 = gp[ly.G_GX]
+    g1 = gp[ly.G_GX + 1]
+    g2 = gp[ly.G_GX + 2]
+    # ---- inner ring: orientation, axis, angular velocity (tilt rates plus the spin Ω about its axis)
+    rm = np.empty((3, 3))
+    _rot_yz(y[3], y[4], rm)
+    cy = math.cos(y[3])
+    sy = math.sin(y[3])
+    c = y[0:3]
+    cd = y[5:8]
+    ax = np.empty(3)
+    ax[0] = rm[0, 0]
+    ax[1] = rm[1, 0]
+    ax[2] = rm[2, 0]
+    wtilt = np.empty(3)
+    wtilt[0] = y[9] * sy
+    wtilt[1] = y[8]
+    wtilt[2] = y[9] * cy
+    wring = np.empty(3)
+    for i in range(3):
+        wring[i] = wtilt[i] + omega * ax[i]
+    fring = np.zeros(3)
+    mring = np.zeros(3)
+    fout = np.zeros(3)
+    mout = np.zeros(3)
+    acc = np.zeros(NACC)
+    loads = np.empty(5)
+    loads_at(t, loadspec, loads)
+    # ---- balls on the raceways
+    balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
+                      diag, acc)
+    # ---- cages: pockets (with elastic modes), land guidance, equations
     oc0 = ly.N_RING + ly.N_BALL * nb
-    ncage = cp.shape[0]
+    rmc = np.empty((3, 3))
     rcm = np.empty((3, 3))
     occ = np.empty(3)
     wc = np.empty(3)
     fc = np.empty(3)
     mc = np.empty(3)
-    pc = np.empty(3)
-    nvec = np.empty(3)
-    pw = np.empty(3)
-    vbp = np.empty(3)
-    vcp = np.empty(3)
-    ff = np.empty(3)
-    ftot = np.empty(3)
-    half = np.empty(3)
+    fm = np.empty(cm.shape[1])
+    tmp = np.empty(3)
+    bp = np.empty(3)
+    wpk = np.empty(3)
     ud = np.zeros(3)
     rho = np.zeros(3)
     udd = np.zeros(3)
     rhod = np.zeros(3)
-    wpk = np.empty(3)
-    rpk = np.empty(3)
     nlc = np.empty(3)
+    rpk = np.empty(3)
     fcl = np.empty(3)
     mcl = np.empty(3)
-    fm = np.empty(cm.shape[1])
-    e_cage = 0.0
-    for ci in range(ncage):
+    nvec = np.empty(3)
+    pc = np.empty(3)
+    pw = np.empty(3)
+    half = np.empty(3)
+    vbp = np.empty(3)
+    vcp = np.empty(3)
+    ff = np.empty(3)
+    ftot = np.empty(3)
+    cwork = (tmp, bp, wpk, ud, rho, udd, rhod, nlc, rpk, fcl, mcl, nvec, pc, pw, half, vbp, vcp, ff, ftot)
+    for ci in range(cp.shape[0]):
         o = oc0 + ly.N_CAGE * ci
         cpar = cp[ci]
-        nm = int(cpar[ly.C_NMODES])
-        om0 = int(cpar[ly.C_MODE0])
-        for kk in range(nm):
+        for kk in range(int(cpar[ly.C_NMODES])):
             fm[kk] = 0.0
-        th = y[o + 6]
-        by_ = y[o + 7]
-        bz_ = y[o + 8]
-        thd = y[o + 9]
-        byd = y[o + 10]
-        bzd = y[o + 11]
-        _rot_yz(by_, bz_, rm)
-        ct = math.cos(th)
-        st = math.sin(th)
-        # Rc = R_y R_z R_x(θ)
-        for i in range(3):
-            rcm[i, 0] = rm[i, 0]
-            rcm[i, 1] = rm[i, 1] * ct + rm[i, 2] * st
-            rcm[i, 2] = -rm[i, 1] * st + rm[i, 2] * ct
-        occ[0] = cpar[ly.C_XP] + y[o]
-        occ[1] = y[o + 1]
-        occ[2] = y[o + 2]
-        vc = y[o + 3:o + 6]
-        cyb = math.cos(by_)
-        syb = math.sin(by_)
-        wc[0] = bzd * syb + thd * rm[0, 0]
-        wc[1] = byd + thd * rm[1, 0]
-        wc[2] = bzd * cyb + thd * rm[2, 0]
+        syb, cyb = cage_kinematics(y, o, cpar, rmc, rcm, occ, wc)
+        vc = y[o + ly.K_VEL:o + ly.K_VEL + 3]
         for i in range(3):
             fc[i] = 0.0
             mc[i] = 0.0
-        z = int(cpar[ly.C_Z])
-        b0 = int(cpar[ly.C_BALL0])
-        rp = cpar[ly.C_RP]
-        clr = cpar[ly.C_CLR]
-        kcg = cpar[ly.C_KC]
-        mu = cpar[ly.C_MU]
-        vref = gp[ly.G_VREF]
-        if gp[ly.G_CAGE_ON] > 0.0:
-            for j in range(z):
-                k = b0 + j
-                ob = ly.N_RING + ly.N_BALL * k
-                b = y[ob:ob + 3]
-                v = y[ob + 3:ob + 6]
-                w = y[ob + 6:ob + 9]
-                half_d = 0.5 * rows[ball_row[k], kn.P_D]
-                phi = cpar[ly.C_PSI0] + 2.0 * math.pi * j / z
-                cph = math.cos(phi)
-                sph = math.sin(phi)
-                for i in range(3):
-                    tmp[i] = b[i] - occ[i]
-                for i in range(3):
-                    bp[i] = rcm[0, i] * tmp[0] + rcm[1, i] * tmp[1] + rcm[2, i] * tmp[2]
-                # ball centre from the pocket centre, cage frame
-                wpk[0] = bp[0]
-                wpk[1] = bp[1] - rp * cph
-                wpk[2] = bp[2] - rp * sph
-                if nm > 0:
-                    # the pocket's elastic displacement and small rotation (cage frame), and their rates
-                    for i in range(3):
-                        ud[i] = 0.0
-                        rho[i] = 0.0
-                        udd[i] = 0.0
-                        rhod[i] = 0.0
-                    sb = 2 + 6 * j
-                    for kk in range(nm):
-                        et = y[om0 + kk]
-                        ed = y[om0 + nm + kk]
-                        for i in range(3):
-                            s1 = cm[ci, kk, sb + i]
-                            s2 = cm[ci, kk, sb + 3 + i]
-                            ud[i] += et * s1
-                            rho[i] += et * s2
-                            udd[i] += ed * s1
-                            rhod[i] += ed * s2
-                    # ball centre in the displaced and turned pocket frame: R(ρ)ᵀ (w − u) ≈ (w − u) − ρ × (w − u)
-                    for i in range(3):
-                        wpk[i] -= ud[i]
-                    _cross(rho, wpk, tmp)
-                    for i in range(3):
-                        wpk[i] -= tmp[i]
-                # no point of a pocket of radius D/2 + clr can touch a ball this close to its centre
-                if math.sqrt(wpk[0] * wpk[0] + wpk[1] * wpk[1] + wpk[2] * wpk[2]) <= clr:
-                    continue
-                # ball centre in the pocket frame (t, r, x)
-                ut = -wpk[1] * sph + wpk[2] * cph
-                ur = wpk[1] * cph + wpk[2] * sph
-                ux = wpk[0]
-                # nearest point of the pocket surface to the ball centre (closed form) and the penetration
-                qt, qr, qx = pocket_point(int(cpar[ly.C_SHAPE]), cpar[ly.C_POCKET], half_d + clr, ut, ur, ux)
-                e0 = ut - qt
-                e1 = ur - qr
-                e2 = ux - qx
-                dd = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
-                best = half_d - dd
-                if not (best > 0.0 and dd > 0.0):
-                    continue
-                # normal (point → ball centre) and contact point from the pocket centre, cage frame
-                nlc[0] = e2 / dd
-                nlc[1] = (e1 * cph - e0 * sph) / dd
-                nlc[2] = (e1 * sph + e0 * cph) / dd
-                rpk[0] = qx
-                rpk[1] = qr * cph - qt * sph
-                rpk[2] = qr * sph + qt * cph
-                if nm > 0:
-                    # turned with the pocket; the point's elastic velocity u̇ + ρ̇ × r (cage frame) in fcl
-                    _cross(rho, nlc, tmp)
-                    for i in range(3):
-                        nlc[i] += tmp[i]
-                    _cross(rho, rpk, tmp)
-                    for i in range(3):
-                        rpk[i] += tmp[i]
-                    _cross(rhod, rpk, fcl)
-                    for i in range(3):
-                        fcl[i] += udd[i]
-                    pl0 = rpk[0] + ud[0]
-                    pl1 = rp * cph + rpk[1] + ud[1]
-                    pl2 = rp * sph + rpk[2] + ud[2]
-                else:
-                    pl0 = rpk[0]
-                    pl1 = rp * cph + rpk[1]
-                    pl2 = rp * sph + rpk[2]
-                for i in range(3):
-                    nvec[i] = rcm[i, 0] * nlc[0] + rcm[i, 1] * nlc[1] + rcm[i, 2] * nlc[2]
-                    pc[i] = occ[i] + rcm[i, 0] * pl0 + rcm[i, 1] * pl1 + rcm[i, 2] * pl2
-                    pw[i] = pc[i] - b[i]
-                    half[i] = pc[i] - occ[i]
-                _cross(w, pw, vbp)
-                _cross(wc, half, vcp)
-                for i in range(3):
-                    vbp[i] += v[i]
-                    vcp[i] += vc[i]
-                if nm > 0:
-                    for i in range(3):
-                        vcp[i] += rcm[i, 0] * fcl[0] + rcm[i, 1] * fcl[1] + rcm[i, 2] * fcl[2]
-                ddot = -(nvec[0] * (v[0] - vcp[0]) + nvec[1] * (v[1] - vcp[1]) + nvec[2] * (v[2] - vcp[2]))
-                qn = kcg * best * math.sqrt(best) * (1.0 + 1.5 * alpha * ddot)
-                if qn <= 0.0:
-                    continue
-                vn = (vbp[0] - vcp[0]) * nvec[0] + (vbp[1] - vcp[1]) * nvec[1] + (vbp[2] - vcp[2]) * nvec[2]
-                vt2 = 0.0
-                for i in range(3):
-                    ff[i] = (vbp[i] - vcp[i]) - vn * nvec[i]
-                    vt2 += ff[i] * ff[i]
-                cf = -mu * qn / math.sqrt(vt2 + vref * vref)
-                ploss = 0.0
-                for i in range(3):
-                    ploss -= cf * ff[i] * ff[i]
-                    ff[i] *= cf
-                    ftot[i] = qn * nvec[i] + ff[i]
-                dy[ob + 3] += ftot[0] / rows[ball_row[k], kn.P_MASS]
-                dy[ob + 4] += ftot[1] / rows[ball_row[k], kn.P_MASS]
-                dy[ob + 5] += ftot[2] / rows[ball_row[k], kn.P_MASS]
-                _cross(pw, ff, tmp)
-                jb = rows[ball_row[k], kn.P_JB]
-                dy[ob + 6] += tmp[0] / jb
-                dy[ob + 7] += tmp[1] / jb
-                dy[ob + 8] += tmp[2] / jb
-                _cross(half, ftot, tmp)
-                for i in range(3):
-                    fc[i] -= ftot[i]
-                    mc[i] -= tmp[i]
-                if nm > 0:
-                    # generalized modal forces of the pocket force on the cage (cage frame) and of its
-                    # moment about the deformed pocket centre
-                    for i in range(3):
-                        fcl[i] = -(rcm[0, i] * ftot[0] + rcm[1, i] * ftot[1] + rcm[2, i] * ftot[2])
-                    _cross(rpk, fcl, mcl)
-                    sb = 2 + 6 * j
-                    for kk in range(nm):
-                        acc = 0.0
-                        for i in range(3):
-                            acc += cm[ci, kk, sb + i] * fcl[i] + cm[ci, kk, sb + 3 + i] * mcl[i]
-                        fm[kk] += acc
-                if want:
-                    diag[k, D_QC] = qn
-                    diag[k, D_PC] = ploss
-                    p_cage += ploss
-                    epot += 0.4 * kcg * best ** 2.5
-        # ---- land guidance
-        guide = int(cpar[ly.C_GUIDE])
-        if guide > 0:
-            if guide == 1:
-                e0 = 0.0
-                e1 = occ[1]
-                e2 = occ[2]
-            else:
-                for i in range(3):
-                    tmp[i] = occ[i] - c[i]
-                pr = tmp[0] * ax[0] + tmp[1] * ax[1] + tmp[2] * ax[2]
-                e0 = tmp[0] - pr * ax[0]
-                e1 = tmp[1] - pr * ax[1]
-                e2 = tmp[2] - pr * ax[2]
-            ecc = math.sqrt(e0 * e0 + e1 * e1 + e2 * e2)
-            pen = ecc - cpar[ly.C_CLAND]
-            if pen > 0.0:
-                qn = cpar[ly.C_KLAND] * pen * math.sqrt(pen)
-                nvec[0] = e0 / ecc
-                nvec[1] = e1 / ecc
-                nvec[2] = e2 / ecc
-                sgn = 1.0 if guide == 1 else -1.0
-                for i in range(3):
-                    half[i] = sgn * nvec[i] * cpar[ly.C_RLAND]
-                _cross(wc, half, vcp)
-                for i in range(3):
-                    vcp[i] += vc[i]
-                if guide == 2:
-                    for i in range(3):
-                        tmp[i] = occ[i] + half[i] - c[i]
-                    _cross(wring, tmp, vbp)
-                    for i in range(3):
-                        vbp[i] += cd[i]
-                else:
-                    for i in range(3):
-                        vbp[i] = 0.0
-                vn = 0.0
-                for i in range(3):
-                    vn += (vcp[i] - vbp[i]) * nvec[i]
-                vt2 = 0.0
-                for i in range(3):
-                    ff[i] = (vcp[i] - vbp[i]) - vn * nvec[i]
-                    vt2 += ff[i] * ff[i]
-                cf = -cpar[ly.C_MULAND] * qn / math.sqrt(vt2 + vref * vref)
-                for i in range(3):
-                    p_land -= cf * ff[i] * ff[i]
-                    ftot[i] = -qn * nvec[i] + cf * ff[i]
-                    fc[i] += ftot[i]
-                _cross(half, ftot, tmp)
-                for i in range(3):
-                    mc[i] += tmp[i]
-                if guide == 2:
-                    for i in range(3):
-                        fring[i] -= ftot[i]
-                        tmp[i] = occ[i] + half[i] - c[i]
-                    _cross(tmp, ftot, pw)
-                    for i in range(3):
-                        mring[i] -= pw[i]
-                if want:
-                    epot += 0.4 * cpar[ly.C_KLAND] * pen ** 2.5
-        mcg = cpar[ly.C_MASS]
-        ip = cpar[ly.C_IP]
-        itc = cpar[ly.C_IT]
-        dy[o] = y[o + 3]
-        dy[o + 1] = y[o + 4]
-        dy[o + 2] = y[o + 5]
-        dy[o + 3] = fc[0] / mcg + g0
-        dy[o + 4] = fc[1] / mcg + g1
-        dy[o + 5] = fc[2] / mcg + g2
-        dy[o + 6] = thd
-        dy[o + 7] = byd
-        dy[o + 8] = bzd
-        dy[o + 9] = (mc[0] * rm[0, 0] + mc[1] * rm[1, 0] + mc[2] * rm[2, 0]) / ip
-        dy[o + 10] = (mc[1] - ip * thd * bzd) / itc
-        dy[o + 11] = (mc[0] * syb + mc[2] * cyb + ip * thd * byd) / itc
-        # modal coordinates of an elastic cage
-        for kk in range(nm):
-            et = y[om0 + kk]
-            ed = y[om0 + nm + kk]
-            wk = cm[ci, kk, 0]
-            dy[om0 + kk] = ed
-            dy[om0 + nm + kk] = fm[kk] - cm[ci, kk, 1] * ed - wk * wk * et
-            e_cage += 0.5 * wk * wk * et * et
+        cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, wc, fc, mc, fm, diag, want, acc,
+                     cwork)
+        land_guidance(cpar, occ, vc, wc, c, ax, wring, cd, fc, mc, fring, mring, gp[ly.G_VREF], want, acc, cwork)
+        cage_equations(ci, o, y, dy, cpar, cm, rmc, syb, cyb, fc, mc, fm, g0, g1, g2, acc)
     # ---- inner ring
-    xl = gp[ly.G_XL]
-    if gp[ly.G_RING_FIXED] > 0.0:
-        for i in range(10):
-            dy[i] = 0.0
-    else:
-        mr = gp[ly.G_MR]
-        itr = gp[ly.G_ITR]
-        ipr = gp[ly.G_IPR]
-        dy[0] = y[5]
-        dy[1] = y[6]
-        dy[2] = y[7]
-        dy[3] = y[8]
-        dy[4] = y[9]
-        dy[5] = (fring[0] + loads[0]) / mr + g0
-        dy[6] = (fring[1] + loads[1]) / mr + g1
-        dy[7] = (fring[2] + loads[2]) / mr + g2
-        qgy = mring[1] + loads[3] - xl * loads[2]
-        qgz = mring[0] * sy + mring[2] * cy + loads[4] + xl * loads[1]
-        dy[8] = (qgy - ipr * omega * y[9]) / itr
-        dy[9] = (qgz + ipr * omega * y[8]) / itr
+    ring_equations(y, dy, gp, fring, mring, loads, omega, sy, cy, g0, g1, g2)
     if want:
-        gdiag[GD_FA] = loads[0]
-        gdiag[GD_FRY] = loads[1]
-        gdiag[GD_FRZ] = loads[2]
-        gdiag[GD_MY] = loads[3]
-        gdiag[GD_MZ] = loads[4]
-        gdiag[GD_TQI] = mring[0] * ax[0] + mring[1] * ax[1] + mring[2] * ax[2]
-        gdiag[GD_TQO] = mout[0]
-        gdiag[GD_PI] = p_in
-        gdiag[GD_PO] = p_out
-        gdiag[GD_PC] = p_cage
-        gdiag[GD_PL] = p_land
-        gdiag[GD_W] = omega
-        gdiag[GD_EPOT] = epot
-        gdiag[GD_ECAGE] = e_cage
+        global_diagnostics(gdiag, loads, mring, ax, mout, acc, omega)
 
 
 def evaluate(model, t, y, loadspec, want_diag=True):
