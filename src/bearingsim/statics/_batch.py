@@ -207,7 +207,7 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
                 smax = 0.0
                 for k in range(5):
                     v = abs(dq[k]) * (1.0 if k < 3 else 0.5 * dm)
-                    if not (v <= smax):
+                    if v > smax or v != v:
                         smax = v  # NaN-propagating max: a NaN tangent step is never taken
                 if smax < 0.2 * amax:
                     # correction on a uniform path (grid rows): when the step in (F, ω) repeats,
@@ -271,7 +271,7 @@ def solve_batch(rows, loads, omega, control, q_cold, q_out, k_out, status, iters
                         rn = max(rn, rv)
         if st == 0 and not bconv:
             st = 4
-        if st == 0 and _free_ring(rows, ballout, tol_verify * sc):
+        if (st == 0 or st == 3 or st == 6) and _free_ring(rows, ballout, tol_verify * sc):
             st = 8
         status[i] = st
         iters[i] = tot

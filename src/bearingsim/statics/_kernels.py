@@ -1003,7 +1003,7 @@ def _scaled_norm(res, dm):
     rn = 0.0
     for k in range(5):
         v = abs(res[k]) * (1.0 if k < 3 else 2.0 / dm)
-        if not (v <= rn):
+        if v > rn or v != v:
             rn = v
     return rn
 

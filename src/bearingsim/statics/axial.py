@@ -91,6 +91,16 @@ def solve_thrust(bearing, fa: float, method: str = "bracketed") -> ThrustSolutio
     ``method`` is ``"bracketed"`` (Brent, always converges) or ``"fixed_point"`` (seed eq. 4).
     K_n is evaluated at α₀ (see :attr:`BallBearing.contact_constants`).
     """
+    import numbers
+
+    if isinstance(fa, bool) or not isinstance(fa, numbers.Real):
+        from ..errors import InputTypeError
+
+        raise InputTypeError("fa", f"must be a real number, got {type(fa).__name__} {fa!r}",
+                             "pass the thrust load as a float in N (parse units at the edge)")
+    if not isinstance(method, str):
+        raise InputError("method", f"unknown method {method!r}", 'use "bracketed" or "fixed_point"')
+    fa = float(fa)
     if not (math.isfinite(fa) and fa >= 0.0):
         raise InputError("fa", f"axial load must be finite and ≥ 0, got {fa!r} N", "give a thrust load in N")
     a0 = bearing.free_contact_angle

@@ -418,7 +418,7 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
                 break
             state[2] += st1[2]
     status, q, its, rn, lam, xb, kmat, ballout = state
-    if status == 0 and _free_ring(ballout, rows, scale):
+    if status in (0, 3, 6) and _free_ring(ballout, rows, scale):
         status = 8
     converged = status == 0
     balls = ball_table(rows, ballout, xb, lam, float(speed))
