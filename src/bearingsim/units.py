@@ -109,6 +109,34 @@ _TOKEN = re.compile(r"\s*(?:(?P<name>%|[A-Za-z_µμ°Ωå][A-Za-z_µμ°Ωå0-9]
 _SUPERSCRIPTS = str.maketrans({"²": "^2", "³": "^3", "⁻": "^-", "¹": "1"})
 
 
+#: Units typed most often (catalogue files, the command line's defaults) converted without pint, whose import
+#: costs ~0.2 s of every command's start-up (issue 11 item 9): dimension -> {unit text: (factor, offset)}; the SI
+#: value is ``number * factor + offset``, the same floating-point operations pint performs for these units
+#: (tests/unit/test_startup.py::test_fast_units_equal_pint checks every entry bitwise against pint).  Anything
+#: else goes through pint.
+_FAST_UNITS: dict[str, dict[str, tuple[float, float]]] = {
+    "length": {"m": (1.0, 0.0), "mm": (1e-3, 0.0), "um": (1e-6, 0.0), "µm": (1e-6, 0.0)},
+    "angle": {"rad": (1.0, 0.0), "deg": (math.pi / 180.0, 0.0)},
+    "force": {"N": (1.0, 0.0), "kN": (1e3, 0.0)},
+    "moment": {"N*m": (1.0, 0.0)},
+    "speed": {"rpm": (2.0 * math.pi / 60.0, 0.0), "rad/s": (1.0, 0.0)},
+    "pressure": {"Pa": (1.0, 0.0), "MPa": (1e6, 0.0), "GPa": (1e9, 0.0)},
+    "time": {"s": (1.0, 0.0), "ms": (1e-3, 0.0)},
+    "temperature": {"K": (1.0, 0.0), "degC": (1.0, 273.15)},
+}
+
+
+def _fast_si(number: float, unit_text: str, dimension: str, text: str, field: str) -> float | None:
+    """SI value of ``number unit_text`` from :data:`_FAST_UNITS` (finite, checked), or None (ask pint)."""
+    entry = _FAST_UNITS.get(dimension, {}).get(unit_text)
+    if entry is None:
+        return None
+    out = number * entry[0] if entry[1] == 0.0 else number * entry[0] + entry[1]  # keeps the sign of -0.0
+    if not math.isfinite(out):
+        raise InputError(field, f"{text!r} is beyond the floating-point range in SI", "give a finite value")
+    return out
+
+
 @lru_cache(maxsize=1)
 def registry():
     """The shared pint UnitRegistry (created lazily on first use: importing pint costs ~0.3 s)."""
@@ -194,6 +222,9 @@ def parse_quantity(value, dimension: str, field: str, *, require_unit: bool | No
     unit_text = rest.strip()
     if not unit_text:
         return _bare(number, m.group(0), dimension, field, require_unit)
+    fast = _fast_si(number, unit_text, dimension, text, field)
+    if fast is not None:
+        return fast
     return _to_si(number, _parse_unit(unit_text, text, field, example), text, dimension, field)
 
 
@@ -209,6 +240,9 @@ def _bare(number: float, shown: str, dimension: str, field: str, require_unit: b
                          f'write it as a string with its unit, e.g. "{shown} {FILE_UNIT.get(dimension, si)}"')
     if default == si:
         return number
+    fast = _fast_si(number, default, dimension, f"{shown} {default}", field)
+    if fast is not None:
+        return fast
     return _to_si(number, registry().Unit(default), f"{shown} {default}", dimension, field)
 
 

@@ -56,7 +56,43 @@ def test_static_json_loads_no_io_or_plotting_libraries():
     mods, p = script_imports("static", "skf-7011-cdga-hc", "--fa", "3000", "--json")
     assert p.returncode == 0, p.stderr[-2000:]
     assert {"numpy", "numba"} <= mods  # the probe sees the imports it should
-    assert mods & {"xarray", "netCDF4", "distributed", "matplotlib", "rich", "pandas"} == set()
+    assert mods & {"xarray", "netCDF4", "distributed", "matplotlib", "rich", "pandas", "pint", "dask"} == set()
+
+
+def test_fast_units_equal_pint():
+    """The units converted without pint (units._FAST_UNITS) give bitwise pint's value, or pint's error."""
+    import math
+    import random
+
+    from bearingsim import units
+    from bearingsim.errors import InputError
+
+    rng = random.Random(11)
+    numbers = [0.0, -0.0, 1.0, -1.0, 1e-300, 5e-324, 1e300, -1e308, 1.7976931348623157e308, 11.1, 72.5, 0.52, 35.0,
+               11200.0, 273.15, -273.15, 3000.0]
+    numbers += [rng.uniform(-1e4, 1e4) for _ in range(300)] + [rng.uniform(0, 100) / 7 for _ in range(300)]
+    numbers += [float(rng.randint(0, 50_000)) for _ in range(300)] + [10.0 ** rng.uniform(-12, 12) for _ in range(300)]
+
+    def outcome(fn):
+        try:
+            return fn()
+        except InputError:
+            return "InputError"
+
+    for dimension, table in units._FAST_UNITS.items():
+        for unit in table:
+            for x in numbers:
+                text = f"{x!r} {unit}"
+                fast = outcome(lambda: units.parse_quantity(text, dimension, "t"))
+                ref = outcome(lambda: units._to_si(x, units._parse_unit(unit, text, "t", ""), text, dimension, "t"))
+                assert fast == ref and math.copysign(1, fast if fast != "InputError" else 1) == math.copysign(
+                    1, ref if ref != "InputError" else 1), (text, dimension, fast, ref)
+    # bare numbers in the command line's default units (rpm, deg, degC) take the same path
+    for dimension in ("speed", "angle", "temperature"):
+        default = units.DIMENSIONS[dimension][2]
+        for x in numbers[:40]:
+            ref = outcome(lambda: units._to_si(x, units.registry().Unit(default), f"{x!r} {default}", dimension, "t"))
+            assert outcome(lambda: units.parse_quantity(x, dimension, "t")) == ref, (x, dimension)
 
 
 # ---- first-run compilation note ----------------------------------------------------------------------------
