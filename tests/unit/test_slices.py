@@ -353,3 +353,33 @@ def test_viscoelastic_film_linear_limit_closed_form(n_slices):
     S.contact_traction(*args, _lub(model="fluid", fluid_model="physical", thermal=False, rolling_resistance=False,
                                    viscoelastic=False), n_slices, stiff)
     assert -stiff[1] / q > 0.01 and -out[1] / q < 1e-4
+
+
+def test_slice_point_offset_is_the_circle_of_the_deformed_surface():
+    """The one slice-point convention: a point at x along the major axis lies on the circle of radius
+    r_dev tangent to the plane at the centre, offset towards the ball (+normal); flat when r_dev = ±inf."""
+    for r_dev, x in ((7e-3, 1e-3), (7e-3, -2.5e-3), (-4e-3, 1.5e-3)):
+        off, root = S.slice_point_offset(x, S.surface_curvature(r_dev))
+        # the circle's centre at r_dev along +normal: (x, off) lies at distance |r_dev| from it
+        assert math.isclose(math.hypot(x, off - r_dev), abs(r_dev), rel_tol=1e-14)
+        assert math.isclose(root, math.sqrt(1 - (x / r_dev) ** 2), rel_tol=1e-14)
+        assert math.copysign(1.0, off) == math.copysign(1.0, r_dev)
+    assert S.slice_point_offset(1e-3, S.surface_curvature(math.inf)) == (0.0, 1.0)
+    assert S.surface_curvature(0.0) == 0.0
+
+
+@pytest.mark.parametrize("n_slices", [4, 8, 10])
+def test_coulomb_stand_in_uses_the_same_slices(n_slices):
+    """dynamics.forces.coulomb_slices places its slices as contact_traction does (load share and load
+    centroid of each strip): a pure spin ω about the normal with a constant μ (s₀ = v_ref = 0) gives the
+    spin moment Σ μ Q_j |x̄_j| = 3 μ Q a / 8 exactly for an even slice count (module docstring, item 1);
+    slice midpoints instead of centroids miss it by ~1/n²."""
+    from bearingsim.dynamics.forces import coulomb_slices
+
+    q, a, mu, spin = 1500.0, 1.2e-3, 0.07, 40.0
+    out = np.zeros(10)
+    coulomb_slices(q, a, math.inf, np.zeros(3), np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+                   np.array([0.0, 0.0, R_BALL]), np.zeros(3), np.array([0.0, 0.0, spin]), np.array([0.0, 0.0, -0.03]),
+                   np.zeros(3), np.zeros(3), mu, 0.0, 0.0, n_slices, out)
+    assert math.isclose(-out[5], 3 * mu * q * a / 8, rel_tol=1e-12)
+    assert abs(out[0]) < 1e-12 * mu * q and abs(out[1]) < 1e-12 * mu * q  # the slices' forces cancel

@@ -122,6 +122,27 @@ def slice_centroid(xi0, xi1):
 
 
 @njit(cache=True, error_model="numpy")
+def surface_curvature(r_dev):
+    """Curvature c = 1/r_dev [1/m] of the deformed contact surface across the ellipse (module docstring,
+    item 2: r_dev > 0 when its centre of curvature lies on the ball's side); 0 for a flat contact
+    (r_dev = ±inf) or r_dev = 0."""
+    if math.isfinite(r_dev) and r_dev != 0.0:
+        return 1.0 / r_dev
+    return 0.0
+
+
+@njit(cache=True, error_model="numpy")
+def slice_point_offset(x, curv):
+    """The slice-point convention (module docstring, item 2): the point at x [m] along the major axis
+    lies on the deformed surface, ``offset`` [m] from the tangent plane along the unit normal that points
+    from the race towards the ball, offset = c x²/(1 + √(1 − c²x²)) (the circle of curvature c, exact).
+    Returns (offset, √(1 − c²x²)); the local normal there is √(1 − c²x²) n − c x e_major."""
+    cx = curv * x
+    root = math.sqrt(max(0.0, 1.0 - cx * cx))
+    return cx * x / (1.0 + root), root
+
+
+@njit(cache=True, error_model="numpy")
 def slice_area_fraction(xi0, xi1):
     """Area of the strip divided by a b:  [ξ√(1−ξ²) + asin ξ] between ξ0 and ξ1."""
     h1 = xi1 * math.sqrt(max(0.0, 1.0 - xi1 * xi1)) + math.asin(min(1.0, max(-1.0, xi1)))
@@ -164,9 +185,7 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     wbx, wby, wbz = w_ball[0], w_ball[1], w_ball[2]
     vrx, vry, vrz = v_race[0], v_race[1], v_race[2]
     wrx, wry, wrz = w_race[0], w_race[1], w_race[2]
-    curv = 0.0
-    if math.isfinite(r_dev) and r_dev != 0.0:
-        curv = 1.0 / r_dev
+    curv = surface_curvature(r_dev)
 
     # orbital angular velocity of the ball centre about the race centre
     rbx, rby, rbz = cbx - crx, cby - cry, cbz - crz
@@ -355,9 +374,7 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
             continue
         two = 2 * j + 1 != n_slices
         xbar = a * (gfrac / frac)
-        cxb = curv * xbar
-        root = math.sqrt(max(0.0, 1.0 - cxb * cxb))
-        off = cxb * xbar / (1.0 + root)
+        off, root = slice_point_offset(xbar, curv)
         # parts common to the pair: offset along the normal
         s1x, s1y, s1z = s0x + off * bsx, s0y + off * bsy, s0z + off * bsz
         e1x, e1y, e1z = e0x + off * bex, e0y + off * bey, e0z + off * bez
@@ -840,4 +857,5 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
 
 __all__ = ["contact_traction", "contact_traction_reference", "contact_traction_checked",
            "pack_lubrication_parameters", "deformed_surface_radius", "slice_fraction", "slice_centroid",
+           "slice_point_offset", "surface_curvature",
            "L_SIZE", "MODELS", "FLUID_MODELS"]

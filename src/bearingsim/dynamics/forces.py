@@ -66,10 +66,12 @@ def _cross(a, b, out):
 def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, out):
     """Regularised Coulomb traction on slices of the contact ellipse (TEST STAND-IN, not a lubricant model).
 
-    Slice k spans η ∈ [η_k, η_{k+1}] of the major axis (length 2a); its load is the
-    integral of the Hertz pressure p₀√(1 − η²/a² − ξ²/b²) over the slice,
-    Q_k = Q (3/4)[(e₂ − e₁) − (e₂³ − e₁³)/3], e = η/a (seed 001 eq. 1).  Slice point
-    p = centre + η major − η²/(2 r_dev) normal (the deformed surface follows the groove).
+    The slices of :mod:`bearingsim.contact.slices` (seed 001 eq. 1): slice k spans ξ = x/a ∈ [ξ_k, ξ_k+1],
+    ξ_k = −1 + 2k/n, of the major axis (length 2a); its load is the Hertz pressure integrated over the
+    strip, Q_k = Q·``slice_fraction``(ξ_k, ξ_k+1), and it acts at the strip's load centroid
+    x̄_k = a·``slice_centroid``(ξ_k, ξ_k+1) on the deformed surface, p = centre + x̄_k major +
+    ``slice_point_offset``(x̄_k, 1/r_dev)·normal, with ``normal`` the unit normal from the race towards
+    the ball (the convention of :func:`bearingsim.contact.slices.contact_traction`).
     Sliding velocity v_s = (v_b + ω_b × (p − b)) − (v_r + ω_r × (p − c_r)), projected on
     the tangent plane (seed 001 eq. 3); force on the ball −μ Q_k v_s/|v_s| (eq. 2) with
     μ = μ₀ s/√(s² + s₀² + (v_ref/u)²), s = |v_s|/u the slide-roll ratio, u the mean
@@ -85,15 +87,16 @@ def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, m
         return 0.0
     srr_c = 0.0
     n0, n1, n2 = normal[0], normal[1], normal[2]
+    curv = _sl.surface_curvature(r_dev)
     for k in range(nsl):
         e1 = -1.0 + 2.0 * k / nsl
         e2 = -1.0 + 2.0 * (k + 1) / nsl
-        qk = q * 0.75 * ((e2 - e1) - (e2 ** 3 - e1 ** 3) / 3.0)
-        eta = 0.5 * (e1 + e2) * a
-        dn = eta * eta / (2.0 * r_dev)
-        p0 = centre[0] + eta * major[0] - dn * n0
-        p1 = centre[1] + eta * major[1] - dn * n1
-        p2 = centre[2] + eta * major[2] - dn * n2
+        qk = q * _sl.slice_fraction(e1, e2)
+        eta = a * _sl.slice_centroid(e1, e2)
+        dn, _ = _sl.slice_point_offset(eta, curv)
+        p0 = centre[0] + eta * major[0] + dn * n0
+        p1 = centre[1] + eta * major[1] + dn * n1
+        p2 = centre[2] + eta * major[2] + dn * n2
         rb0, rb1, rb2 = p0 - bc[0], p1 - bc[1], p2 - bc[2]
         rr0, rr1, rr2 = p0 - rc[0], p1 - rc[1], p2 - rc[2]
         # surface velocities of ball and race at the slice point
@@ -258,12 +261,13 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
     if mode == 0:
         return
     q13 = q ** (1.0 / 3.0)
+    # both traction models take the normal from the race towards the ball
+    for i in range(3):
+        t1[i] = -nrm[i]
     if mode == 1:
-        coulomb_slices(q, a_c * q13, r_dev, cen, nrm, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[ly.G_MU0],
+        coulomb_slices(q, a_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[ly.G_MU0],
                        gp[ly.G_S0], gp[ly.G_VREF], int(gp[ly.G_NSL]), out)
     else:
-        for i in range(3):
-            t1[i] = -nrm[i]
         _sl.contact_traction(q, a_c * q13, b_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, lub,
                              int(gp[ly.G_NSL]), out)
     res[6] = out[9]
