@@ -73,8 +73,8 @@ def read_text(path, field: str = "file") -> str:
     """The text of an input file, read as UTF-8 (a UTF-8 byte-order mark is allowed).
 
     Raises :class:`InputError` (naming ``field`` and the file, with the fix) for a missing or
-    unreadable file, a directory, a file over :data:`MAX_FILE_BYTES`, a binary file and text that
-    is not UTF-8 (UTF-16, Latin-1/Windows-1252).
+    unreadable file, a directory or another non-regular file (a FIFO would block), a file over
+    :data:`MAX_FILE_BYTES`, a binary file and text that is not UTF-8 (UTF-16, Latin-1/Windows-1252).
     """
     p = check_path(path, field)
     name = str(p)
@@ -82,6 +82,8 @@ def read_text(path, field: str = "file") -> str:
     try:
         if p.is_dir():
             raise InputError(field, f"{name!r} is a directory, not a file", "give the path of a TOML file in it")
+        if isinstance(p, Path) and p.exists() and not p.is_file():  # a FIFO or a device could block or never end
+            raise InputError(field, f"{name!r} is not a regular file", "give the path of a TOML file")
         if isinstance(p, Path):
             with p.open("rb") as fh:
                 data = fh.read(MAX_FILE_BYTES + 1)
@@ -123,6 +125,9 @@ def parse_toml(text: str, name: str, field: str = "file") -> dict:
     except RecursionError:
         raise InputError(field, f"{name} nests arrays or tables too deeply for a TOML parser",
                          "an input file needs only a few levels of nesting: check the file") from None
+    except ValueError as exc:  # e.g. an integer of more than 4300 digits (Python's int conversion limit)
+        raise InputError(field, f"{name} holds a value TOML cannot read ({exc})"[:300],
+                         "check the numbers in the file") from None
 
 
 def read_toml(path, field: str = "file") -> dict:

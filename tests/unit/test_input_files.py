@@ -237,3 +237,25 @@ def test_fuzz_toml_text(parts):
         io.parse_toml(text, "fuzz.toml", "bearing")
     except InputError as exc:
         assert exc.field == "bearing"
+
+
+def test_fifo_and_devices_are_refused_without_blocking(tmp_path):
+    import os
+
+    fifo = tmp_path / "pipe.toml"
+    os.mkfifo(fifo)
+    t0 = time.perf_counter()
+    for path in (fifo, "/dev/zero"):
+        with pytest.raises(InputError) as info:
+            io.load_bearing(path)
+        assert "not a regular file" in str(info.value)
+    assert time.perf_counter() - t0 < 2.0
+
+
+def test_integer_beyond_pythons_digit_limit(write_toml):
+    with pytest.raises(InputError) as info:
+        io.load_bearing(write_toml("ball_count = " + "9" * 5000 + "\n"))
+    assert info.value.field == "bearing" and "digits" in str(info.value)
+    with pytest.raises(InputError) as info:  # a huge hexadecimal integer is read, then refused as a ball count
+        io.load_bearing(write_toml(GOOD_BEARING.replace("ball_count = 21", "ball_count = 0x" + "f" * 3000)))
+    assert info.value.field == "ball_count"
