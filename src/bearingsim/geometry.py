@@ -72,6 +72,16 @@ _FLOAT_FIELDS = ("ball_diameter", "pitch_diameter", "inner_conformity", "outer_c
                  "diametral_clearance", "bore", "outside_diameter", "width", "dynamic_load_rating")
 
 
+def _real(value, name: str) -> float:
+    """A finite real number (not a bool, a string or None) as float, else InputError naming ``name``."""
+    if isinstance(value, bool | np.bool_) or not isinstance(value, int | float | np.integer | np.floating):
+        raise InputError(name, f"expected a number in SI units, got {type(value).__name__} {value!r}"[:160],
+                         "give a float (SI units)")
+    if not math.isfinite(value):
+        raise InputError(name, f"must be finite, got {value!r}", "give a finite float")
+    return float(value)
+
+
 @dataclass(frozen=True)
 class BallBearing:
     """A single-row ball bearing.
@@ -242,12 +252,15 @@ class BallBearing:
 
     def raceway_radii(self, inner: bool, contact_angle: float | None = None) -> tuple[float, float]:
         """(R_x, R_y) [m] of the inner or outer contact at ``contact_angle`` (default α₀)."""
-        a = self.free_contact_angle if contact_angle is None else contact_angle
+        a = self.free_contact_angle if contact_angle is None else _real(contact_angle, "contact_angle")
         f = self.inner_conformity if inner else self.outer_conformity
         return hertz.raceway_radii(self.ball_diameter, self.pitch_diameter, f, a, inner)
 
     def contact(self, load: float, inner: bool, contact_angle: float | None = None) -> hertz.HertzContact:
         """Exact Hertz contact of one ball on the inner or outer raceway under ``load`` [N]."""
+        load = _real(load, "load")
+        if load < 0:
+            raise InputError("load", f"must be ≥ 0 N, got {load!r}", "give the ball load in N")
         rx, ry = self.raceway_radii(inner, contact_angle)
         return hertz.point_contact_exact(load, rx, ry, self.effective_modulus)
 
@@ -269,6 +282,10 @@ class BallBearing:
         x_row [m] axial position of the row plane; sign ±1 orientation; axial_offset [m]
         preload offset of the inner groove centres; first_ball_azimuth [rad].
         """
+        x_row, axial_offset = _real(x_row, "x_row"), _real(axial_offset, "axial_offset")
+        sign, first_ball_azimuth = _real(sign, "sign"), _real(first_ball_azimuth, "first_ball_azimuth")
+        if sign not in (1.0, -1.0):
+            raise InputError("sign", f"must be +1 or -1, got {sign!r}", "the row's orientation")
         p = self._base_row.copy()
         p[kn.P_XROW] = x_row
         p[kn.P_SIGN] = sign

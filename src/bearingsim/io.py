@@ -118,6 +118,8 @@ def read_text(path, field: str = "file") -> str:
 
 def parse_toml(text: str, name: str, field: str = "file") -> dict:
     """Parse TOML text; malformed or too deeply nested TOML raises :class:`InputError`."""
+    if not isinstance(text, str):
+        raise InputError(field, f"expected TOML text (str), got {type(text).__name__}", "read the file with read_text")
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

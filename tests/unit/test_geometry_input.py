@@ -323,3 +323,27 @@ def test_lubricant_dataclass_wrong_type():
     with pytest.raises(InputError) as info:
         Lubricant("oil", 313.15, 68e-6, 373.15, 8.7e-6, 875.0, 21e-9, 0.13, density_temperature_coefficient="6e-4")
     check(info.value, "oil.density_temperature_coefficient")
+
+
+@pytest.mark.parametrize("call, field", [
+    (lambda b: b.contact("1000", True), "load"),
+    (lambda b: b.contact(None, True), "load"),
+    (lambda b: b.contact(-5.0, True), "load"),
+    (lambda b: b.contact(100.0, True, contact_angle="15 deg"), "contact_angle"),
+    (lambda b: b.raceway_radii(True, float("nan")), "contact_angle"),
+    (lambda b: b.row_parameters(x_row="0 mm"), "x_row"),
+    (lambda b: b.row_parameters(sign=0.5), "sign"),
+    (lambda b: b.row_parameters(axial_offset=[1e-6]), "axial_offset"),
+])
+def test_bearing_methods_check_their_arguments(b7011, call, field):
+    with pytest.raises(InputError) as info:
+        call(b7011)
+    check(info.value, field)
+
+
+def test_parse_toml_wrong_type():
+    from bearingsim.io import parse_toml
+
+    with pytest.raises(InputError) as info:
+        parse_toml(b"a = 1", "x.toml", "bearing")
+    check(info.value, "bearing")
