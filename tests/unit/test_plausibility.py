@@ -237,3 +237,34 @@ def test_geometry_limits_table_matches_the_code():
     assert "3 – 1000" in doc and geometry.LIMITS["ball_count"] == (3, 1000)
     assert "1.5 mm – 10 m" in doc and geometry.LIMITS["pitch_diameter"] == (1.5e-3, 10.0)
     assert "1 GPa – 1000 GPa" in doc and materials.LIMITS["youngs_modulus"] == (1e9, 1e12)
+
+
+# ---- case files: sizes that would allocate or run without end ----------------------------------------
+CASE = {"bearing": "skf-7011-cdga-hc", "speed": "1000 rpm", "duration": "1 ms", "output_interval": "0.1 ms",
+        "traction": "none"}
+
+
+@pytest.mark.parametrize("upd, field", [
+    (dict(duration="1e300 s", output_interval="1e-300 s"), "output_interval"),  # int(round(inf)) raised
+    (dict(duration="1000 s", output_interval="1 us"), "output_interval"),  # 10⁹ samples
+    (dict(chunk=10**12), "chunk"),
+    (dict(chunk=True), "chunk"),
+    (dict(n_slices=True), "n_slices"),
+    (dict(duration=0.02), "duration"),  # bare number in a case file
+    (dict(loads={"fa": 3000}), "loads.fa"),  # also inside the [loads] table (parsed by dynamics.loads)
+    (dict(gravity=[0, 0, -9.81]), "gravity[2]"),
+    (dict(inner_ring={"mass": 2}), "inner_ring.mass"),
+])
+def test_case_file_limits_and_units(upd, field):
+    from bearingsim.dynamics.case import case_from_dict
+
+    with pytest.raises(InputError) as info:
+        case_from_dict(CASE | upd)
+    assert info.value.field == field and info.value.fix
+
+
+def test_case_file_at_the_sample_limit_builds():
+    from bearingsim.dynamics.case import MAX_SAMPLES, case_from_dict
+
+    c = case_from_dict(CASE | dict(duration=f"{MAX_SAMPLES * 1e-6} s", output_interval="1 us"))
+    assert c.n_samples == MAX_SAMPLES

@@ -66,6 +66,13 @@ _KEYS = {"bearing", "lubricant", "temperature", "speed", "duration", "output_int
          "lubrication", "name", "description", "checkpoint_every", "integrator"}
 
 
+#: most output samples of one run (duration / output_interval): 10⁷ samples of a 21-ball bearing are
+#: tens of GB of netCDF; more is a unit slip ("1e300 s"), not a simulation
+MAX_SAMPLES = 10**7
+#: most samples buffered in memory before a netCDF chunk is written
+MAX_CHUNK = 100_000
+
+
 @dataclass(frozen=True)
 class Case:
     """A dynamic simulation case (all SI)."""
@@ -101,6 +108,9 @@ class Case:
             raise InputError("output_interval", f"must be positive, got {self.output_interval!r} s", 'e.g. "0.05 ms"')
         if self.output_interval > self.duration:
             raise InputError("output_interval", "is longer than the duration", "give an interval ≤ duration")
+        if self.duration / self.output_interval > MAX_SAMPLES:
+            raise InputError("output_interval", f"{self.duration:.4g} s at {self.output_interval:.4g} s per sample is "
+                             f"more than {MAX_SAMPLES:.0e} output samples", "give a longer output_interval")
         if not (0 < self.tolerance < 1e-2):
             raise InputError("tolerance", f"must lie in (0, 1e-2), got {self.tolerance!r}", "e.g. 1e-6")
         if self.traction not in ("slices", "coulomb", "none"):
@@ -108,10 +118,10 @@ class Case:
         if self.traction == "slices" and self.lubricant is None:
             raise InputError("lubricant", "the sliced-ellipse traction needs a lubricant",
                              'add lubricant = "iso-vg-68" or set traction = "none"')
-        if not (isinstance(self.n_slices, int) and 1 <= self.n_slices <= 64):
+        if isinstance(self.n_slices, bool) or not (isinstance(self.n_slices, int) and 1 <= self.n_slices <= 64):
             raise InputError("n_slices", f"must be an integer in 1..64, got {self.n_slices!r}", "e.g. 8")
-        if not (isinstance(self.chunk, int) and self.chunk >= 1):
-            raise InputError("chunk", f"must be a positive integer, got {self.chunk!r}", "e.g. 200")
+        if isinstance(self.chunk, bool) or not (isinstance(self.chunk, int) and 1 <= self.chunk <= MAX_CHUNK):
+            raise InputError("chunk", f"must be an integer in 1..{MAX_CHUNK}, got {self.chunk!r}", "e.g. 200")
         if self.contact_damping < 0:
             raise InputError("contact_damping", "must be ≥ 0", "e.g. 0.05 (s/m)")
         if self.integrator not in ("auto", "dopri5", "ros2w", "ros34w"):
