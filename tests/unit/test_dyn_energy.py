@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 from bearingsim.dynamics import forces as fo
+from bearingsim.dynamics import layout as ly
 from bearingsim.dynamics import model as md
 from bearingsim.dynamics.run import Stepper
 from bearingsim.io import load_bearing
@@ -23,17 +24,20 @@ def total_energy(m, st):
     """(total energy, kinetic energy of the rigid bodies, energy of the elastic cages' modes ½ Σ (η̇² + ω² η²)) [J]."""
     y = st.y
     gp = m.gp
-    e = 0.5 * gp[md.G_MR] * np.sum(y[5:8] ** 2) + 0.5 * gp[md.G_ITR] * np.sum(y[8:10] ** 2)
+    qd = y[ly.R_QD:ly.R_QD + 5]
+    e = 0.5 * gp[ly.G_MR] * np.sum(qd[0:3] ** 2) + 0.5 * gp[ly.G_ITR] * np.sum(qd[3:5] ** 2)
     for k in range(m.n_balls):
-        o = md.N_RING + md.N_BALL * k
+        ball = y[m.ball_slice(k)]
         par = m.rows[m.ball_row[k]]
-        e += 0.5 * par[kn.P_MASS] * np.sum(y[o + 3:o + 6] ** 2) + 0.5 * par[kn.P_JB] * np.sum(y[o + 6:o + 9] ** 2)
+        e += 0.5 * par[kn.P_MASS] * np.sum(ball[ly.B_VEL:ly.B_VEL + 3] ** 2) + \
+            0.5 * par[kn.P_JB] * np.sum(ball[ly.B_OMEGA:ly.B_OMEGA + 3] ** 2)
     emodal = 0.0
     for c in range(m.n_cages):
-        o = m.cage_offset + md.N_CAGE * c
+        cage = y[m.cage_slice(c)]
         cp = m.cp[c]
-        e += 0.5 * cp[md.C_MASS] * np.sum(y[o + 3:o + 6] ** 2) + 0.5 * cp[md.C_IP] * y[o + 9] ** 2 + \
-            0.5 * cp[md.C_IT] * np.sum(y[o + 10:o + 12] ** 2)
+        e += 0.5 * cp[ly.C_MASS] * np.sum(cage[ly.K_VEL:ly.K_VEL + 3] ** 2) + \
+            0.5 * cp[ly.C_IP] * cage[ly.K_THETA_DOT] ** 2 + \
+            0.5 * cp[ly.C_IT] * (cage[ly.K_BETA_Y_DOT] ** 2 + cage[ly.K_BETA_Z_DOT] ** 2)
         _, etad = m.mode_slices(c)
         emodal += 0.5 * np.sum(y[etad] ** 2)
     s = st.sample()
@@ -50,14 +54,14 @@ def _setup(tol, **model_kw):
     m = md.build_model(b, traction="none", damping_alpha=0.0, ring_mass=1.5, cage_mu=0.0,
                        pocket_clearance=2e-5, **model_kw)
     y = md.initial_state(m, res)
-    y[5:10] = (2e-3, 1e-3, -1.5e-3, 0.05, -0.04)
+    y[ly.R_QD:ly.R_QD + 5] = (2e-3, 1e-3, -1.5e-3, 0.05, -0.04)
     for k in range(m.n_balls):
-        o = md.N_RING + md.N_BALL * k
+        ball = y[m.ball_slice(k)]  # a view: writes go to y
         psi = m.ball_psi[k]
         vt = 0.02 * (1 if k % 2 else -1)
-        y[o + 4] += -vt * math.sin(psi)
-        y[o + 5] += vt * math.cos(psi)
-        y[o + 6:o + 9] += (3.0 * (k % 3), -2.0, 1.0)
+        ball[ly.B_VEL + 1] += -vt * math.sin(psi)
+        ball[ly.B_VEL + 2] += vt * math.cos(psi)
+        ball[ly.B_OMEGA:ly.B_OMEGA + 3] += (3.0 * (k % 3), -2.0, 1.0)
     return m, Stepper(m, fo.constant_loads(fa=fa), y, tol=tol)
 
 

@@ -1,4 +1,4 @@
-"""The dynamic engine's integrator (DOPRI5) on problems with known solutions.
+"""The dynamic engine's integrators (DOPRI5, ROS2, ROS34PW2, the workspace contract) on problems with known solutions.
 
 Order: the harmonic oscillator y'' = −ω² y (solution cos ωt) with constant steps must
 show global error ∝ h⁵ (Hairer, Nørsett & Wanner, Solving ODEs I, §II.5: DOPRI5 is of
@@ -186,6 +186,7 @@ def test_ring_rows_by_reciprocity_match_the_finite_differences():
     ball columns (integrate._ring_rows) equal the ring's finite-difference response to each ball's
     position."""
     from bearingsim.dynamics import forces as fo
+    from bearingsim.dynamics import layout as ly
     from bearingsim.dynamics import model as md
     from bearingsim.io import load_bearing
     from bearingsim.statics import _kernels as kn
@@ -199,14 +200,14 @@ def test_ring_rows_by_reciprocity_match_the_finite_differences():
     args = fo.args_of(m, loads)
     f0 = np.zeros_like(y)
     fo.rhs_args(0.0, y, f0, args)
-    blk = np.array([md.N_RING + md.N_BALL * k for k in range(m.n_balls)], dtype=np.int64)
+    blk = np.array([m.ball_slice(k).start for k in range(m.n_balls)], dtype=np.int64)
     jrr = np.zeros((ig.NR, ig.NR))
-    jbr = np.zeros((m.n_balls, md.N_BALL, ig.NR))
+    jbr = np.zeros((m.n_balls, ly.N_BALL, ig.NR))
     atol = np.full(y.shape, 1e-9)
-    ig._ring_jac(fo.rhs_args, args, 0.0, y, f0, atol, blk, md.N_BALL, jrr, jbr, np.empty_like(y), np.empty_like(y))
-    rmass = np.array([m.gp[md.G_MR]] * 3 + [m.gp[md.G_ITR]] * 2)
+    ig._ring_jac(fo.rhs_args, args, 0.0, y, f0, atol, blk, ly.N_BALL, jrr, jbr, np.empty_like(y), np.empty_like(y))
+    rmass = np.array([m.gp[ly.G_MR]] * 3 + [m.gp[ly.G_ITR]] * 2)
     bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
-    jrb = np.zeros((m.n_balls, ig.NR, md.N_BALL))
+    jrb = np.zeros((m.n_balls, ig.NR, ly.N_BALL))
     ig._ring_rows(jbr, rmass, bmass, jrb)
     worst = scale = 0.0
     for k in (0, 5, 16, 24):  # balls of both rows, in and out of the load zone
@@ -257,3 +258,35 @@ def test_coupled_ring_jacobian_lifts_the_low_speed_step_limit():
     span = np.abs(warm.y[0:5]).max()
     np.testing.assert_allclose(runs[True].y[0:5], runs[False].y[0:5], atol=1e-4 * span, rtol=0,
                                err_msg="same trajectory to the tolerance")
+
+
+def test_every_method_advances_a_workspace_like_its_kernel():
+    """The contract of integrate.base: METHODS[name].advance(ws, t_end) returns a Status, lands on t_end,
+    books the steps and proposes the next step exactly as the kernel called with the same arguments —
+    over two output intervals, so that ROS34PW2's Jacobian carried in the workspace counts too."""
+    blk = np.array([0], dtype=np.int64)
+    atol = np.full(3, 1e-7)
+    rtol = np.zeros(3)
+    for name, extra in (("dopri5", ()), ("ros2w", (blk, 3, 20)),
+                        ("ros34w", (blk, 3, 20, ig.ros34_workspace(1, 3, False)))):
+        ws = ig.Workspace(fun=stiff, args=(1e3,), y=np.array([1.0, 0.0, 1.0]), atol=atol, rtol=rtol, h=1e-3,
+                          h_min=1e-12, max_steps=10**6, blk=blk, nbk=3, jac_every=20)
+        y = ws.y.copy()
+        t, h, steps = 0.0, 1e-3, 0
+        kernel = ig.METHODS[name].integrate
+        for t_end in (0.37, 1.0):
+            assert ig.METHODS[name].advance(ws, t_end) is ig.Status.OK
+            info = np.zeros(4)
+            st, t, h = kernel(stiff, (1e3,), t, t_end, y, h, atol, rtol, 1e-12, 10**6, info, *extra)
+            steps += int(info[0])
+            assert st == ig.OK and ws.t == t == t_end and ws.h == h and ws.steps == steps
+            assert np.array_equal(ws.y, y), name
+
+
+def test_a_failing_workspace_reports_the_status_and_keeps_its_step():
+    """Status.MAX_STEPS from the step limit; t is the time reached, h the step proposed before the call."""
+    ws = ig.Workspace(fun=oscillator, args=(3.0,), y=np.array([1.0, 0.0]), atol=np.full(2, 1e-12),
+                      rtol=np.zeros(2), h=1e-3, max_steps=5)
+    st = ig.METHODS["dopri5"].advance(ws, 1.0)
+    assert st is ig.Status.MAX_STEPS and ig.STATUS_TEXT[st] == "step limit reached"
+    assert 0.0 < ws.t < 1.0 and ws.h == 1e-3 and ws.steps + ws.rejected == 5

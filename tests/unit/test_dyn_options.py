@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 
 from bearingsim.dynamics import forces as fo
+from bearingsim.dynamics import layout as ly
 from bearingsim.dynamics import model as md
 from bearingsim.dynamics.run import SimulationError, Stepper
 from bearingsim.io import load_bearing
@@ -24,10 +25,10 @@ def test_initial_state_reproduces_statics():
     """Contact loads and angles of the start equal the quasi-static solution (same Hertz law and geometry)."""
     m, y, res = _start(traction="none", speed=(6000 * math.pi / 30,) * 2 + (0.0,))
     _, diag, _ = fo.evaluate(m, 0.0, y, fo.constant_loads(fa=2000.0))
-    np.testing.assert_allclose(diag[:, fo.D_QI], res.balls["inner_load_N"], rtol=1e-9)
-    np.testing.assert_allclose(diag[:, fo.D_QO], res.balls["outer_load_N"], rtol=1e-9)
-    np.testing.assert_allclose(diag[:, fo.D_AI], res.balls["inner_contact_angle_rad"], rtol=1e-9)
-    np.testing.assert_allclose(diag[:, fo.D_WM], res.balls["orbital_speed_rad_s"], rtol=1e-12)
+    np.testing.assert_allclose(diag[:, ly.D_QI], res.balls["inner_load_N"], rtol=1e-9)
+    np.testing.assert_allclose(diag[:, ly.D_QO], res.balls["outer_load_N"], rtol=1e-9)
+    np.testing.assert_allclose(diag[:, ly.D_AI], res.balls["inner_contact_angle_rad"], rtol=1e-9)
+    np.testing.assert_allclose(diag[:, ly.D_WM], res.balls["orbital_speed_rad_s"], rtol=1e-12)
 
 
 @pytest.mark.parametrize("guidance", ["outer-land", "inner-land"])
@@ -35,16 +36,16 @@ def test_land_guided_cage_is_held_by_its_land(guidance):
     w = 6000 * math.pi / 30
     m, y, _ = _start(traction="coulomb", speed=(w, w, 0.0), guidance=guidance, land_clearance=5e-5,
                      pocket_clearance=3e-4)
-    oc = m.cage_offset
-    y[oc + 1] = 4e-5  # cage off-centre, close to its land
-    y[oc + 4] = 0.5  # moving towards it
+    cage = m.cage_slice(0)
+    y[cage.start + ly.K_POS + 1] = 4e-5  # cage off-centre, close to its land
+    y[cage.start + ly.K_VEL + 1] = 0.5  # moving towards it
     st = Stepper(m, fo.constant_loads(fa=2000.0), y, tol=1e-6)
     ecc = 0.0
     land = 0.0
     for i in range(1, 11):
         st.advance(i * 5e-5)
         s = st.sample()
-        ecc = max(ecc, float(np.hypot(*st.y[oc + 1:oc + 3])))
+        ecc = max(ecc, float(np.hypot(*st.y[cage][ly.K_POS + 1:ly.K_POS + 3])))
         land = max(land, s["power_loss_land"])
     assert land > 0, "the cage must have touched its land"
     assert ecc < 5e-5 + 2e-5, ecc
@@ -74,10 +75,10 @@ def test_initial_ball_rotation_rolls_without_slip_in_both_rows_of_a_mirrored_uni
     m = md.build_model(b, traction="coulomb", speed=(w, w, 0.0))
     y = md.initial_state(m, res, w)
     _, diag, _ = fo.evaluate(m, 0.0, y, fo.constant_loads(fr_y=2800.0))
-    loaded = diag[:, fo.D_QI] > 0
-    assert np.all(diag[loaded, fo.D_SRI] < 3e-3) and np.all(diag[loaded, fo.D_SRO] < 3e-3)
-    np.testing.assert_allclose(diag[:, fo.D_WR], res.balls["spin_speed_rad_s"], rtol=1e-9)
-    np.testing.assert_allclose(diag[:, fo.D_BETA], res.balls["pitch_angle_rad"], rtol=1e-9)
+    loaded = diag[:, ly.D_QI] > 0
+    assert np.all(diag[loaded, ly.D_SRI] < 3e-3) and np.all(diag[loaded, ly.D_SRO] < 3e-3)
+    np.testing.assert_allclose(diag[:, ly.D_WR], res.balls["spin_speed_rad_s"], rtol=1e-9)
+    np.testing.assert_allclose(diag[:, ly.D_BETA], res.balls["pitch_angle_rad"], rtol=1e-9)
 
 
 def test_slice_count_converges_for_the_hub_contacts():
@@ -100,12 +101,12 @@ def test_slice_count_converges_for_the_hub_contacts():
         y = md.initial_state(m, res, w)
         idx = []
         for k in range(m.n_balls):
-            o = md.N_RING + md.N_BALL * k
-            y[o + 6:o + 9] *= 0.99
-            idx += list(range(o + 3, o + 9))
+            o = m.ball_slice(k).start
+            y[o + ly.B_OMEGA:o + ly.B_OMEGA + 3] *= 0.99
+            idx += list(range(o + ly.B_VEL, o + ly.B_OMEGA + 3))
         dy, _, gd = fo.evaluate(m, 0.0, y, fo.constant_loads(fr_y=2800.0, m_z=300.0))
         acc[nsl] = dy[idx]
-        power[nsl] = gd[fo.GD_PI] + gd[fo.GD_PO]
+        power[nsl] = gd[ly.GD_PI] + gd[ly.GD_PO]
     err = {n: np.linalg.norm(acc[n] - acc[128]) / np.linalg.norm(acc[128]) for n in (2, 8, 32)}
     assert err[32] < err[8] < err[2], err
     assert err[32] < 0.05, err

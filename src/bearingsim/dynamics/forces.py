@@ -45,14 +45,44 @@ from numba import njit
 from ..contact import slices as _sl
 from ..statics import _kernels as kn
 from . import layout as ly
-# the load and speed kernels (re-exported: ``forces.loads_at``, ``forces.pack_loads`` ... keep working)
-from .loads import constant_loads, load_channel, loads_at, pack_loads, speed_at  # noqa: F401
 
 # diagnostics columns (re-exported: ``forces.D_QI``, ``forces.GD_PI`` ... keep working)
 from .layout import (  # noqa: E402, F401
-    D_AI, D_AO, D_BETA, D_DI, D_DO, D_PC, D_PI, D_PO, D_QC, D_QI, D_QO, D_SRI, D_SRO, D_WM, D_WR, GD_ECAGE,
-    GD_EPOT, GD_FA, GD_FRY, GD_FRZ, GD_MY, GD_MZ, GD_PC, GD_PI, GD_PL, GD_PO, GD_TQI, GD_TQO, GD_W, NDB, NDG,
+    D_AI,
+    D_AO,
+    D_BETA,
+    D_DI,
+    D_DO,
+    D_PC,
+    D_PI,
+    D_PO,
+    D_QC,
+    D_QI,
+    D_QO,
+    D_SRI,
+    D_SRO,
+    D_WM,
+    D_WR,
+    GD_ECAGE,
+    GD_EPOT,
+    GD_FA,
+    GD_FRY,
+    GD_FRZ,
+    GD_MY,
+    GD_MZ,
+    GD_PC,
+    GD_PI,
+    GD_PL,
+    GD_PO,
+    GD_TQI,
+    GD_TQO,
+    GD_W,
+    NDB,
+    NDG,
 )
+
+# the load and speed kernels (re-exported: ``forces.loads_at``, ``forces.pack_loads`` ... keep working)
+from .loads import constant_loads, load_channel, loads_at, pack_loads, speed_at  # noqa: F401
 
 
 @njit(cache=True)

@@ -28,17 +28,79 @@ from __future__ import annotations
 from . import dopri5, ros2, ros34pw2
 from .base import Workspace, ros34_workspace
 from .common import MAX_STEPS, NOT_FINITE, OK, STATUS_TEXT, STEP_TOO_SMALL, Status, clip_step, error_norm
-from .dopri5 import (A21, A31, A32, A41, A42, A43, A51, A52, A53, A54, A61, A62, A63, A64, A65, B1, B3, B4,  # noqa: F401
-                     B5, B6, C2, C3, C4, C5, E1, E3, E4, E5, E6, E7, fixed_steps)
+from .dopri5 import (  # noqa: F401
+    A21,
+    A31,
+    A32,
+    A41,
+    A42,
+    A43,
+    A51,
+    A52,
+    A53,
+    A54,
+    A61,
+    A62,
+    A63,
+    A64,
+    A65,
+    B1,
+    B3,
+    B4,
+    B5,
+    B6,
+    C2,
+    C3,
+    C4,
+    C5,
+    E1,
+    E3,
+    E4,
+    E5,
+    E6,
+    E7,
+    fixed_steps,
+)
 from .dopri5 import integrate as advance  # the former name of the DOPRI5 kernel
 from .jacobian import block_jac, ring_jac, ring_rows
-from .linalg import (NR, apply_w, coupled_apply_w, coupled_jac_vec, coupled_w, invert_small, j_times, jac_vec,
-                     no_coupling, w_inverse, w_solve)
+from .linalg import (
+    NR,
+    apply_w,
+    coupled_apply_w,
+    coupled_jac_vec,
+    coupled_w,
+    invert_small,
+    j_times,
+    jac_vec,
+    no_coupling,
+    w_inverse,
+    w_solve,
+)
 from .ros2 import ROS2_GAMMA
 from .ros2 import integrate as advance_ros2
-from .ros34pw2 import (R34_A21, R34_A31, R34_A32, R34_A41, R34_A42, R34_A43, R34_ALPHA2, R34_ALPHA3,  # noqa: F401
-                       R34_ALPHA4, R34_C21, R34_C31, R34_C32, R34_C41, R34_C42, R34_C43, R34_E, R34_G, R34_GROW,
-                       R34_KI, R34_KP, R34_M)
+from .ros34pw2 import (  # noqa: F401
+    R34_A21,
+    R34_A31,
+    R34_A32,
+    R34_A41,
+    R34_A42,
+    R34_A43,
+    R34_ALPHA2,
+    R34_ALPHA3,
+    R34_ALPHA4,
+    R34_C21,
+    R34_C31,
+    R34_C32,
+    R34_C41,
+    R34_C42,
+    R34_C43,
+    R34_E,
+    R34_G,
+    R34_GROW,
+    R34_KI,
+    R34_KP,
+    R34_M,
+)
 from .ros34pw2 import fixed_steps as fixed_steps_ros34
 from .ros34pw2 import integrate as advance_ros34
 

@@ -20,8 +20,17 @@ import numpy as np
 from numba import njit
 
 from .base import Workspace
-from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, accept_factor, clip_step, error_norm, \
-    reject_factor
+from .common import (
+    MAX_STEPS,
+    NOT_FINITE,
+    OK,
+    STEP_TOO_SMALL,
+    Status,
+    accept_factor,
+    clip_step,
+    error_norm,
+    reject_factor,
+)
 
 # Dormand–Prince 5(4) tableau (Hairer, Nørsett & Wanner, Table II.5.2)
 C2, C3, C4, C5 = 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0

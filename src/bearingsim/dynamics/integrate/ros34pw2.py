@@ -21,8 +21,7 @@ import numpy as np
 from numba import njit
 
 from .base import Workspace, ros34_workspace
-from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm, pi_factor, \
-    reject_factor
+from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm, pi_factor, reject_factor
 from .jacobian import block_jac, ring_jac, ring_rows
 from .linalg import NR, coupled_w, j_times, no_coupling, w_inverse, w_solve
 
