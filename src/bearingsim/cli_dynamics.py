@@ -34,7 +34,8 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
                  checkpoint_every: Optional[str] = typer.Option(
                      None, "--checkpoint-every",
                      help="wall-clock time between checkpoints, e.g. '10 s' (default: the case's, else 30 s)"),
-                 duration: Optional[str] = typer.Option(None, "--duration", help="override the case duration, e.g. '2 ms'"),
+                 duration: Optional[str] = typer.Option(None, "--duration",
+                                                        help="override the case duration, e.g. '2 ms'"),
                  json_out: bool = typer.Option(False, "--json", help="print a JSON summary (SI)"),
                  quiet: bool = typer.Option(False, "--quiet", help="no progress bar")):
         """Run a dynamic simulation of rings, balls and cage in time (issue 5)."""
@@ -46,7 +47,7 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         from .units import parse_quantity
 
         c = load_case(case)
-        out = output_file(out, "--out")
+        out = output_file(out, "--out", renamed=True)
         if duration is not None:
             c = dataclasses.replace(c, duration=parse_quantity(duration, "time", "--duration"))
         con = make_console(stderr=True)
@@ -82,8 +83,9 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
                           f"{ss['power_loss_rolling']:.4g} of the raceway terms); inner-ring friction torque "
                           f"{ss['inner_ring_friction_torque']:.4g} N·m; cage {ss['cage_angular_speed']:.5g} rad/s")
                 if ss.get("cage_pocket_deformation_max", 0.0) > 0:
-                    con.print(f"elastic cage: largest pocket displacement {ss['cage_pocket_deformation_max'] * 1e6:.3g} "
-                              f"µm, largest normal stress {ss['cage_peak_stress_max'] / 1e6:.3g} MPa")
+                    con.print("elastic cage: largest pocket displacement "
+                              f"{ss['cage_pocket_deformation_max'] * 1e6:.3g} µm, largest normal stress "
+                              f"{ss['cage_peak_stress_max'] / 1e6:.3g} MPa")
 
     if reproduce_app is None:
         return

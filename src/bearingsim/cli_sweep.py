@@ -54,7 +54,7 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
 
         # both outputs checked (folders created) before the map is computed
         if out is not None:
-            out = output_file(out, "--out")
+            out = output_file(out, "--out", renamed=True)
         if plot is not None:
             plot = output_file(plot, "--plot")
         announce_compilation()

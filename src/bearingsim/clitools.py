@@ -244,9 +244,13 @@ def output_folder(path, option: str = "--out") -> Path:
     return p
 
 
-def output_file(path, option: str = "--out") -> Path:
+def output_file(path, option: str = "--out", *, renamed: bool = False) -> Path:
     """Prepare the output FILE ``path``: create missing parent folders and check, before any computing, that the
-    file can be written (an existing file or device is opened for appending and closed: nothing changes)."""
+    file can be written (an existing regular file is opened for appending and closed: nothing changes).
+
+    ``renamed``: the writer creates a temporary file next to ``path`` and renames it onto ``path`` (the netCDF
+    writers of ``map`` and ``simulate``); then ``path`` must not be a device or a pipe — the rename would put a
+    regular file in place of ``/dev/null`` (as root)."""
     p = Path(path).expanduser()
     try:
         if p.is_dir():
@@ -254,7 +258,13 @@ def output_file(path, option: str = "--out") -> Path:
         parent = p.parent
         _check_ancestors(parent, option)
         parent.mkdir(parents=True, exist_ok=True)
-        if p.exists():
+        if p.exists() and not p.is_file():  # a device or a pipe: never opened here (a pipe would block)
+            if renamed:
+                raise InputError(option, f"{p} is not a regular file",
+                                 "give a file name: this output is written under a temporary name and renamed")
+            if not os.access(p, os.W_OK):
+                raise OSError(errno.EACCES, os.strerror(errno.EACCES), str(p))
+        elif p.exists():
             with open(p, "ab"):
                 pass
         else:

@@ -191,3 +191,21 @@ def test_output_file_refuses_a_folder_and_a_path_below_a_file(tmp_path):
         output_folder(tmp_path / "f", "--out")
     assert output_file(tmp_path / "new" / "x.nc", "--out") == tmp_path / "new" / "x.nc"
     assert (tmp_path / "new").is_dir() and not (tmp_path / "new" / "x.nc").exists()
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="needs named pipes")
+@pytest.mark.parametrize("args", [
+    ["map", "skf-7011-cdga-hc", "--fa", "1000:2000:2", "--out", "{p}"],
+    ["simulate", str(CASE), "--out", "{p}", "--duration", "0.05 ms", "--quiet"],
+])
+def test_renamed_output_refuses_a_device_or_pipe(args, tmp_path):
+    """map and simulate write netCDF under a temporary name and rename it onto --out: onto /dev/null (as root)
+    that would replace the device by a regular file.  A pipe stands in for the device here (harmless if the guard
+    failed: the pipe would become a file and the test fail)."""
+    fifo = tmp_path / "pipe"
+    os.mkfifo(fifo)
+    p = run(*[a.format(p=fifo) for a in args])
+    assert p.returncode == 2, p.stderr
+    err = error_lines(p)
+    assert len(err) == 1 and err[0].startswith(f"error: --out: {fifo} is not a regular file"), p.stderr
+    assert stat.S_ISFIFO(os.stat(fifo).st_mode) and sorted(os.listdir(tmp_path)) == ["pipe"]
