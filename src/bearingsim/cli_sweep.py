@@ -58,6 +58,13 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
         if plot is not None:
             plot = output_file(plot, "--plot")
         announce_compilation()
+        if scheduler is None:
+            # kernels compiled (first run) or loaded here, with the note, before local worker processes start:
+            # they then load them from the cache instead of each compiling them silently behind the progress bar
+            from .sweep import warm_up
+
+            with contextlib.suppress(Exception):  # a warm-up never stops the map: its errors come from map_grid
+                warm_up(bearing)
         t0 = time.perf_counter()
         # a full disk while streaming: map_grid removes its temporary file; one line here
         with writing("--out", out) if out is not None else contextlib.nullcontext():
