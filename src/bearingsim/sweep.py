@@ -553,7 +553,8 @@ def _cluster_error(exc: BaseException) -> MapError | None:
     if name == "KilledWorker":
         return MapError(f"a block of the map was lost with every worker that ran it ({exc}); the workers may "
                         "be running out of memory")
-    if name in ("CancelledError", "FutureCancelledError", "CommClosedError") or isinstance(exc, OSError):
+    if name in ("CancelledError", "FutureCancelledError", "CommClosedError") or \
+            isinstance(exc, ConnectionError | TimeoutError):
         why = "connection lost" if "connection" in str(exc).lower() else f"{name}: {str(exc)[:120]}"
         return MapError(f"lost the Dask scheduler during the map ({why}); restart the scheduler and run the map again")
     return None
