@@ -209,3 +209,21 @@ def test_renamed_output_refuses_a_device_or_pipe(args, tmp_path):
     err = error_lines(p)
     assert len(err) == 1 and err[0].startswith(f"error: --out: {fifo} is not a regular file"), p.stderr
     assert stat.S_ISFIFO(os.stat(fifo).st_mode) and sorted(os.listdir(tmp_path)) == ["pipe"]
+
+
+def test_writing_maps_only_errors_about_the_output(tmp_path):
+    """A full disk while a streamed output is written (map, simulate) is the output's InputError; an OSError about
+    another file (an input read in the same block) passes unchanged."""
+    import errno
+
+    from bearingsim.clitools import writing
+    from bearingsim.errors import InputError
+
+    out = tmp_path / "run.nc"
+    for name in (str(out) + ".tmp", str(out) + ".ckpt.npz", None):
+        with pytest.raises(InputError, match="--out: cannot write .*No space left.*free disk space"):
+            with writing("--out", out):
+                raise OSError(errno.ENOSPC, "No space left on device", name)
+    with pytest.raises(FileNotFoundError):
+        with writing("--out", out):
+            raise FileNotFoundError(errno.ENOENT, "No such file or directory", str(tmp_path / "case.toml"))
