@@ -99,7 +99,8 @@ def _choose_numba_cache_dir(environ, package_dir: str) -> tuple[str | None, str 
     Returns ``(cache_dir, note)``: ``cache_dir`` is the folder to put in ``NUMBA_CACHE_DIR`` (None: leave
     numba's own choice alone) and ``note`` the one line for stderr (None: nothing to say).  Order: a writable
     ``NUMBA_CACHE_DIR``; numba's in-tree ``__pycache__``; numba's user cache ``<cache root>/numba``; then
-    ``<cache root>/bearingsim/numba``; then ``<tmp>/bearingsim-numba-<uid>``.
+    ``<cache root>/bearingsim/numba``; then ``<tmp>/bearingsim-numba-<uid>`` (only if it is this user's and
+    nobody else can write in it); then a fresh private temporary folder for this process.
     """
     import tempfile
 
@@ -116,16 +117,36 @@ def _choose_numba_cache_dir(environ, package_dir: str) -> tuple[str | None, str 
         # numba itself falls back to <cache root>/numba when it can create it
         if _writable_folder(os.path.join(root, "numba"), create=True):
             return None, None
-    uid = os.getuid() if hasattr(os, "getuid") else 0
-    for cand in (os.path.join(root, "bearingsim", "numba"),
-                 os.path.join(tempfile.gettempdir(), f"bearingsim-numba-{uid}")):
+    uid = os.getuid() if hasattr(os, "getuid") else None
+    shared_tmp = os.path.join(tempfile.gettempdir(), f"bearingsim-numba-{uid if uid is not None else 'user'}")
+    for cand in (os.path.join(root, "bearingsim", "numba"), shared_tmp):
         existed = os.path.isdir(cand)
+        if cand == shared_tmp and not _private_folder(cand, uid):
+            continue
         if _writable_folder(cand, create=True):
             if given or not existed:
                 return cand, f"note: {why}; compiled kernels are cached in {cand}"
             return cand, None  # the fallback in use since an earlier run: said once, when created
-    return None, (f"note: {why} and no user or temporary cache folder is writable; numba will report "
-                  "'cannot cache function' (set NUMBA_CACHE_DIR to a writable folder)")
+    try:  # a fresh private folder for this process (no reuse, but never another user's files)
+        cand = tempfile.mkdtemp(prefix="bearingsim-numba-")
+        return cand, f"note: {why}; compiled kernels are cached in {cand} for this run only"
+    except OSError:
+        return None, (f"note: {why} and no user or temporary cache folder is writable; numba will report "
+                      "'cannot cache function' (set NUMBA_CACHE_DIR to a writable folder)")
+
+
+def _private_folder(path: str, uid: int | None) -> bool:
+    """True when ``path`` is (or is now made) a folder of this user that nobody else can write: a cache folder in
+    a shared temporary directory must not be one another user prepared (numba loads compiled code from it)."""
+    import stat
+
+    try:
+        os.makedirs(path, mode=0o700, exist_ok=True)
+        st = os.lstat(path)
+    except OSError:
+        return False
+    return (stat.S_ISDIR(st.st_mode) and not st.st_mode & 0o022
+            and (uid is None or st.st_uid == uid))
 
 
 def _configure_numba_cache() -> None:

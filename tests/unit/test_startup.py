@@ -177,6 +177,11 @@ def test_cache_choice(tmp_path, monkeypatch):
     assert Path(d).parent == tmp_path / "tmp" and Path(d).name.startswith("bearingsim-numba-")
     assert "package folder is not writable" in note and d in note
     assert _choose_numba_cache_dir(env, str(ro_pkg)) == (d, None)
+    # ... but never a folder someone else can write in (numba loads compiled code from it): a fresh private one
+    os.chmod(d, 0o777)
+    d2, note2 = _choose_numba_cache_dir(env, str(ro_pkg))
+    assert d2 != d and Path(d2).parent == tmp_path / "tmp" and "for this run only" in note2
+    assert os.stat(d2).st_mode & 0o077 == 0
 
 
 def test_unwritable_numba_cache_dir_falls_back_with_one_line(tmp_path):
