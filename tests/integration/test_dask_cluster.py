@@ -85,6 +85,16 @@ class _Cluster:
                 pass
 
 
+@pytest.fixture(scope="module", autouse=True)
+def compiled_kernels():
+    """Compile (or load) the batch kernels once here, so that the map and worker processes load them from
+    the cache instead of compiling them side by side (a fresh checkout would otherwise spend the maps'
+    time limits compiling)."""
+    from bearingsim.sweep import warm_up
+
+    warm_up()
+
+
 @pytest.fixture
 def cluster(tmp_path):
     c = _Cluster(tmp_path)
