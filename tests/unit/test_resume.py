@@ -52,7 +52,8 @@ def test_wall_clock_checkpoints_come_before_the_first_chunk_and_go_after_complet
     case = _case("0.5 ms")  # 10 samples, far fewer than one chunk (1000)
     rn.simulate(case, out=out, checkpoint_seconds=1e-9)  # interval always elapsed: one after every sample
     assert saved == list(range(2, 12))  # the record count after samples 1..10 (sample 0 is the start)
-    assert not Path(str(out) + ".ckpt.npz").exists()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["run.nc"]  # no checkpoint (nor its temporary) left
+    Path(str(out) + ".ckpt.npz.tmp.npz").write_bytes(b"half-saved by a killed run")
     saved.clear()
     rn.simulate(case, out=out, checkpoint_seconds=1e9)  # interval never elapsed, no full chunk: none
     assert saved == []
@@ -60,6 +61,7 @@ def test_wall_clock_checkpoints_come_before_the_first_chunk_and_go_after_complet
 
     with xr.open_dataset(out) as ds:
         assert ds.sizes["time"] == 11
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["run.nc"]
 
 
 def test_resume_without_checkpoint_starts_from_the_beginning_with_a_note(tmp_path):

@@ -478,8 +478,12 @@ def _read_checkpoint(ckpt: Path, out: Path, fingerprint: str):
     return data, ""
 
 
+def _checkpoint_tmp(path: Path) -> Path:
+    return path.with_name(path.name + ".tmp.npz")
+
+
 def _save_checkpoint(path: Path, stepper: Stepper, index: int, fingerprint: str) -> None:
-    tmp = path.with_name(path.name + ".tmp.npz")
+    tmp = _checkpoint_tmp(path)
     np.savez(tmp, t=stepper.t, h=stepper.h, y=stepper.y, index=index, steps=stepper.steps,
              rejected=stepper.rejected, fingerprint=fingerprint,
              **{f"jacobian_{i}": a for i, a in enumerate(stepper._ws)})
@@ -638,6 +642,7 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
             writer.close()
     if completed and ckpt is not None:
         ckpt.unlink(missing_ok=True)  # a completed run leaves no checkpoint behind
+        _checkpoint_tmp(ckpt).unlink(missing_ok=True)  # (nor one half-saved when an earlier run was killed)
     wall = time.perf_counter() - t_wall0
     summary = {"wall_seconds": wall, "simulated_seconds": stepper.t - t_sim0, "steps": stepper.steps,
                "rejected_steps": stepper.rejected,
