@@ -34,7 +34,7 @@ STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (dive
                NOT_FINITE: "the state became non-finite", MAX_STEPS: "step limit reached"}
 
 
-@njit
+@njit(cache=True)
 def error_norm(e, y, ynew, atol, rtol, info):
     """Scaled RMS norm of the local error estimate e (Hairer, Nørsett & Wanner, *Solving ODEs I*,
     1993, eq. II.4.11): √(Σ (e_i / (atol_i + rtol_i max(|y_i|, |ynew_i|)))² / n).
@@ -63,7 +63,7 @@ def error_norm(e, y, ynew, atol, rtol, info):
     return (np.sqrt(err / n) if finite else 1e10), finite
 
 
-@njit
+@njit(cache=True)
 def clip_step(t, h, t_end):
     """(step [s], last) with the step shortened to land exactly on t_end [s]; last is True when it does."""
     if t + h >= t_end:
@@ -71,20 +71,20 @@ def clip_step(t, h, t_end):
     return h, False
 
 
-@njit
+@njit(cache=True)
 def accept_factor(err, expo, grow):
     """Step growth after an accepted step, h ← h·min(grow, max(0.2, 0.9 err^(−expo))) (Hairer et al.
     eq. II.4.13; expo = 1/(q + 1) with q the lower of the embedded orders); ``grow`` when err = 0."""
     return grow if err == 0.0 else min(grow, max(0.2, 0.9 * err ** -expo))
 
 
-@njit
+@njit(cache=True)
 def reject_factor(err, expo):
     """Step reduction after a rejected step, max(0.2, 0.9 err^(−expo))."""
     return max(0.2, 0.9 * err ** -expo)
 
 
-@njit
+@njit(cache=True)
 def pi_factor(err, err_prev, ki, kp, grow):
     """PI step-size factor 0.9 e^(−ki) (e_prev/e)^kp limited to [0.2, grow], e = max(err, 1e-10)
     (Gustafsson 1991; Hairer & Wanner, *Solving ODEs II*, eq. IV.8.21).  Returns (factor, the

@@ -10,8 +10,11 @@ with the lubricated kernel, traction creep makes the problem stiff (eigenvalue
 ROS34PW2 (:mod:`.ros34pw2`) takes much longer steps (docs/dynamics.md).  An unstable step shows up
 as a large error estimate and is rejected, so DOPRI5 stays correct there, only slow.
 
-Not cached by numba (``cache=True`` is unreliable for functions that take another jitted function
-as an argument): each process compiles the integrator once (~3 s); the right-hand sides are cached.
+Compilation: the kernels that take the right-hand side as an argument (``stages``, ``integrate`` here,
+and those of the W-methods) are not cached by numba (``cache=True`` is unreliable for functions that
+take another jitted function as an argument), so each process compiles them once; the step control,
+error norm and linear algebra they call (:mod:`.common`, :mod:`.linalg`) and the right-hand sides are
+cached on disk.
 """
 
 from __future__ import annotations

@@ -54,7 +54,7 @@ def ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1):
                 jbr[b, i, j] = (f1[o + i] - f0[o + i]) / e
 
 
-@njit
+@njit(cache=True)
 def ring_rows(jbr, rmass, bmass, jrb):
     """The ring's dependence on the balls J_rb from J_br by the symmetry of the contact stiffness and
     damping between two bodies (the force of a contact depends on the bodies' relative position and

@@ -24,7 +24,7 @@ from ..layout import N_RING
 NR = N_RING  #: inner-ring states (q, q̇) at the start of the state vector
 
 
-@njit
+@njit(cache=True)
 def apply_w(winv, blk, nbk, v, out):
     """out = W⁻¹ v with W block diagonal: W_b on the blocks, identity elsewhere."""
     for i in range(v.shape[0]):
@@ -38,7 +38,7 @@ def apply_w(winv, blk, nbk, v, out):
             out[o + i] = s
 
 
-@njit
+@njit(cache=True)
 def jac_vec(jac, blk, nbk, v, out):
     """out = J v with J zero outside the blocks."""
     for i in range(v.shape[0]):
@@ -52,7 +52,7 @@ def jac_vec(jac, blk, nbk, v, out):
             out[o + i] = s
 
 
-@njit
+@njit(cache=True)
 def w_solve(winv, blk, nbk, hs, g, cpl, v, out):
     """out = W⁻¹ v: block-diagonal W, or the arrowhead W of the ring–ball coupling when ``cpl`` holds it."""
     jrr, jbr, jrb, q, sinv, z, r = cpl
@@ -62,7 +62,7 @@ def w_solve(winv, blk, nbk, hs, g, cpl, v, out):
         apply_w(winv, blk, nbk, v, out)
 
 
-@njit
+@njit(cache=True)
 def j_times(jac, blk, nbk, cpl, v, out):
     """out = J v (ball blocks, plus the ring block and the coupling when ``cpl`` holds them)."""
     jrr, jbr, jrb, q, sinv, z, r = cpl
@@ -72,7 +72,7 @@ def j_times(jac, blk, nbk, cpl, v, out):
         jac_vec(jac, blk, nbk, v, out)
 
 
-@njit
+@njit(cache=True)
 def no_coupling(nbk):
     """The ``cpl`` argument of :func:`w_solve` / :func:`j_times` without the ring–ball coupling: (J_rr,
     J_br, J_rb, Q, S⁻¹, work, work) with no ball rows (the coupled form is built in ROS34PW2)."""
@@ -80,7 +80,7 @@ def no_coupling(nbk):
             np.zeros((NR, NR)), np.zeros((0, nbk)), np.zeros(NR))
 
 
-@njit
+@njit(cache=True)
 def invert_small(a, out):
     """out = a⁻¹ by Gauss–Jordan elimination with partial pivoting (a is overwritten);
     for the 9×9 blocks this is ~10× faster than a LAPACK call from numba."""
@@ -117,7 +117,7 @@ def invert_small(a, out):
                         out[r, j] -= f * out[c, j]
 
 
-@njit
+@njit(cache=True)
 def w_inverse(jac, hs, g, winv, wm):
     """winv[b] = (I − g hs J_b)⁻¹ for every block b."""
     nb = jac.shape[0]
@@ -130,7 +130,7 @@ def w_inverse(jac, hs, g, winv, wm):
         invert_small(wm, winv[b])
 
 
-@njit
+@njit(cache=True)
 def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr):
     """Arrowhead W = I − g hs J with ring block, ball blocks and ring–ball coupling: ball block
     inverses winv, Q_b = W_bb⁻¹ W_br, and the inverse of the ring's Schur complement
@@ -164,7 +164,7 @@ def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr):
     invert_small(srr, sinv)
 
 
-@njit
+@njit(cache=True)
 def coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
     """out = W⁻¹ v for the arrowhead W of :func:`coupled_w` (identity outside ring and balls)."""
     c = -g * hs
@@ -199,7 +199,7 @@ def coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
             out[o + i] = acc
 
 
-@njit
+@njit(cache=True)
 def coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, v, out):
     """out = J v for the arrowhead J: the ball blocks (:func:`jac_vec`), the ring block and the
     ring–ball coupling."""
