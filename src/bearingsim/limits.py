@@ -84,13 +84,15 @@ def check_speed(speed: float, pitch_diameter: float, field: str = "speed") -> No
     if ndm > MAX_NDM:
         nmax = MAX_NDM / (pitch_diameter * 1e3)
         raise InputError(field, f"{abs(speed) * 30 / math.pi:.4g} rpm gives n·d_m = {ndm:.3g} mm·rpm, beyond any "
-                         f"rolling bearing (limit {MAX_NDM:.0e} mm·rpm)", f"give at most {nmax:.0f} rpm for this bearing")
+                         f"rolling bearing (limit {MAX_NDM:.0e} mm·rpm)",
+                         f"give at most {nmax:.0f} rpm for this bearing")
 
 
 def flags_from_summary(p_inner, p_outer, alpha_extremes, speed, lift_off, converged, vlim: float = 0.0) -> np.ndarray:
     """Bitmask per point from the batch summaries (arrays over points, SI): maximum pressures [Pa],
     contact-angle extremes (any number of arrays [rad], NaN where no ball is loaded), speed [rad/s],
-    lift-off flags (bool; the caller applies the at-speed rule), converged flags (bool), limiting speed vlim [rad/s] (0: none)."""
+    lift-off flags (bool; the caller applies the at-speed rule), converged flags (bool), limiting speed
+    vlim [rad/s] (0: none)."""
     p = np.fmax(np.nan_to_num(np.asarray(p_inner, dtype=float)), np.nan_to_num(np.asarray(p_outer, dtype=float)))
     flags = np.where(p > STATIC_PRESSURE_LIMIT, FLAG_PRESSURE, 0).astype(np.int32)
     ang = np.zeros(p.shape, dtype=bool)

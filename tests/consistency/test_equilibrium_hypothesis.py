@@ -58,8 +58,9 @@ point = st.tuples(st.floats(-0.3, 1.0), st.floats(-3.0, 0.3),  # axial: sign/fra
 
 
 @settings(max_examples=50, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(name=st.sampled_from(["7011", "218", "hub", "6205", "6208"]), control=st.sampled_from(["outer", "inner", "auto"]),
-       path=st.lists(point, min_size=2, max_size=5), at_rest=st.lists(st.booleans(), min_size=5, max_size=5))
+@given(name=st.sampled_from(["7011", "218", "hub", "6205", "6208"]),
+       control=st.sampled_from(["outer", "inner", "auto"]), path=st.lists(point, min_size=2, max_size=5),
+       at_rest=st.lists(st.booleans(), min_size=5, max_size=5))
 def test_converged_results_are_equilibria_and_paths_agree(bearings, name, control, path, at_rest):
     b = bearings[name]
     cap = _capacity(b)

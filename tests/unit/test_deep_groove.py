@@ -14,7 +14,8 @@ ch. 7 (radial load distribution with clearance), written ball by ball:
 and at speed, with the balls in the plane (α = 0: no gyroscopic moment, ω_m/ω = (1 − D/d_m)/2), each
 loaded ball shares the approach δr cos ψ_j − P_d/2 = (Q_j/K_i)^(2/3) + ((Q_j + F_c)/K_o)^(2/3), with
 F_c = ½ m d_m ω_m² (Harris & Kotzalas 2007 vol. 2 ch. 3); a ball is loaded at the inner raceway once that
-approach exceeds (F_c/K_o)^(2/3), the outer approach of a ball held by F_c alone.  K_i, K_o are the bearing's exact Hertz constants (elliptic integrals), as the model documents.
+approach exceeds (F_c/K_o)^(2/3), the outer approach of a ball held by F_c alone.  K_i, K_o are the
+bearing's exact Hertz constants (elliptic integrals), as the model documents.
 """
 
 from __future__ import annotations
@@ -138,7 +139,8 @@ def test_radial_displacement_equals_planar_rigid_ring_solution(name, pd_um, fr, 
     assert np.allclose(res.displacement[1:3], ref, rtol=0, atol=1e-8 * dr), \
         "Harris & Kotzalas 2007 vol. 1 ch. 7 planar radial load distribution with clearance"
     # the ring does not tilt or move axially (symmetric state)
-    assert abs(res.displacement[0]) <= 1e-9 * dr and np.all(np.abs(res.displacement[3:]) <= 1e-6 * dr / b.pitch_diameter)
+    assert abs(res.displacement[0]) <= 1e-9 * dr
+    assert np.all(np.abs(res.displacement[3:]) <= 1e-6 * dr / b.pitch_diameter)
 
 
 @pytest.mark.parametrize("speed", [1000.0, 3000.0])
