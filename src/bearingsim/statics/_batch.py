@@ -344,8 +344,17 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
 
     Returns a dict of arrays (see the module docstring).
     """
-    from .jones_harris import (CONTROLS, MAXIT_BALL, MAXIT_RING, TOL_BALL, TOL_RING, TOL_VERIFY, Loads,
-                               initial_guess, rows_of)
+    from .jones_harris import (
+        CONTROLS,
+        MAXIT_BALL,
+        MAXIT_RING,
+        TOL_BALL,
+        TOL_RING,
+        TOL_VERIFY,
+        Loads,
+        initial_guess,
+        rows_of,
+    )
 
     loads = np.ascontiguousarray(np.asarray(loads, dtype=float).reshape(-1, 5))
     n = loads.shape[0]
@@ -391,8 +400,9 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
 
 def _fallback_points(bearing, rows, loads, omega, control, out) -> None:
     """Points the compiled loop did not converge (any status but 0 and 8; or lost to an exception, status −1)
-    are solved again by the single-point path :func:`bearingsim.statics.jones_harris.solve` (its own start and load continuation), so
-    that the batch and the single path agree on convergence; a point that raises gets status 7."""
+    are solved again by the single-point path :func:`bearingsim.statics.jones_harris.solve` (its own start and
+    load continuation), so that the batch and the single path agree on convergence; a point that raises gets
+    status 7."""
     from .jones_harris import Loads, solve
 
     bad = np.flatnonzero((out["status"] != 0) & (out["status"] != 8))

@@ -1019,8 +1019,9 @@ def solve_ring_coupled(rows, loads, omega, control, qv, lam_state, xb, kmat, bal
                        maxit_ball, maxit_ring, load_scale, xs, wk, wk2, trig):
     """Ring equilibrium by Newton on the coupled ring–ball system, :func:`solve_ring` as the safeguard.
 
-    Used when ``omega`` > 0 and the raceway control is outer control (inner and auto control: :func:`solve_ring`; at rest the ball solve
-    is closed form and :func:`solve_ring` is used).  Each coupled step K⁻¹ res_c is limited as in
+    Used when ``omega`` > 0 and the raceway control is outer control (inner and auto control change a ball's
+    control when its inner contact opens: :func:`solve_ring`; at rest the ball solve is closed form and
+    :func:`solve_ring` is used).  Each coupled step K⁻¹ res_c is limited as in
     :func:`solve_ring` and halved up to NLS − 1 times until the condensed residual decreases; when it
     does not, the point continues with :func:`solve_ring` from the last accepted state.  A point is
     converged when, at the current iterate, every ball meets the ball tolerance and the ring residual

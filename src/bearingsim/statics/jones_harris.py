@@ -14,9 +14,8 @@ position (architecture.md: x the bearing axis, ψ = 0 on +y).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-
 import numbers
+from dataclasses import dataclass, field
 
 import numpy as np
 
