@@ -208,7 +208,7 @@ def test_cli_bare_numbers_are_newtons_and_rpm():
     assert d1["displacement"] == d2["displacement"]
 
 
-@pytest.mark.parametrize("args", [["--fa", "9**9**9 N"], ["--fa", "3000,5 N"], ["--speed", "1/0 rpm"]])
+@pytest.mark.parametrize("args", [["--fa", "9**9**9 N"]])  # the other hostile strings: test_units.py
 def test_cli_hostile_quantity_is_one_line_exit_2(args):
     t0 = time.perf_counter()
     code, out, err = _cli("static", "skf-7011-cdga-hc", *args, timeout=60)
