@@ -101,7 +101,7 @@ def read_text(path, field: str = "file") -> str:
     if len(data) > MAX_FILE_BYTES:
         raise InputError(field, f"{name!r} is larger than {MAX_FILE_BYTES // 2**20} MiB",
                          "an input file is a few kB of TOML: check that this is the right file")
-    utf16 = data[:2] in (b"\xff\xfe", b"\xfe\xff") or (b"\x00" in data[:4] and 3 * data.count(b"\x00") > len(data))
+    utf16 = _looks_utf16(data)
     if utf16:
         raise InputError(field, f"{name!r} is UTF-16 text (TOML files are UTF-8)",
                          "save the file as UTF-8 (e.g. Notepad: Save as, Encoding UTF-8)")
@@ -114,6 +114,17 @@ def read_text(path, field: str = "file") -> str:
         line = data[:exc.start].count(b"\n") + 1
         raise InputError(field, f"{name!r} is not UTF-8 text (byte 0x{data[exc.start]:02x} on line {line}; "
                          "Latin-1 or Windows-1252?)", "save the file as UTF-8") from None
+
+
+def _looks_utf16(data: bytes) -> bool:
+    """A UTF-16 byte-order mark, or mostly-ASCII text whose every other byte is NUL (UTF-16LE/BE)."""
+    if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
+        return True
+    head = data[:256]
+    if len(head) < 4:
+        return False
+    even, odd = head[0::2], head[1::2]
+    return (set(odd) == {0} and 0 not in even) or (set(even) == {0} and 0 not in odd)
 
 
 def parse_toml(text: str, name: str, field: str = "file") -> dict:

@@ -259,3 +259,16 @@ def test_integer_beyond_pythons_digit_limit(write_toml):
     with pytest.raises(InputError) as info:  # a huge hexadecimal integer is read, then refused as a ball count
         io.load_bearing(write_toml(GOOD_BEARING.replace("ball_count = 21", "ball_count = 0x" + "f" * 3000)))
     assert info.value.field == "ball_count"
+
+
+@pytest.mark.parametrize("data, words", [
+    (GOOD_BEARING.encode("utf-16-be"), "UTF-16"),
+    (b"\x00" * 4096, "binary"),  # all zeros is not UTF-16 text
+    (b"\x89HDF\r\n\x1a\n" + b"\x00" * 600, "binary"),  # a netCDF-4 output given as input
+])
+def test_utf16_is_told_apart_from_binary(tmp_path, data, words):
+    p = tmp_path / "x.toml"
+    p.write_bytes(data)
+    with pytest.raises(InputError) as info:
+        io.read_toml(p, "bearing")
+    assert words in str(info.value)
