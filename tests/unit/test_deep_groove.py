@@ -241,3 +241,21 @@ def test_cli_static_pure_radial_load_on_deep_groove(tmp_path, pd):
     txt = subprocess.run(["bearingsim", "static", str(p), "--fr", "3 kN"], capture_output=True, text=True,
                          timeout=300)
     assert txt.returncode == 0 and "internal clearance: radial" in txt.stdout and "axial play" in txt.stdout
+
+
+@pytest.mark.parametrize("m_y,m_z", [(0.0, 21.83), (-5.0, 0.0), (3.0, 4.0), (0.0, 0.01), (100.0, 0.0)])
+def test_pure_moment_on_deep_groove_with_clearance(m_y, m_z):
+    """A pure moment (no axial or radial load): the centred start lies inside the clearance (no ball loaded,
+    zero Jacobian: status 2 before); the start now tilts the ring through the axial play.  Single and batch
+    converge, the moment is carried (M = Σ moments of the ball forces, by the ring balance) and the ring
+    does not translate beyond the geometric coupling of the tilt."""
+    b = deep_groove("6205", 15)
+    loads = jh.Loads(m_y=m_y, m_z=m_z)
+    r = jh.solve(b, loads, 0.0)
+    m = jh.solve_many(b, loads.as_array()[None, :], np.zeros(1))
+    assert r.converged, r.status
+    assert bool(m.converged[0]) and np.allclose(m.displacement[0], r.displacement, rtol=1e-6, atol=1e-12)
+    tilt = r.displacement[3:]
+    assert np.hypot(*tilt) > 0.9 * b.total_curvature_distance * math.sin(b.free_contact_angle) / (
+        0.5 * b.pitch_diameter + 0.5 * b.ball_diameter)  # at least the axial play over the groove radius
+    assert tilt @ np.array([m_y, m_z]) > 0  # tilts the way the moment turns it

@@ -259,6 +259,22 @@ def initial_guess(bearing, loads: Loads) -> np.ndarray:
             q0[2] = loads.fr_z / fr * (c + 1e-6)
         if loads.fa != 0:
             q0[0] = math.copysign(math.sqrt(max(bearing.total_curvature_distance * c * 2, 0)) + 1e-6, loads.fa)
+        m = math.hypot(loads.m_y, loads.m_z)
+        if m > 0 and fr == 0 and loads.fa == 0:
+            # a pure moment: tilt the inner ring until the ball farthest from the tilt axis has taken up the
+            # axial play A sin α₀ plus the Hertz approach of a ball carrying 2M/(Z r) (r the groove-centre
+            # radius); from the centred position inside the clearance no ball is loaded and the Jacobian is zero
+            par = bearing.row_parameters()
+            big_a = bearing.total_curvature_distance
+            ric = par[kn.P_RIC]
+            z = bearing.ball_count
+            psi = par[kn.P_PSI0] + 2 * math.pi * np.arange(z) / z
+            reach = float(np.max(np.abs(np.sin(psi) * loads.m_y - np.cos(psi) * loads.m_z))) / m
+            q_ball = 2.0 * m / (z * ric)
+            approach = (q_ball / bearing.contact_constants[2]) ** (2.0 / 3.0)
+            tilt = (big_a * math.sin(bearing.free_contact_angle) + approach) / (ric * max(reach, 1e-3))
+            q0[3] = loads.m_y / m * tilt
+            q0[4] = loads.m_z / m * tilt
     return q0
 
 
