@@ -261,21 +261,50 @@ def initial_guess(bearing, loads: Loads) -> np.ndarray:
             q0[0] = math.copysign(math.sqrt(max(bearing.total_curvature_distance * c * 2, 0)) + 1e-6, loads.fa)
         m = math.hypot(loads.m_y, loads.m_z)
         if m > 0 and fr == 0 and loads.fa == 0:
-            # a pure moment: tilt the inner ring until the ball farthest from the tilt axis has taken up the
-            # axial play A sin α₀ plus the Hertz approach of a ball carrying 2M/(Z r) (r the groove-centre
-            # radius); from the centred position inside the clearance no ball is loaded and the Jacobian is zero
-            par = bearing.row_parameters()
-            big_a = bearing.total_curvature_distance
-            ric = par[kn.P_RIC]
-            z = bearing.ball_count
-            psi = par[kn.P_PSI0] + 2 * math.pi * np.arange(z) / z
-            reach = float(np.max(np.abs(np.sin(psi) * loads.m_y - np.cos(psi) * loads.m_z))) / m
-            q_ball = 2.0 * m / (z * ric)
-            approach = (q_ball / bearing.contact_constants[2]) ** (2.0 / 3.0)
-            tilt = (big_a * math.sin(bearing.free_contact_angle) + approach) / (ric * max(reach, 1e-3))
-            q0[3] = loads.m_y / m * tilt
-            q0[4] = loads.m_z / m * tilt
+            q0[3:] = _moment_tilt(bearing, loads)
     return q0
+
+
+def _moment_tilt(bearing, loads: Loads) -> np.ndarray:
+    """(γy, γz) [rad] that take up the axial play of a deep-groove row in the sense of the moment."""
+    m = math.hypot(loads.m_y, loads.m_z)
+    if m == 0:
+        return np.zeros(2)
+    # tilt the inner ring until the ball farthest from the tilt axis has taken up the
+    # axial play A sin α₀ plus the Hertz approach of a ball carrying 2M/(Z r) (r the groove-centre
+    # radius); from the centred position inside the clearance no ball is loaded and the Jacobian is zero
+    par = bearing.row_parameters()
+    big_a = bearing.total_curvature_distance
+    ric = par[kn.P_RIC]
+    z = bearing.ball_count
+    psi = par[kn.P_PSI0] + 2 * math.pi * np.arange(z) / z
+    reach = float(np.max(np.abs(np.sin(psi) * loads.m_y - np.cos(psi) * loads.m_z))) / m
+    q_ball = 2.0 * m / (z * ric)
+    approach = (q_ball / bearing.contact_constants[2]) ** (2.0 / 3.0)
+    tilt = (big_a * math.sin(bearing.free_contact_angle) + approach) / (ric * max(reach, 1e-3))
+    return np.array([loads.m_y / m * tilt, loads.m_z / m * tilt])
+
+
+def _deep_groove_starts(bearing, loads: Loads) -> list:
+    """Starts of a single deep-groove row that take up the clearance in the directions the loads act: every
+    combination of the planar radial displacement, the axial play shift (sense of Fa) and the tilt through
+    the axial play (sense of the moment) that the loads call for (cheap at rest, closed-form balls)."""
+    if getattr(bearing, "kind", None) != "deep_groove":
+        return []
+    la = loads.as_array()
+    radial = np.zeros(5)
+    kn.planar_radial_start(bearing.row_parameters()[None, :], la, radial)
+    axial = np.zeros(5)
+    if loads.fa != 0:
+        big_a = bearing.total_curvature_distance
+        axial[0] = math.copysign(big_a * math.sin(bearing.free_contact_angle) + 1e-7, loads.fa)
+    tilt = np.zeros(5)
+    tilt[3:] = _moment_tilt(bearing, loads)
+    parts = [p for p in (radial, axial, tilt) if np.any(p)]
+    out = []
+    for mask in range(1, 2 ** len(parts)):
+        out.append(sum(p for k, p in enumerate(parts) if mask >> k & 1))
+    return out
 
 
 def _scale(loads: Loads, rows: np.ndarray) -> float:
@@ -354,6 +383,8 @@ def _alternative_starts(bearing, loads, speed, control, initial, q_first, rows, 
     """Callables giving further starts of :func:`solve` (see there), cheapest first."""
     if initial is not None:
         yield lambda: np.array(initial_guess(bearing, loads), dtype=float)
+    for q_dg in _deep_groove_starts(bearing, loads):
+        yield lambda q_dg=q_dg: q_dg
     if control != "outer" and omega > 0:
         def outer_solution():
             r = solve(bearing, loads, speed, "outer")
