@@ -97,3 +97,33 @@ def test_solve_many_equals_single_solves():
         r = jh.solve(b, jh.Loads(*loads[i]), speeds[i])
         np.testing.assert_allclose(many.displacement[i], r.displacement, rtol=1e-8, atol=1e-14)
         np.testing.assert_allclose(many.stiffness[i], r.stiffness, rtol=1e-7, atol=1e-7 * abs(r.stiffness).max())
+
+
+def test_batch_reports_points_that_fail_the_independent_check_as_status_5():
+    """The compiled loop re-solves the balls from scratch at every converged point; a point whose balance
+    then misses the tolerance is restarted once and otherwise gets status 5 (here forced with a negative
+    tolerance, which no point can meet), and the equilibrium_residual kernel tells an equilibrium from a
+    displaced ring."""
+    from bearingsim.statics._batch import NSUMMARY, solve_batch
+
+    b = load_bearing("skf-7011-cdga-hc")
+    rows = jh.rows_of(b)
+    loads = np.array([[1000.0, 0, 0, 0, 0], [3000.0, 200.0, 0, 0, 0]])
+    omega = np.array([0.0, 1000.0])
+    n = len(loads)
+    outs = [np.zeros((n, 5)), np.zeros((n, 5, 5)), np.zeros(n, dtype=np.int64), np.zeros(n, dtype=np.int64),
+            np.zeros(n), np.zeros((n, NSUMMARY))]
+    q0 = jh.initial_guess(b, jh.Loads(*loads[0]))
+    solve_batch(rows, loads, omega, kn.CONTROL_OUTER, q0, *outs, jh.TOL_BALL, jh.TOL_RING, jh.MAXIT_BALL,
+                jh.MAXIT_RING, True, jh.TOL_VERIFY)
+    assert list(outs[2]) == [0, 0]
+    q_ok = outs[0][1].copy()
+    rv, ok = kn.equilibrium_residual(rows, loads[1], 1000.0, kn.CONTROL_OUTER, q_ok, jh.TOL_BALL, jh.MAXIT_BALL)
+    assert ok and rv <= jh.TOL_VERIFY * 3000.0
+    q_bad = q_ok.copy()
+    q_bad[0] *= 1.001
+    rv_bad, _ = kn.equilibrium_residual(rows, loads[1], 1000.0, kn.CONTROL_OUTER, q_bad, jh.TOL_BALL, jh.MAXIT_BALL)
+    assert rv_bad > 1e3 * jh.TOL_VERIFY * 3000.0
+    solve_batch(rows, loads, omega, kn.CONTROL_OUTER, q0, *outs, jh.TOL_BALL, jh.TOL_RING, jh.MAXIT_BALL,
+                jh.MAXIT_RING, True, -1.0)
+    assert list(outs[2]) == [5, 5]
