@@ -1,7 +1,10 @@
 """Contact forces and equations of motion of the dynamic model (numba kernels).
 
-Everything here works on the plain arrays of :class:`bearingsim.dynamics.model.Model`;
-the state layout is documented in :mod:`.model`.
+Everything here works on the plain arrays of :class:`bearingsim.dynamics.model.Model`, laid out as
+documented in :mod:`.layout`.  :func:`rhs` assembles the equations of motion from one helper per
+section (balls on their raceways, cage pockets with the elastic modes, land guidance, cage and ring
+equations); the contact laws are :func:`race_contact`, :func:`coulomb_slices` and :func:`pocket_point`;
+the load and speed histories are the kernels of :mod:`.loads`.
 
 Ball–raceway normal force (seed 001 §3.1; Harris & Kotzalas 2007 vol. 1 eq. 7.4):
 the ball centre b and the groove-curvature centre g of the raceway in the ball's
@@ -28,9 +31,9 @@ sign at zero sliding).  Cage guidance by a ring land uses the same law on the ra
 eccentricity of the cage beyond the land clearance.
 
 Tangential ball–raceway forces: model 0 none; model 1 a *regularised Coulomb stand-in
-for tests* (not a lubricant model): on n slices of the contact ellipse along its major
-axis (load share from integrating the Hertz pressure over the slice, seed 001 eq. 1)
-the force opposes the slice's sliding velocity (seed 001 eqs. 2–3),
+for tests* (not a lubricant model): on the n slices of the contact ellipse of
+:mod:`bearingsim.contact.slices` (load share and load centroid of each strip, seed 001 eq. 1,
+points on the deformed surface) the force opposes the slice's sliding velocity (seed 001 eqs. 2–3),
 μ = μ₀ s/√(s² + s₀²) with s = |v_s|/u_roll the slide-roll ratio; model 2 the
 lubricated sliced-ellipse kernel :func:`bearingsim.contact.slices.contact_traction`.
 """
@@ -45,41 +48,6 @@ from numba import njit
 from ..contact import slices as _sl
 from ..statics import _kernels as kn
 from . import layout as ly
-
-# diagnostics columns (re-exported: ``forces.D_QI``, ``forces.GD_PI`` ... keep working)
-from .layout import (  # noqa: E402, F401
-    D_AI,
-    D_AO,
-    D_BETA,
-    D_DI,
-    D_DO,
-    D_PC,
-    D_PI,
-    D_PO,
-    D_QC,
-    D_QI,
-    D_QO,
-    D_SRI,
-    D_SRO,
-    D_WM,
-    D_WR,
-    GD_ECAGE,
-    GD_EPOT,
-    GD_FA,
-    GD_FRY,
-    GD_FRZ,
-    GD_MY,
-    GD_MZ,
-    GD_PC,
-    GD_PI,
-    GD_PL,
-    GD_PO,
-    GD_TQI,
-    GD_TQO,
-    GD_W,
-    NDB,
-    NDG,
-)
 
 # the load and speed kernels (re-exported: ``forces.loads_at``, ``forces.pack_loads`` ... keep working)
 from .loads import constant_loads, load_channel, loads_at, pack_loads, speed_at  # noqa: F401
@@ -951,8 +919,8 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
 def evaluate(model, t, y, loadspec, want_diag=True):
     """Python helper: (dy, diag, gdiag) at (t, y)."""
     dy = np.zeros_like(y)
-    diag = np.zeros((model.n_balls if want_diag else 0, NDB))
-    gdiag = np.zeros(NDG)
+    diag = np.zeros((model.n_balls if want_diag else 0, ly.NDB))
+    gdiag = np.zeros(ly.NDG)
     rhs(t, y, dy, model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.cage_modes, model.lub_array(),
         loadspec, diag, gdiag)
     return dy, diag, gdiag
@@ -967,8 +935,16 @@ def rhs_args(t, y, dy, a):
 def args_of(model, loadspec, diag=None, gdiag=None):
     """The argument tuple of :func:`rhs_args` (diagnostics off unless arrays are given)."""
     if diag is None:
-        diag = np.zeros((0, NDB))
+        diag = np.zeros((0, ly.NDB))
     if gdiag is None:
-        gdiag = np.zeros(NDG)
+        gdiag = np.zeros(ly.NDG)
     return (model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.cage_modes, model.lub_array(), loadspec,
             diag, gdiag)
+
+
+def __getattr__(name: str):
+    """The diagnostics columns (``forces.D_QI``, ``forces.GD_PI`` ...) are those of :mod:`.layout` (kept
+    importable from here)."""
+    if name.startswith(("D_", "GD_")) or name in ("NDB", "NDG"):
+        return getattr(ly, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -29,71 +29,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..statics import _kernels as kn
-
-# the array layouts (re-exported here: ``model.N_RING``, ``model.C_MASS`` ... keep working)
-from .layout import (  # noqa: F401
-    C_BALL0,
-    C_CLAND,
-    C_CLR,
-    C_GUIDE,
-    C_IP,
-    C_IT,
-    C_KC,
-    C_KLAND,
-    C_MASS,
-    C_MODE0,
-    C_MU,
-    C_MULAND,
-    C_NMODES,
-    C_POCKET,
-    C_PSI0,
-    C_RLAND,
-    C_RP,
-    C_SHAPE,
-    C_XP,
-    C_Z,
-    DOF,
-    G_ALPHA,
-    G_CAGE_ON,
-    G_GX,
-    G_IPR,
-    G_ITR,
-    G_MR,
-    G_MU0,
-    G_NSL,
-    G_RING_FIXED,
-    G_S0,
-    G_TRAC,
-    G_TRAMP,
-    G_VREF,
-    G_W0,
-    G_W1,
-    G_XL,
-    GUIDANCE,
-    N_BALL,
-    N_CAGE,
-    N_RING,
-    NCP,
-    NGP,
-    NROWX,
-    POCKET_SHAPES,
-    TRACTION_MODELS,
-    X_CAI,
-    X_CAO,
-    X_CBI,
-    X_CBO,
-    X_EPI,
-    X_EPO,
-    X_RDI,
-    X_RDO,
-    X_RGO,
-    X_RXI,
-    X_RXO,
-    X_RYI,
-    X_RYO,
-    X_XGI,
-    X_XGO,
-)
+from . import layout as ly
 
 
 @dataclass
@@ -137,27 +73,27 @@ class Model:
     @property
     def n_modes(self) -> int:
         """Modal coordinates of all elastic cages."""
-        return int(self.cp[:, C_NMODES].sum()) if self.n_cages else 0
+        return int(self.cp[:, ly.C_NMODES].sum()) if self.n_cages else 0
 
     @property
     def n_state(self) -> int:
-        return N_RING + N_BALL * self.n_balls + N_CAGE * self.n_cages + 2 * self.n_modes
+        return ly.N_RING + ly.N_BALL * self.n_balls + ly.N_CAGE * self.n_cages + 2 * self.n_modes
 
     @property
     def cage_offset(self) -> int:
-        return N_RING + N_BALL * self.n_balls
+        return ly.N_RING + ly.N_BALL * self.n_balls
 
     def ball_slice(self, k: int) -> slice:
-        o = N_RING + N_BALL * k
-        return slice(o, o + N_BALL)
+        o = ly.N_RING + ly.N_BALL * k
+        return slice(o, o + ly.N_BALL)
 
     def cage_slice(self, c: int) -> slice:
-        o = self.cage_offset + N_CAGE * c
-        return slice(o, o + N_CAGE)
+        o = self.cage_offset + ly.N_CAGE * c
+        return slice(o, o + ly.N_CAGE)
 
     def mode_slices(self, c: int) -> tuple[slice, slice]:
         """(η, η̇) of cage c in the state (empty for a rigid cage)."""
-        o, n = int(self.cp[c, C_MODE0]), int(self.cp[c, C_NMODES])
+        o, n = int(self.cp[c, ly.C_MODE0]), int(self.cp[c, ly.C_NMODES])
         return slice(o, o + n), slice(o + n, o + 2 * n)
 
 
@@ -172,37 +108,37 @@ def pocket_geometry(ball_diameter: float, shape: str = "sphere", opening_deg: fl
     surface point nearest the ball centre in closed form (:func:`bearingsim.dynamics.forces.pocket_point`).
     """
     if shape == "sphere":
-        return POCKET_SHAPES[shape], math.radians(opening_deg)
+        return ly.POCKET_SHAPES[shape], math.radians(opening_deg)
     if shape == "cylinder":
-        return POCKET_SHAPES[shape], 0.2 * ball_diameter
+        return ly.POCKET_SHAPES[shape], 0.2 * ball_diameter
     raise InputError("cage.pocket_shape", f"unknown pocket shape {shape!r}", "use sphere or cylinder")
 
 
 def row_extras(bearing, rows: np.ndarray) -> np.ndarray:
     """Per-row contact constants (ellipse size, conformal radius, groove-centre circles)."""
     bearings = bearing_rows(bearing, rows.shape[0])
-    rx = np.zeros((rows.shape[0], NROWX))
+    rx = np.zeros((rows.shape[0], ly.NROWX))
     for r, b in enumerate(bearings):
         par = rows[r]
         ci = b.contact(1.0, True)
         co = b.contact(1.0, False)
         d = b.ball_diameter
-        rx[r, X_CAI] = ci.a
-        rx[r, X_CBI] = ci.b
-        rx[r, X_CAO] = co.a
-        rx[r, X_CBO] = co.b
+        rx[r, ly.X_CAI] = ci.a
+        rx[r, ly.X_CBI] = ci.b
+        rx[r, ly.X_CAO] = co.a
+        rx[r, ly.X_CBO] = co.b
         fi, fo = b.inner_conformity, b.outer_conformity
-        rx[r, X_RDI] = 2 * fi * d / (2 * fi + 1)
-        rx[r, X_RDO] = 2 * fo * d / (2 * fo + 1)
+        rx[r, ly.X_RDI] = 2 * fi * d / (2 * fi + 1)
+        rx[r, ly.X_RDO] = 2 * fo * d / (2 * fo + 1)
         s = par[kn.P_SIGN]
-        rx[r, X_XGI] = par[kn.P_XROW] + s * (par[kn.P_XIC] + par[kn.P_AXOFF])
-        rx[r, X_XGO] = par[kn.P_XROW] + s * (par[kn.P_XIC] - par[kn.P_DX0])
-        rx[r, X_RGO] = par[kn.P_RIC] - par[kn.P_DR0]
-        rx[r, X_EPI] = b.effective_modulus
-        rx[r, X_EPO] = b.effective_modulus
+        rx[r, ly.X_XGI] = par[kn.P_XROW] + s * (par[kn.P_XIC] + par[kn.P_AXOFF])
+        rx[r, ly.X_XGO] = par[kn.P_XROW] + s * (par[kn.P_XIC] - par[kn.P_DX0])
+        rx[r, ly.X_RGO] = par[kn.P_RIC] - par[kn.P_DR0]
+        rx[r, ly.X_EPI] = b.effective_modulus
+        rx[r, ly.X_EPO] = b.effective_modulus
         rxi, ryi = b.raceway_radii(True)
         rxo, ryo = b.raceway_radii(False)
-        rx[r, X_RXI], rx[r, X_RYI], rx[r, X_RXO], rx[r, X_RYO] = rxi, ryi, rxo, ryo
+        rx[r, ly.X_RXI], rx[r, ly.X_RYI], rx[r, ly.X_RXO], rx[r, ly.X_RYO] = rxi, ryi, rxo, ryo
     return rx
 
 
@@ -272,9 +208,9 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
     """
     from ..statics.jones_harris import rows_of
 
-    if traction not in TRACTION_MODELS:
+    if traction not in ly.TRACTION_MODELS:
         raise InputError("traction", f"unknown traction model {traction!r}", "use none, coulomb or slices")
-    if guidance not in GUIDANCE:
+    if guidance not in ly.GUIDANCE:
         raise InputError("cage.guidance", f"unknown guidance {guidance!r}", "use balls, outer-land or inner-land")
     if not ring_mass > 0:
         raise InputError("inner_ring.mass", f"must be positive, got {ring_mass!r} kg", 'e.g. "3 kg"')
@@ -289,8 +225,8 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
             ball_row.append(r)
             ball_psi.append(rows[r, kn.P_PSI0] + 2 * math.pi * j / z)
     ball_row = np.array(ball_row, dtype=np.int64)
-    gp = np.zeros(NGP)
-    gp[G_MR] = ring_mass
+    gp = np.zeros(ly.NGP)
+    gp[ly.G_MR] = ring_mass
     rin = 0.5 * (rows[0, kn.P_DM] - rows[0, kn.P_D])
     if ring_inertia is None:
         it, ip = 0.5 * ring_mass * rin**2, ring_mass * rin**2
@@ -298,17 +234,17 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
         it, ip = ring_inertia
     if not (it > 0 and ip > 0):
         raise InputError("inner_ring.inertia", "moments of inertia must be positive", 'e.g. "0.01 kg*m^2"')
-    gp[G_ITR], gp[G_IPR] = it, ip
-    gp[G_GX:G_GX + 3] = gravity
-    gp[G_ALPHA] = damping_alpha
-    gp[G_TRAC] = TRACTION_MODELS[traction]
-    gp[G_MU0], gp[G_S0], gp[G_NSL] = mu0, s0, n_slices
-    gp[G_XL] = load_point
-    gp[G_W0], gp[G_W1], gp[G_TRAMP] = speed
-    gp[G_RING_FIXED] = 1.0 if ring_fixed else 0.0
-    gp[G_VREF] = v_ref
-    gp[G_CAGE_ON] = 1.0 if cage else 0.0
-    cp = np.zeros((nrow, NCP))
+    gp[ly.G_ITR], gp[ly.G_IPR] = it, ip
+    gp[ly.G_GX:ly.G_GX + 3] = gravity
+    gp[ly.G_ALPHA] = damping_alpha
+    gp[ly.G_TRAC] = ly.TRACTION_MODELS[traction]
+    gp[ly.G_MU0], gp[ly.G_S0], gp[ly.G_NSL] = mu0, s0, n_slices
+    gp[ly.G_XL] = load_point
+    gp[ly.G_W0], gp[ly.G_W1], gp[ly.G_TRAMP] = speed
+    gp[ly.G_RING_FIXED] = 1.0 if ring_fixed else 0.0
+    gp[ly.G_VREF] = v_ref
+    gp[ly.G_CAGE_ON] = 1.0 if cage else 0.0
+    cp = np.zeros((nrow, ly.NCP))
     b0 = 0
     d0 = brs[0].ball_diameter
     clr = 0.02 * d0 if pocket_clearance is None else pocket_clearance
@@ -320,30 +256,30 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
         mball = par[kn.P_MASS]
         mc = 0.1 * z * mball if cage_mass is None else cage_mass
         rp = 0.5 * par[kn.P_DM]
-        cp[r, C_MASS] = mc
-        cp[r, C_IP] = mc * rp**2
-        cp[r, C_IT] = 0.5 * mc * rp**2
+        cp[r, ly.C_MASS] = mc
+        cp[r, ly.C_IP] = mc * rp**2
+        cp[r, ly.C_IT] = 0.5 * mc * rp**2
         # pocket centres at the axial position of the ball centres in the centred position
         s = par[kn.P_SIGN]
         lo = par[kn.P_RO]
         a0 = math.atan2(par[kn.P_DX0], par[kn.P_DR0]) if (par[kn.P_DX0] != 0 or par[kn.P_DR0] != 0) else 0.0
-        cp[r, C_XP] = rowx[r, X_XGO] + s * lo * math.sin(a0)
-        cp[r, C_RP] = rowx[r, X_RGO] + lo * math.cos(a0)
-        cp[r, C_CLR] = clr
-        cp[r, C_KC] = cage_contact_constant(d, b.ball_material) if cage_stiffness is None else cage_stiffness
-        cp[r, C_MU] = cage_mu
-        cp[r, C_GUIDE] = GUIDANCE[guidance]
+        cp[r, ly.C_XP] = rowx[r, ly.X_XGO] + s * lo * math.sin(a0)
+        cp[r, ly.C_RP] = rowx[r, ly.X_RGO] + lo * math.cos(a0)
+        cp[r, ly.C_CLR] = clr
+        cp[r, ly.C_KC] = cage_contact_constant(d, b.ball_material) if cage_stiffness is None else cage_stiffness
+        cp[r, ly.C_MU] = cage_mu
+        cp[r, ly.C_GUIDE] = ly.GUIDANCE[guidance]
         if guidance == "outer-land":
-            cp[r, C_RLAND] = rp + 0.3 * d
+            cp[r, ly.C_RLAND] = rp + 0.3 * d
         elif guidance == "inner-land":
-            cp[r, C_RLAND] = rp - 0.3 * d
-        cp[r, C_CLAND] = land_clearance
-        cp[r, C_KLAND] = cp[r, C_KC]
-        cp[r, C_MULAND] = cage_mu
-        cp[r, C_PSI0] = par[kn.P_PSI0]
-        cp[r, C_Z] = z
-        cp[r, C_BALL0] = b0
-        cp[r, C_SHAPE], cp[r, C_POCKET] = pocket_geometry(d, pocket_shape)
+            cp[r, ly.C_RLAND] = rp - 0.3 * d
+        cp[r, ly.C_CLAND] = land_clearance
+        cp[r, ly.C_KLAND] = cp[r, ly.C_KC]
+        cp[r, ly.C_MULAND] = cage_mu
+        cp[r, ly.C_PSI0] = par[kn.P_PSI0]
+        cp[r, ly.C_Z] = z
+        cp[r, ly.C_BALL0] = b0
+        cp[r, ly.C_SHAPE], cp[r, ly.C_POCKET] = pocket_geometry(d, pocket_shape)
         b0 += z
     lubs = None
     if traction == "slices":
@@ -354,10 +290,12 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
                              'e.g. lubricant = "iso-vg-68"')
         lubs = np.zeros((2 * nrow, slices.L_SIZE))
         for r in range(nrow):
-            lubs[2 * r] = slices.pack_lubrication_parameters(lubricant, temperature, rowx[r, X_EPI], rowx[r, X_RXI],
-                                                             rowx[r, X_RYI], **(lubrication or {}))
-            lubs[2 * r + 1] = slices.pack_lubrication_parameters(lubricant, temperature, rowx[r, X_EPO],
-                                                                 rowx[r, X_RXO], rowx[r, X_RYO], **(lubrication or {}))
+            lubs[2 * r] = slices.pack_lubrication_parameters(lubricant, temperature, rowx[r, ly.X_EPI],
+                                                             rowx[r, ly.X_RXI], rowx[r, ly.X_RYI],
+                                                             **(lubrication or {}))
+            lubs[2 * r + 1] = slices.pack_lubrication_parameters(lubricant, temperature, rowx[r, ly.X_EPO],
+                                                                 rowx[r, ly.X_RXO], rowx[r, ly.X_RYO],
+                                                                 **(lubrication or {}))
     model = Model(rows=rows, rowx=rowx, ball_row=ball_row, ball_psi=np.array(ball_psi), gp=gp, cp=cp,
                   names={"bearing": getattr(bearing, "name", "bearing")}, lubs=lubs)
     if cage_modes or cage_ring or modal_damping is not None:
@@ -372,7 +310,7 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
         if cage_stiffness is None:  # the pockets touch the ring's material (e.g. a polymer cage), not steel
             for r in range(nrow):
                 ring = model.cage_fe[r].fe.ring
-                cp[r, C_KC] = cp[r, C_KLAND] = cage_contact_constant(rows[r, kn.P_D], brs[r].ball_material,
+                cp[r, ly.C_KC] = cp[r, ly.C_KLAND] = cage_contact_constant(rows[r, kn.P_D], brs[r].ball_material,
                                                                      ring.young_modulus, ring.poisson)
     return model
 
@@ -392,7 +330,7 @@ def initial_state(model: Model, static=None, speed: float | None = None) -> np.n
     """
     y = np.zeros(model.n_state)
     rows = model.rows
-    omega = model.gp[G_W0] if speed is None else speed
+    omega = model.gp[ly.G_W0] if speed is None else speed
     if static is not None:
         y[0:5] = static.displacement
     for k in range(model.n_balls):
@@ -411,12 +349,12 @@ def initial_state(model: Model, static=None, speed: float | None = None) -> np.n
             a0 = math.atan2(par[kn.P_DX0], par[kn.P_DR0])
             x1, x2 = par[kn.P_RO] * math.sin(a0), par[kn.P_RO] * math.cos(a0)
             wm = wr = beta = 0.0
-        xg = model.rowx[r, X_XGO]
-        rg = model.rowx[r, X_RGO]
+        xg = model.rowx[r, ly.X_XGO]
+        rg = model.rowx[r, ly.X_RGO]
         xb = xg + s * x1
         rb = rg + x2
         cps, sps = math.cos(psi), math.sin(psi)
-        o = N_RING + N_BALL * k
+        o = ly.N_RING + ly.N_BALL * k
         y[o:o + 3] = (xb, rb * cps, rb * sps)
         y[o + 3:o + 6] = (0.0, -wm * rb * sps, wm * rb * cps)
         # angular velocity is a pseudo-vector: mirroring the row (s = -1) keeps its axial
@@ -425,9 +363,9 @@ def initial_state(model: Model, static=None, speed: float | None = None) -> np.n
         y[o + 7] = -s * wr * math.sin(beta) * cps
         y[o + 8] = -s * wr * math.sin(beta) * sps
     for c in range(model.n_cages):
-        o = model.cage_offset + N_CAGE * c
+        o = model.cage_offset + ly.N_CAGE * c
         cp = model.cp[c]
-        b0, z = int(cp[C_BALL0]), int(cp[C_Z])
+        b0, z = int(cp[ly.C_BALL0]), int(cp[ly.C_Z])
         wm = 0.0
         if static is not None:
             wm = float(np.mean(static.balls["orbital_speed_rad_s"][b0:b0 + z])) * (1.0 if omega >= 0 else -1.0)
@@ -457,13 +395,13 @@ def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-
     atol[8:10] = tol * speed_scale / rpitch
     rtol[5:10] = tol
     for k in range(model.n_balls):
-        o = N_RING + N_BALL * k
+        o = ly.N_RING + ly.N_BALL * k
         atol[o:o + 3] = alen
         atol[o + 3:o + 6] = tol * speed_scale
         atol[o + 6:o + 9] = tol * rate_scale
         rtol[o + 3:o + 9] = tol
     for c in range(model.n_cages):
-        o = model.cage_offset + N_CAGE * c
+        o = model.cage_offset + ly.N_CAGE * c
         atol[o:o + 3] = alen
         atol[o + 3:o + 6] = tol * speed_scale
         atol[o + 6:o + 9] = aang
@@ -472,7 +410,7 @@ def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-
         rtol[o + 9:o + 12] = tol
         # modal coordinates (mass-normalised: a pocket moves by ≈ η / √m_cage)
         eta, etad = model.mode_slices(c)
-        sm = math.sqrt(model.cp[c, C_MASS])
+        sm = math.sqrt(model.cp[c, ly.C_MASS])
         atol[eta] = alen * sm
         atol[etad] = tol * speed_scale * sm
         rtol[etad] = tol
@@ -482,16 +420,24 @@ def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-
 def describe_component(model: Model, i: int) -> str:
     """Name of state component i (for error messages: the body involved)."""
     if i < 10:
-        return f"inner ring {DOF[i % 5]}{' rate' if i >= 5 else ''}"
+        return f"inner ring {ly.DOF[i % 5]}{' rate' if i >= 5 else ''}"
     if i < model.cage_offset:
-        k = (i - N_RING) // N_BALL
-        part = ("position", "velocity", "angular velocity")[((i - N_RING) % N_BALL) // 3]
+        k = (i - ly.N_RING) // ly.N_BALL
+        part = ("position", "velocity", "angular velocity")[((i - ly.N_RING) % ly.N_BALL) // 3]
         return f"ball {k} (row {int(model.ball_row[k])}) {part}: its raceway or pocket contacts"
-    if i < model.cage_offset + N_CAGE * model.n_cages:
-        c = (i - model.cage_offset) // N_CAGE
+    if i < model.cage_offset + ly.N_CAGE * model.n_cages:
+        c = (i - model.cage_offset) // ly.N_CAGE
         return f"cage {c}: its pocket or land contacts"
     for c in range(model.n_cages):
         eta, etad = model.mode_slices(c)
         if eta.start <= i < etad.stop:
             return f"cage {c} elastic mode {(i - eta.start) % max(1, eta.stop - eta.start)}: its pocket contacts"
     return f"state component {i}"
+
+
+def __getattr__(name: str):
+    """The layout names (``model.N_RING``, ``model.C_MASS`` ...) are those of :mod:`.layout` (kept importable
+    from here)."""
+    if hasattr(ly, name) and name[:1].isupper():
+        return getattr(ly, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
