@@ -156,7 +156,8 @@ def basic_rating_life(c: float, p: float) -> float:
 
 
 def iso281_life(result) -> float | None:
-    """ISO 281 basic rating life [10^6 rev] from the external loads of a result (None when not applicable)."""
+    """ISO 281 basic rating life [10^6 rev] from the external loads of a result (None when not applicable:
+    no rating, an arrangement outside ISO 281, or no load — an infinite life is not a JSON number)."""
     brg = result.bearing
     c = float(getattr(brg, "dynamic_load_rating", 0.0) or 0.0)
     if c <= 0:
@@ -166,4 +167,4 @@ def iso281_life(result) -> float | None:
         return None
     fr = math.hypot(result.loads.fr_y, result.loads.fr_z)
     p = equivalent_dynamic_load(fr, result.loads.fa, brg.free_contact_angle, nrows)
-    return None if p is None else basic_rating_life(c, p)
+    return None if p is None or not p > 0 else basic_rating_life(c, p)

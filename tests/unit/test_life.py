@@ -88,3 +88,19 @@ def test_iso281_equivalent_load(deg, fr, fa, rows, p):
                                err_msg="ISO 281:2007 table 3, angular contact ball bearings")
     assert life.equivalent_dynamic_load(fr, fa, math.radians(15), rows) is None
     np.testing.assert_allclose(life.basic_rating_life(10e3, p), (10e3 / p) ** 3)
+
+
+def test_iso281_life_without_load_is_none_not_infinity(b218):
+    """No load: P = 0 and L10 = ∞, which ``json.dumps`` writes as the non-JSON token Infinity; the result
+    dictionary gives None (null) instead."""
+    import dataclasses
+    import json
+
+    from bearingsim.life import iso281_life
+    from bearingsim.statics import jones_harris as jh
+
+    b = dataclasses.replace(b218, dynamic_load_rating=100e3)
+    r = jh.solve(b, jh.Loads(), 0.0)
+    assert iso281_life(r) is None
+    assert "Infinity" not in json.dumps(r.to_dict())
+    assert iso281_life(jh.solve(b, jh.Loads(fa=3000.0), 0.0)) > 0
