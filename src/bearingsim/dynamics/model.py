@@ -170,17 +170,18 @@ def cage_contact_constant(ball_diameter: float, ball_material, cage_modulus: flo
     Poisson ratio default to ``cage_steel`` of :mod:`bearingsim.materials`.
 
     Sphere on a flat (Johnson 1985 eq. 4.22): Q = (4/3) E* R^½ δ^(3/2) with R = D/2 and
-    1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂.  The conformal cylindrical pocket is stiffer; this
+    1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂, i.e. Q = (2/3) E′ R^½ δ^(3/2) with the effective modulus E′ = 2 E* of
+    :func:`bearingsim.contact.hertz.effective_modulus`.  The conformal cylindrical pocket is stiffer; this
     is a lower bound chosen so that the pocket contact is not the stiffest time scale.
     """
+    from ..contact.hertz import effective_modulus
     from ..materials import LIBRARY
 
     steel = LIBRARY["cage_steel"]
     cage_modulus = steel.youngs_modulus if cage_modulus is None else cage_modulus
     cage_poisson = steel.poisson_ratio if cage_poisson is None else cage_poisson
-    e_star = 1.0 / ((1 - ball_material.poisson_ratio**2) / ball_material.youngs_modulus
-                    + (1 - cage_poisson**2) / cage_modulus)
-    return 4.0 / 3.0 * e_star * math.sqrt(0.5 * ball_diameter)
+    e_eff = effective_modulus(ball_material.youngs_modulus, ball_material.poisson_ratio, cage_modulus, cage_poisson)
+    return 2.0 / 3.0 * e_eff * math.sqrt(0.5 * ball_diameter)
 
 
 def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, float] | None = None,
