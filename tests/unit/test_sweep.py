@@ -90,6 +90,19 @@ def test_unreachable_scheduler_fails_fast_and_writes_nothing(tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.parametrize("address", ["", "foo", "tcp://127.0.0.1:notaport", "http://127.0.0.1:8786",
+                                     "tcp://127.0.0.1:99999", "tcp://127.0.0.1"])
+def test_malformed_scheduler_address_is_refused_before_a_client_is_made(tmp_path, address):
+    """A Client made from a malformed address failed late (6 s) with a traceback from its destructor."""
+    pytest.importorskip("distributed")
+    t0 = time.monotonic()
+    with pytest.raises(InputError) as exc:
+        sweep.map_grid("skf-7011-cdga-hc", fa="100:200:2", scheduler=address, out=tmp_path / "m.nc")
+    assert exc.value.field == "scheduler" and "tcp://127.0.0.1:8786" in exc.value.fix
+    assert time.monotonic() - t0 < 1.0
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_interrupted_map_leaves_no_file(tmp_path, monkeypatch):
     calls = {"n": 0}
     real = sweep.solve_block
