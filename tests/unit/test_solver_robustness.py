@@ -230,3 +230,17 @@ def test_one_failing_point_does_not_lose_the_batch(b7011, monkeypatch):
     for i in (0, 2):
         np.testing.assert_allclose(m.displacement[i], ref.displacement[i], rtol=1e-7, atol=1e-13)
     assert np.all(np.isnan(m.displacement[1]))
+
+
+def test_result_dictionary_is_valid_json_with_non_finite_values(b7011):
+    """NaN ball speeds (a state outside the rolling relations) and infinite values become null: json.dumps
+    with allow_nan=False (strict JSON) accepts the dictionary."""
+    import json
+
+    r = jh.solve(b7011, jh.Loads(fa=3000.0), 1000.0)
+    r.balls["orbital_speed_rad_s"][0] = math.nan
+    r.balls["spin_speed_rad_s"][1] = math.inf
+    d = r.to_dict()
+    json.dumps(d, allow_nan=False)
+    assert d["balls"][0]["orbital_speed_rad_s"] is None and d["balls"][1]["spin_speed_rad_s"] is None
+    assert d["balls"][2]["orbital_speed_rad_s"] == pytest.approx(float(r.balls["orbital_speed_rad_s"][2]))

@@ -175,7 +175,7 @@ class StaticResult:
             from .arrangements import row_results
 
             out["rows"] = row_results(self)
-        return out
+        return _json_safe(out)
 
     @property
     def cage_speed(self) -> float:
@@ -190,6 +190,18 @@ class StaticResult:
         if not loaded.any():
             return float(np.mean(w)) if len(w) else 0.0
         return float(np.mean(w[loaded]))
+
+
+def _json_safe(v):
+    """Non-finite floats (NaN ball speeds of a state outside the rolling relations, an infinite life) → None,
+    so that ``json.dumps`` writes valid JSON (null) instead of the tokens NaN/Infinity."""
+    if isinstance(v, dict):
+        return {k: _json_safe(x) for k, x in v.items()}
+    if isinstance(v, list):
+        return [_json_safe(x) for x in v]
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
 
 
 def internal_clearance(bearing) -> dict:
