@@ -34,6 +34,16 @@ raceways must apply to the ball is dH/dt = J |ω_R| ω_m sin β e_ψ (derivation
 docs/physics.md).  Ball speeds ω_m, ω_R and pitch angle β are Jones' rolling relations
 (no slip at the contact centres; see :func:`kinematics`) evaluated at the current
 contact angles; their derivatives are carried through the analytic Jacobian.
+
+Robustness (issue 11): every kernel is compiled with ``error_model="numpy"`` — a zero divisor (Jones'
+relations at contact angles where they have no solution, ``po + pi = 0`` or ``cos α_i = γ′``) gives NaN,
+never an exception — and the residual norms propagate NaN (:func:`_scaled_norm`), so a failed evaluation
+is a rejected trial, never a small residual.  A singular ring Jacobian gets a Levenberg–Marquardt step
+(:func:`regularised_step`) or status 2, never ``np.linalg.solve``'s LinAlgError.  Status codes of the ring
+solvers: 0 converged, 1 iteration limit, 2 singular, 3 loaded contact past the groove bottom of an angular
+contact row, 6 loaded contact at |α| ≥ 90° (:func:`contact_past_groove_edge`); the callers add 4 (a ball's
+own balance failed), 5 (the ring balance fails the independent re-solve, :func:`equilibrium_residual`),
+7 (internal error of one point in a batch) and 8 (no ball loaded at the inner raceway: a free ring).
 """
 
 from __future__ import annotations
