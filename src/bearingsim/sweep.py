@@ -678,12 +678,12 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
             for b in blocks:
                 done(b, solve_block(bearing, axes, b, control))
         else:
-            from concurrent.futures import ProcessPoolExecutor, as_completed as cf_completed
-
             import multiprocessing as mp
+            from concurrent.futures import ProcessPoolExecutor
+            from concurrent.futures import as_completed as cf_completed
+            from concurrent.futures.process import BrokenProcessPool
 
             ctx = mp.get_context("spawn")
-            from concurrent.futures.process import BrokenProcessPool
 
             with ProcessPoolExecutor(max_workers=min(nworkers, len(blocks)), mp_context=ctx) as ex:
                 futs = {ex.submit(solve_block, bearing, axes, b, control): b for b in blocks}
