@@ -10,9 +10,13 @@ Execution: the grid is cut into rectangular blocks of at most ``chunk_points`` p
 dimension split first, then whole rows, whole planes, ... outwards; :func:`_blocks`).  Each block is
 solved independently and deterministically, so the result does not depend on where the blocks run:
 in this process (``workers=1``), in a local process pool (default, one worker per core), or on a Dask
-cluster (``scheduler="tcp://host:port"`` or a ``distributed.Client``).  With ``out=path`` the blocks are
-streamed into a netCDF file under a temporary name, renamed at the end; an interrupt or an error
-removes the temporary file (never a corrupt map).
+cluster (``scheduler="tcp://host:port"`` or a ``distributed.Client``; a worker that dies has its block
+run again elsewhere, a cluster without workers for ``worker_timeout`` or a lost scheduler is a one-line
+:class:`MapError`).  With ``out=path`` the blocks are streamed into a netCDF file under a hidden
+temporary name in the same folder (mode 0666 less the user's umask), renamed at the end; an interrupt
+or an error removes the temporary file (never a corrupt map), and the leftover of a killed map process
+is removed by the next map to the same name.  A write error (full disk) is an :class:`InputError` on
+``out``.
 
 Grid axes (SI inside; the CLI parses units):
     preload [N]   (bearing systems only; each value rebuilds the set's preload offsets)
