@@ -11,7 +11,8 @@ Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"
 tolerance 1e-7 over the same (short) duration and prints the largest deviation of each
 ring coordinate relative to its range.
 The numba compilation is excluded (a 0.05 ms warm-up run compiles first).  Peak memory
-is the process's maximum resident set size.
+is the process's maximum resident set size.  The CPU seconds (process time) are the steadier
+figure on a shared machine, where the wall time also counts the waits for a core.
 """
 
 from __future__ import annotations
@@ -51,6 +52,7 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
         simulate(warm, out=Path(d) / "warm.nc")
         full = dataclasses.replace(case, duration=duration or case.duration)
         t0 = time.perf_counter()
+        c0 = time.process_time()
         if profile:
             import cProfile
             import pstats
@@ -62,6 +64,7 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
             pr.disable()
             pstats.Stats(pr).sort_stats("cumulative").print_stats(12)
         wall = time.perf_counter() - t0
+        cpu = time.process_time() - c0
         if keep is not None:
             ds = res.to_xarray()
             keep.append(ds["inner_ring_displacement"].values.copy())
@@ -69,7 +72,8 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     out = {"case": name, "traction": full.traction, "integrator": full.method, "tolerance": full.tolerance,
            "n_slices": full.n_slices, "cage_modes": cage_modes, "simulated_s": full.duration, "wall_s": wall,
-           "wall_per_simulated_s": wall / full.duration, "steps": res.summary["steps"],
+           "wall_per_simulated_s": wall / full.duration, "cpu_per_simulated_s": cpu / full.duration,
+           "steps": res.summary["steps"],
            "rejected": res.summary["rejected_steps"], "peak_rss_MB": peak}
     return out
 
@@ -133,7 +137,8 @@ def main(argv=None):
         r = run(name, dur, a.traction, a.profile, a.integrator, a.tolerance, a.n_slices, keep, a.cage_modes)
         print(f"case ({r['case']}) traction={r['traction']} integrator={r['integrator']} tol={r['tolerance']:g} "
               f"n_slices={r['n_slices']} cage_modes={r['cage_modes']}: {r['simulated_s'] * 1e3:.4g} ms simulated in "
-              f"{r['wall_s']:.3g} s -> {r['wall_per_simulated_s']:.4g} wall s per simulated s; "
+              f"{r['wall_s']:.3g} s -> {r['wall_per_simulated_s']:.4g} wall s per simulated s "
+              f"({r['cpu_per_simulated_s']:.4g} CPU s); "
               f"{r['steps']} steps ({r['rejected']} rejected); peak RSS {r['peak_rss_MB']:.0f} MB")
         sys.stdout.flush()
         if a.accuracy:
