@@ -77,6 +77,16 @@ def test_bad_input(tmp_path):
         hd.run_study(const, cycles=2)
 
 
+def test_cell_case_output_interval_needs_its_unit():
+    data = read_toml(CASE, "case")
+    data["output_interval"] = 5e-5  # a bare number in a case file: which unit? (refused as in case_from_dict)
+    with pytest.raises(InputError, match="output_interval.*no unit"):
+        hd.cell_case(data, CASE.parent, 100.0, 50.0, 3)
+    del data["output_interval"]
+    with pytest.raises(InputError, match="output_interval"):
+        hd.cell_case(data, CASE.parent, 100.0, 50.0, 3)
+
+
 def test_cli_bad_input_is_one_line_and_exit_2(tmp_path):
     import subprocess
     import sys

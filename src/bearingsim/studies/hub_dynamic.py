@@ -146,7 +146,7 @@ def _set_frequency(spec, f_text: str):
 def cell_case(case_data: dict, base: Path | None, speed_kmh: float, frequency_hz: float, cycles: int):
     """The case of one (speed, frequency) run (see the module docstring)."""
     from ..dynamics.case import case_from_dict
-    from ..units import parse_quantity
+    from ..units import file_input, parse_quantity
 
     d = copy.deepcopy(case_data)
     d["speed"] = f"{vehicle_speed_to_shaft(speed_kmh) * 30 / math.pi!r} rpm"
@@ -156,7 +156,10 @@ def cell_case(case_data: dict, base: Path | None, speed_kmh: float, frequency_hz
                          '{ offset = "0 N*m", amplitude = "600 N*m", frequency = "50 Hz" }')
     d["loads"] = {k: _set_frequency(v, f"{frequency_hz!r} Hz") for k, v in loads.items()}
     d["duration"] = f"{cycles / frequency_hz!r} s"
-    dt = parse_quantity(d["output_interval"], "time", "output_interval")
+    if "output_interval" not in d:
+        raise InputError("output_interval", "missing from the case file", 'add e.g. output_interval = "0.05 ms"')
+    with file_input():  # a field of the case file: a bare number needs its unit, as in case_from_dict
+        dt = parse_quantity(d["output_interval"], "time", "output_interval")
     d["output_interval"] = f"{min(dt, 1.0 / (200.0 * frequency_hz))!r} s"
     return case_from_dict(d, base=base)
 
