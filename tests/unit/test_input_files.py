@@ -177,7 +177,7 @@ def test_cli_simulate_bad_case_file(bad_files, kind, tmp_path):
 from hypothesis import HealthCheck, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from bearingsim.dynamics.case import _KEYS as CASE_KEYS  # noqa: E402
+from bearingsim.io.case import _KEYS as CASE_KEYS  # noqa: E402
 from bearingsim.dynamics.case import case_from_dict  # noqa: E402
 from bearingsim.lubricants import lubricant_from_dict  # noqa: E402
 
@@ -209,7 +209,7 @@ def _only_input_error(fn, data):
 
 
 @_FUZZ
-@given(upd=st.dictionaries(st.sampled_from(sorted(io._BEARING_KEYS) + ["rows", "arrangement", "row", "preload"]),
+@given(upd=st.dictionaries(st.sampled_from(sorted(io.bearing._BEARING_KEYS) + ["rows", "arrangement", "row", "preload"]),
                            _VALUE, max_size=4), drop=st.sets(st.sampled_from(sorted(_BEARING)), max_size=2))
 def test_fuzz_bearing_tables(upd, drop):
     _only_input_error(io.bearing_from_dict, {k: v for k, v in _BEARING.items() if k not in drop} | upd)

@@ -1,0 +1,34 @@
+"""Every file format of bearingsim, at the edge: units parsed once into SI floats when reading, and
+written as CF/UDUNITS strings when writing.
+
+==========================  ==========================================================================
+:mod:`.files`               path checks and the one TOML reader (:func:`read_text`, :func:`read_toml`)
+:mod:`.bearing`             bearing files and the built-in catalogue → ``BallBearing`` (sets and
+                            double-row units are handed to :mod:`bearingsim.statics.arrangements`)
+:mod:`.lubricant`           lubricant files and the built-in library → ``Lubricant``
+:mod:`.case`                case files of the dynamic engine → ``Case``
+:mod:`.netcdf`              the netCDF writer of maps and dynamic runs (temporary file, atomic rename)
+==========================  ==========================================================================
+
+The names that ``bearingsim.io`` had before it became a package (``load_bearing``, ``bearing_from_dict``,
+``read_toml`` ...) are importable from here.  The case reader is forwarded on first use (it imports the
+dynamics package).
+"""
+
+from __future__ import annotations
+
+from .bearing import bearing_from_dict, catalog_entries, catalog_names, load_bearing, resolve_bearing_data
+from .files import MAX_FILE_BYTES, check_path, parse_toml, read_text, read_toml
+from .lubricant import get_lubricant, library, library_names, lubricant_from_dict
+
+__all__ = ["MAX_FILE_BYTES", "check_path", "read_text", "parse_toml", "read_toml", "catalog_names",
+           "catalog_entries", "resolve_bearing_data", "load_bearing", "bearing_from_dict", "lubricant_from_dict",
+           "get_lubricant", "library", "library_names", "case_from_dict", "load_case"]
+
+
+def __getattr__(name: str):
+    if name in ("case_from_dict", "load_case"):
+        from . import case as _case
+
+        return getattr(_case, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
