@@ -12,7 +12,8 @@ solved independently and deterministically, so the result does not depend on whe
 in this process (``workers=1``), in a local process pool (default, one worker per core), or on a Dask
 cluster (``scheduler="tcp://host:port"`` or a ``distributed.Client``; a worker that dies has its block
 run again elsewhere, a cluster without workers for ``worker_timeout`` or a lost scheduler is a one-line
-:class:`MapError`).  With ``out=path`` the blocks are streamed into a netCDF file under a hidden
+:class:`MapError`).  With ``out=path`` the blocks are streamed (:class:`bearingsim.io.netcdf.NetCDFWriter`,
+units spelled as that module says) into a netCDF file under a hidden
 temporary name in the same folder (mode 0666 less the user's umask), renamed at the end; an interrupt
 or an error removes the temporary file (never a corrupt map), and the leftover of a killed map process
 is removed by the next map to the same name.  A write error (full disk) is an :class:`InputError` on
@@ -34,6 +35,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import BearingSimError, InputError
+from .io import netcdf as nc
 
 #: grid axes in storage order (outermost first), with their dimension for units.py and SI unit
 AXES = (("preload", "force", "N"), ("fa", "force", "N"), ("fr", "force", "N"), ("fr_z", "force", "N"),
@@ -216,9 +218,11 @@ def solve_block(bearing, axes: dict, block: tuple, control: str = "outer") -> di
 
 # ---- output ------------------------------------------------------------------------------------
 _VARS = {
-    # name: (source key, extra dims, dtype, units, long name)
-    "displacement": ("q", ("dof",), "f8", "m | rad", "inner-ring displacement (x, y, z, gamma_y, gamma_z)"),
-    "stiffness": ("k", ("dof", "dof2"), "f8", "N/m | N/rad | N m/m | N m/rad", "5x5 stiffness matrix"),
+    # name: (source key, extra dims, dtype, units (bearingsim.io.netcdf.units_attributes), long name)
+    "displacement": ("q", ("dof",), "f8", nc.DOF_UNITS, "inner-ring displacement (x, y, z, gamma_y, gamma_z)"),
+    "stiffness": ("k", ("dof", "dof2"), "f8", nc.STIFFNESS_UNITS,
+                  "5x5 stiffness matrix K[i, j] = dF_i/dq_j (rows: Fa, Fr_y, Fr_z, M_y, M_z; columns: x, y, z, "
+                  "gamma_y, gamma_z)"),
     "status": ("status", (), "i4", "1", "0 converged, 1 iteration limit, 2 singular, 3 contact past groove bottom, "
                "4 a ball not converged, 5 not confirmed by the independent recomputation, 6 contact angle of 90 deg "
                "or more, 7 internal error at this point, 8 free inner ring (no ball loaded)"),
@@ -255,169 +259,72 @@ def _block_var(block_res: dict, key: str):
     return block_res[key]
 
 
-class _MemorySink:
-    def __init__(self, dims, shape):
-        self.dims, self.shape = dims, shape
-        self.data = {}
-        for name, (key, extra, dt, _, _) in _VARS.items():
-            ex = (5,) * len(extra)
-            self.data[name] = np.zeros(shape + ex, dtype=dt)
+def _schema(dims: list, shape: tuple, axes: dict) -> tuple[dict, list]:
+    """Dimensions and variables of a map (:class:`bearingsim.io.netcdf.Variable`): the grid axes (a
+    dimension each when gridded, else a scalar coordinate), the ``dof`` labels and :data:`_VARS`."""
+    dimensions = dict(zip(dims, shape)) | {"dof": 5, "dof2": 5}
+    variables = [nc.Variable(name, (name,) if name in dims else (), u) for name, _, u in AXES]
+    variables += [nc.Variable("dof", ("dof",), dtype=str), nc.Variable("dof2", ("dof2",), dtype=str)]
+    chunk = tuple(1 for _ in dims[:-2]) + tuple(shape[-2:])
+    for name, (_, extra, dt, u, long) in _VARS.items():
+        variables.append(nc.Variable(name, tuple(dims) + extra, u, long, dt, _var_attrs(name),
+                                     (chunk + (5,) * len(extra)) if dims else None))
+    return dimensions, variables
+
+
+def _coordinates(dims: list, axes: dict) -> dict:
+    out = {name: (axes[name] if name in dims else float(axes[name][0])) for name, _, _ in AXES}
+    return out | {"dof": DOF, "dof2": DOF}
+
+
+class _MapSink:
+    """Where the blocks of a map go: a netCDF file (:class:`bearingsim.io.netcdf.NetCDFWriter`, streamed to a
+    temporary file and renamed at the end) when ``path`` is given, else arrays in memory."""
+
+    def __init__(self, path, dims, shape, axes, attrs):
+        self.dims, self.shape, self.axes, self.attrs = dims, shape, axes, attrs
+        self.dimensions, self.variables = _schema(dims, shape, axes)
+        self.file = None
+        self.data = None
+        if path is not None:
+            self.file = nc.NetCDFWriter(path, dims=self.dimensions, variables=self.variables,
+                                        values=_coordinates(dims, axes), attrs=attrs, error=_write_error)
+        else:
+            self.data = {name: np.zeros(shape + (5,) * len(extra), dtype=dt)
+                         for name, (_, extra, dt, _, _) in _VARS.items()}
+
+    @property
+    def final(self) -> Path:
+        return self.file.final
 
     def write(self, block, res):
         for name, (key, _, _, _, _) in _VARS.items():
-            self.data[name][block] = _block_var(res, key)
-
-
-class _NetCDFSink:
-    def __init__(self, path: Path, dims, shape, axes, attrs):
-        import netCDF4
-
-        self.final = Path(path)
-        self.tmp = None
-        self.nc = None
-        try:
-            _remove_stale_parts(self.final)
-            self.tmp = _create_part(self.final)
-            self.nc = netCDF4.Dataset(self.tmp, "w", format="NETCDF4")
-            self._define(dims, shape, axes, attrs)
-        except BaseException as exc:
-            self.abort()
-            if isinstance(exc, OSError | RuntimeError):
-                raise _write_error(self.final, exc) from None
-            raise
-
-    def _define(self, dims, shape, axes, attrs):
-        for d, n in zip(dims, shape):
-            self.nc.createDimension(d, n)
-        self.nc.createDimension("dof", 5)
-        self.nc.createDimension("dof2", 5)
-        units = {name: u for name, _, u in AXES}
-        for name, _, _ in AXES:
-            v = axes[name]
-            if name in dims:
-                var = self.nc.createVariable(name, "f8", (name,))
-                var[:] = v
+            if self.file is not None:
+                try:
+                    values = _block_var(res, key)
+                except OSError as exc:
+                    raise _write_error(self.file.final, exc) from None
+                self.file.write(name, block, values)
             else:
-                var = self.nc.createVariable(name, "f8", ())
-                var.assignValue(float(v[0]))
-            var.units = units[name]
-        self.nc.createVariable("dof", str, ("dof",))[:] = np.array(DOF, dtype=object)
-        self.nc.createVariable("dof2", str, ("dof2",))[:] = np.array(DOF, dtype=object)
-        chunk = tuple(1 for _ in dims[:-2]) + tuple(shape[-2:])
-        for name, (key, extra, dt, u, long) in _VARS.items():
-            var = self.nc.createVariable(name, dt, tuple(dims) + extra, zlib=False,
-                                         chunksizes=(chunk + (5,) * len(extra)) if dims else None)
-            var.units = u
-            var.long_name = long
-            for k, v in _var_attrs(name).items():
-                setattr(var, k, v)
-        for k, v in attrs.items():
-            setattr(self.nc, k, v)
-
-    def write(self, block, res):
-        try:
-            for name, (key, _, _, _, _) in _VARS.items():
-                self.nc.variables[name][block] = _block_var(res, key)
-        except (OSError, RuntimeError) as exc:  # netCDF/HDF5 errors (full disk, I/O): one line, no file
-            raise _write_error(self.final, exc) from None
+                self.data[name][block] = _block_var(res, key)
 
     def close(self):
-        """Close the temporary file and give it the final name (one atomic rename)."""
-        try:
-            self.nc.close()
-            self.nc = None
-            os.replace(self.tmp, self.final)
-        except (OSError, RuntimeError) as exc:
-            self.abort()
-            raise _write_error(self.final, exc) from None
+        if self.file is not None:
+            self.file.close()
 
     def abort(self):
-        """Close and remove the temporary file (the final name is never created)."""
-        if self.nc is not None:
-            try:
-                self.nc.close()
-            except Exception:  # noqa: BLE001  (already closed or broken: remove the file anyway)
-                pass
-            self.nc = None
-        if self.tmp is not None:
-            try:
-                self.tmp.unlink(missing_ok=True)
-            except OSError:
-                pass
+        if self.file is not None:
+            self.file.abort()
 
-
-def _part_prefix(final: Path) -> str:
-    """Hidden temporary name of a map being written to ``final``: ``.NAME.HOST-PID-RANDOM.part``."""
-    return f".{final.name}."
-
-
-def _create_part(final: Path) -> Path:
-    """Create the temporary file of ``final`` in the same folder (so that the last step is an atomic
-    rename) with mode 0666 filtered by the user's umask, as any file the user creates (``mkstemp``
-    would give 0600, which ``os.replace`` carries over to the map).  The name holds the host and
-    process id, so that a later map can recognise the leftover of a killed process."""
-    import secrets
-    import socket
-
-    folder = final.parent
-    host = socket.gethostname().replace(".", "_").replace("-", "_") or "host"
-    for _ in range(100):
-        tmp = folder / f"{_part_prefix(final)}{host}-{os.getpid()}-{secrets.token_hex(4)}.part"
-        try:
-            fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
-        except FileExistsError:
-            continue
-        os.close(fd)
-        return tmp
-    raise FileExistsError(f"cannot create a temporary file next to {final}")  # pragma: no cover
-
-
-def _remove_stale_parts(final: Path) -> None:
-    """Remove temporary files of ``final`` left by map processes of this host that no longer run
-    (a process killed with SIGKILL cannot remove its own)."""
-    import socket
-
-    host = socket.gethostname().replace(".", "_").replace("-", "_") or "host"
-    prefix = _part_prefix(final)
-    try:
-        names = [p for p in final.parent.iterdir() if p.name.startswith(prefix) and p.name.endswith(".part")]
-    except OSError:
-        return
-    for p in names:
-        tag = p.name[len(prefix):-len(".part")].split("-")
-        if len(tag) != 3 or tag[0] != host or not tag[1].isdigit():
-            continue
-        pid = int(tag[1])
-        if pid == os.getpid():
-            continue
-        try:
-            os.kill(pid, 0)
-        except ProcessLookupError:
-            p.unlink(missing_ok=True)
-        except OSError:  # alive (e.g. another user's process): leave it
-            pass
+    def dataset(self):
+        """The in-memory map as an :class:`xarray.Dataset` (the attributes of the file)."""
+        coords = [name for name, _, _ in AXES] + ["dof", "dof2"]
+        return nc.to_xarray(self.variables, _coordinates(self.dims, self.axes) | self.data, self.attrs, coords)
 
 
 def _write_error(final: Path, exc: BaseException) -> InputError:
     return InputError("out", f"cannot write the map {str(final)!r} ({type(exc).__name__}: {exc})",
                       "check that the folder exists, is writable and has free space; nothing was written")
-
-
-def _dataset_from_memory(sink: _MemorySink, axes: dict, attrs: dict):
-    import xarray as xr
-
-    coords = {}
-    units = {name: u for name, _, u in AXES}
-    for name, _, _ in AXES:
-        v = axes[name]
-        coords[name] = (name, v, {"units": units[name]}) if name in sink.dims else ((), float(v[0]),
-                                                                                     {"units": units[name]})
-    coords["dof"] = ("dof", list(DOF))
-    coords["dof2"] = ("dof2", list(DOF))
-    data = {}
-    for name, (key, extra, dt, u, long) in _VARS.items():
-        data[name] = (tuple(sink.dims) + extra, sink.data[name], {"units": u, "long_name": long} | _var_attrs(name))
-    return xr.Dataset(data, coords=coords, attrs=attrs)
 
 
 # ---- executors -----------------------------------------------------------------------------------
@@ -656,7 +563,7 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
         client, own_client = _connect(scheduler, scheduler_timeout)  # before any file is created
     quiet = _QuietDistributed().__enter__() if own_client else None
     try:
-        sink = _NetCDFSink(Path(out), dims, shape, axes, attrs) if out is not None else _MemorySink(dims, shape)
+        sink = _MapSink(Path(out) if out is not None else None, dims, shape, axes, attrs)
     except BaseException:
         if own_client:
             _close(client, quiet)
@@ -707,19 +614,18 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
     except BaseException:
         if bar is not None:
             bar.stop()
-        if isinstance(sink, _NetCDFSink):
-            sink.abort()
+        sink.abort()
         if own_client:
             _close(client, quiet)
         raise
     if own_client:
         _close(client, quiet)
-    if isinstance(sink, _NetCDFSink):
+    if sink.file is not None:
         sink.close()
         import xarray as xr
 
         return xr.open_dataset(sink.final)
-    return _dataset_from_memory(sink, axes, attrs)
+    return sink.dataset()
 
 
 def warm_up(bearing="skf-7011-cdga-hc") -> bool:
@@ -751,7 +657,9 @@ def plot_map(ds, path: str | Path, var: str = "stiffness", i: int = 0, j: int = 
         kk = k.isel(**extra) if extra else k
         y, x = grid_dims[-2], grid_dims[-1]
         m = ax.pcolormesh(ds[x].values, ds[y].values, kk.values, shading="auto")
-        fig.colorbar(m, ax=ax, label=f"{label} [{ds[var].attrs.get('units', '')}]")
+        units = nc.component_units(ds[var].attrs, (5, 5)) if var == "stiffness" else ds[var].attrs.get("units", "")
+        unit = units[i][j] if isinstance(units, list) else units  # K[i, j]: its own unit (units_by_component)
+        fig.colorbar(m, ax=ax, label=f"{label} [{unit}]")
         ax.set_xlabel(f"{x} [{ds[x].attrs.get('units', '')}]")
         ax.set_ylabel(f"{y} [{ds[y].attrs.get('units', '')}]")
     elif len(grid_dims) == 1:
