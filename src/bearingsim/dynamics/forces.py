@@ -61,6 +61,18 @@ def _cross(a, b, out):
 
 
 @njit(cache=True)
+def slice_table(nsl, table):
+    """table[k], table[nsl + k] ← load share and load centroid ξ̄ of slice k of n = nsl
+    (:func:`bearingsim.contact.slices.slice_fraction`, :func:`~bearingsim.contact.slices.slice_centroid`),
+    evaluated once per right-hand side for :func:`coulomb_on_slices`."""
+    for k in range(nsl):
+        e1 = -1.0 + 2.0 * k / nsl
+        e2 = -1.0 + 2.0 * (k + 1) / nsl
+        table[k] = _sl.slice_fraction(e1, e2)
+        table[nsl + k] = _sl.slice_centroid(e1, e2)
+
+
+@njit(cache=True)
 def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, out):
     """Regularised Coulomb traction on slices of the contact ellipse (TEST STAND-IN, not a lubricant model).
 
@@ -79,6 +91,15 @@ def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, m
     race about c_r (3) [N·m], power loss [W].  Returns the slide-roll ratio at the
     centre slice.
     """
+    table = np.empty(2 * nsl)
+    slice_table(nsl, table)
+    return coulomb_on_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, table,
+                             out)
+
+
+@njit(cache=True)
+def coulomb_on_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, table, out):
+    """:func:`coulomb_slices` with the slices' load shares and centroids given (:func:`slice_table`)."""
     for k in range(10):
         out[k] = 0.0
     if q <= 0.0:
@@ -87,10 +108,8 @@ def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, m
     n0, n1, n2 = normal[0], normal[1], normal[2]
     curv = _sl.surface_curvature(r_dev)
     for k in range(nsl):
-        e1 = -1.0 + 2.0 * k / nsl
-        e2 = -1.0 + 2.0 * (k + 1) / nsl
-        qk = q * _sl.slice_fraction(e1, e2)
-        eta = a * _sl.slice_centroid(e1, e2)
+        qk = q * table[k]
+        eta = a * table[nsl + k]
         dn, _ = _sl.slice_point_offset(eta, curv)
         p0 = centre[0] + eta * major[0] + dn * n0
         p1 = centre[1] + eta * major[1] + dn * n1
@@ -172,7 +191,8 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
     velocity (with spin) for the surface velocity; kc [N/m^1.5]; rgroove = (f − ½)D;
     a_c, b_c: ellipse semi-axes per N^(1/3); tang: unit tangent of the groove circle
     (rolling direction).  Accumulates the force/moment on the ball (fb, mb) and on the
-    ring (fr, mr about rcen).  res ← Q, δ, u(3), slide-roll ratio, power loss.
+    ring (fr, mr about rcen).  res ← Q, δ, u(3), slide-roll ratio, power loss.  tbuf: work array;
+    for the Coulomb stand-in tbuf[44:] holds its slices (:func:`slice_table`).
     """
     d0 = b[0] - g[0]
     d1 = b[1] - g[1]
@@ -263,8 +283,8 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
     for i in range(3):
         t1[i] = -nrm[i]
     if mode == 1:
-        coulomb_slices(q, a_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[ly.G_MU0],
-                       gp[ly.G_S0], gp[ly.G_VREF], int(gp[ly.G_NSL]), out)
+        coulomb_on_slices(q, a_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[ly.G_MU0],
+                          gp[ly.G_S0], gp[ly.G_VREF], int(gp[ly.G_NSL]), tbuf[44:], out)
     else:
         _sl.contact_traction(q, a_c * q13, b_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, lub,
                              int(gp[ly.G_NSL]), out)
@@ -348,8 +368,11 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
     vg = np.empty(3)
     tang = np.empty(3)
     res = np.empty(8)
-    tbuf = np.empty(44)
     tmp = np.empty(3)
+    # work array of race_contact, followed by the slices of the Coulomb stand-in (the same for every contact)
+    nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
+    tbuf = np.empty(44 + 2 * nsl)
+    slice_table(nsl, tbuf[44:])
     for k in range(nb):
         r = ball_row[k]
         par = rows[r]
