@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import BearingSimError, InputError
+from ..io import netcdf as nc
 from ..statics import _kernels as kn
 from . import analysis
 from . import forces as fo
@@ -166,10 +167,12 @@ def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: 
 
 
 # ---- variable metadata (units in attributes) -------------------------------------------
+#: output variables: name -> (dims, units, long name); units as :func:`bearingsim.io.netcdf.units_attributes`
+#: takes them (a UDUNITS string, or one per component along ``dof``)
 VARIABLES = {
-    "inner_ring_displacement": (("time", "dof"), "m or rad", "inner-ring displacement (x, y, z, gamma_y, gamma_z)"),
-    "inner_ring_velocity": (("time", "dof"), "m/s or rad/s", "inner-ring velocity"),
-    "applied_load": (("time", "dof"), "N or N*m", "applied load (Fa, Fr_y, Fr_z, M_y, M_z) at the load point"),
+    "inner_ring_displacement": (("time", "dof"), nc.DOF_UNITS, "inner-ring displacement (x, y, z, gamma_y, gamma_z)"),
+    "inner_ring_velocity": (("time", "dof"), nc.DOF_RATE_UNITS, "inner-ring velocity"),
+    "applied_load": (("time", "dof"), nc.LOAD_UNITS, "applied load (Fa, Fr_y, Fr_z, M_y, M_z) at the load point"),
     "shaft_speed": (("time",), "rad/s", "inner-ring (shaft) speed"),
     "cage_angular_speed": (("time", "cage"), "rad/s", "cage angular speed about the bearing axis"),
     "cage_angle": (("time", "cage"), "rad", "cage rotation angle about the bearing axis"),
@@ -189,8 +192,8 @@ VARIABLES = {
     "outer_power_loss": (("time", "ball"), "W", "power loss of the ball-outer raceway contact"),
     "cage_contact_load": (("time", "ball"), "N", "ball-pocket normal load"),
     "cage_power_loss": (("time", "ball"), "W", "power loss of the ball-pocket contact"),
-    "inner_ring_friction_torque": (("time",), "N*m", "moment of the contact forces on the inner ring about its axis"),
-    "outer_ring_friction_torque": (("time",), "N*m", "moment of the contact forces on the outer ring about x"),
+    "inner_ring_friction_torque": (("time",), "N m", "moment of the contact forces on the inner ring about its axis"),
+    "outer_ring_friction_torque": (("time",), "N m", "moment of the contact forces on the outer ring about x"),
     "power_loss_inner": (("time",), "W", "total power loss at the ball-inner raceway contacts"),
     "power_loss_outer": (("time",), "W", "total power loss at the ball-outer raceway contacts"),
     "power_loss_cage": (("time",), "W", "total power loss at the ball-pocket contacts"),
@@ -217,14 +220,13 @@ def stack_samples(samples: list[dict]) -> dict:
 
 def to_dataset(data: dict, attrs: dict | None = None):
     """xarray Dataset of stacked samples with units in the attributes."""
-    import xarray as xr
+    variables = [nc.Variable("time", ("time",), "s"), nc.Variable("dof", ("dof",), dtype=str), *_variables()]
+    return nc.to_xarray(variables, data | {"dof": md.DOF}, attrs, coords=("time", "dof"))
 
-    coords = {"time": ("time", data["time"], {"units": "s"}), "dof": list(md.DOF)}
-    vars_ = {}
-    for k, (dims, units, desc) in VARIABLES.items():
-        vars_[k] = (dims, data[k], {"units": units, "long_name": desc})
-    ds = xr.Dataset(vars_, coords=coords, attrs=attrs or {})
-    return ds
+
+def _variables() -> list:
+    """:data:`VARIABLES` as :class:`bearingsim.io.netcdf.Variable` s (the schema of the file and the Dataset)."""
+    return [nc.Variable(k, dims, units, desc) for k, (dims, units, desc) in VARIABLES.items()]
 
 
 class Results:
@@ -342,7 +344,8 @@ class Results:
         for a, name in zip(axes, variables):
             v = self.data[name]
             a.plot(self.data["time"] * 1e3, v.reshape(len(v), -1))
-            a.set_ylabel(f"{name} [{VARIABLES[name][1]}]")
+            u = VARIABLES[name][1]
+            a.set_ylabel(f"{name} [{u if isinstance(u, str) else ', '.join(dict.fromkeys(u))}]")
         axes[-1].set_xlabel("time [ms]")
         return fig
 
@@ -391,7 +394,9 @@ def build(case):
 
 
 class _Writer:
-    """Append samples to a netCDF-3 (64-bit offset) file with an unlimited time dimension.
+    """Append samples to a netCDF-3 (64-bit offset) file with an unlimited time dimension, through
+    :class:`bearingsim.io.netcdf.NetCDFWriter` (``publish="create"``: the header is written under a hidden
+    temporary name and renamed; the records are appended in place).
 
     netCDF-3 keeps the record count in the header, which the library rewrites only when
     the file is synced: a process killed while writing a chunk leaves the file with the
@@ -399,34 +404,23 @@ class _Writer:
     """
 
     def __init__(self, path: Path, model: md.Model, attrs: dict, start_index: int | None):
-        import netCDF4
-
         self.path = path
         if start_index is None or not path.exists():
-            tmp = path.with_name(path.name + ".tmp")
-            ds = netCDF4.Dataset(tmp, "w", format="NETCDF3_64BIT_OFFSET")
-            ds.createDimension("time", None)
-            ds.createDimension("dof", 5)
-            ds.createDimension("ball", model.n_balls)
-            ds.createDimension("cage", model.n_cages)
-            ds.createDimension("xyz", 3)
-            for k, v in attrs.items():
-                ds.setncattr(k, v)
-            tv = ds.createVariable("time", "f8", ("time",))
-            tv.units = "s"
-            ball = ds.createVariable("ball", "i4", ("ball",))
-            ball[:] = np.arange(model.n_balls)
-            row = ds.createVariable("ball_row", "i4", ("ball",))
-            row[:] = model.ball_row
-            for k, (dims, units, desc) in VARIABLES.items():
-                v = ds.createVariable(k, "f8", dims)
-                v.units = units
-                v.long_name = desc
-            ds.close()
-            os.replace(tmp, path)
+            dims = {"time": None, "dof": 5, "ball": model.n_balls, "cage": model.n_cages, "xyz": 3}
+            variables = [nc.Variable("time", ("time",), "s"), nc.Variable("ball", ("ball",), dtype="i4"),
+                         nc.Variable("ball_row", ("ball",), dtype="i4"), *_variables()]
+            self.file = nc.NetCDFWriter(path, dims=dims, variables=variables, attrs=attrs,
+                                        values={"ball": np.arange(model.n_balls), "ball_row": model.ball_row},
+                                        fmt="NETCDF3_64BIT_OFFSET", publish="create")
             start_index = 0
-        self.ds = netCDF4.Dataset(path, "a")
+        else:
+            self.file = nc.NetCDFWriter.reopen(path)
         self.index = start_index
+
+    @property
+    def ds(self):
+        """The open netCDF4.Dataset."""
+        return self.file.nc
 
     def write(self, samples: list[dict]) -> None:
         if not samples:
@@ -434,13 +428,13 @@ class _Writer:
         data = stack_samples(samples)
         i0, i1 = self.index, self.index + len(samples)
         for k in VARIABLES:
-            self.ds.variables[k][i0:i1] = data[k]
-        self.ds.variables["time"][i0:i1] = data["time"]
-        self.ds.sync()
+            self.file.write(k, slice(i0, i1), data[k])
+        self.file.write("time", slice(i0, i1), data["time"])
+        self.file.sync()
         self.index = i1
 
     def close(self):
-        self.ds.close()
+        self.file.close()
 
 
 #: wall-clock seconds between checkpoints unless the case (``checkpoint_every = "10 s"``) or the caller
