@@ -190,4 +190,5 @@ def __getattr__(name: str):
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
-__all__ = ["Lubricant", "lubricant_from_dict", "get_lubricant", "library", "library_names"]
+# the readers are forwarded by __getattr__ (ruff cannot see them)
+__all__ = ["Lubricant", "lubricant_from_dict", "get_lubricant", "library", "library_names"]  # noqa: F822

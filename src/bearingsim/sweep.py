@@ -94,7 +94,8 @@ def parse_grid(spec, dimension: str, field: str) -> np.ndarray:
         return vals
     if isinstance(spec, str) and ":" in spec:
         if len(spec) > 3 * MAX_LENGTH:
-            raise InputError(field, f"grid spec of {len(spec)} characters", 'write START:STOP:COUNT, e.g. "1000:5000:9"')
+            raise InputError(field, f"grid spec of {len(spec)} characters",
+                             'write START:STOP:COUNT, e.g. "1000:5000:9"')
         parts = spec.split(":")
         if len(parts) != 3:
             raise InputError(field, f"grid spec {spec!r} is not START:STOP:COUNT", 'e.g. "1000:5000:9"')
