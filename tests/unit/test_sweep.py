@@ -381,7 +381,7 @@ def test_killed_local_pool_worker_is_one_line_and_leaves_no_file(tmp_path):
     """A process of the local pool dies (SIGKILL, as the OOM killer would): the map fails in one line (exit 1)
     instead of a BrokenProcessPool traceback, and writes nothing."""
     out = tmp_path / "m.nc"
-    p = subprocess.Popen(["bearingsim", "map", "skf-7011-cdga-hc", "--fa", "1000:5000:6", "--speed", "0:11200:6",
+    p = subprocess.Popen(["bearingsim", "map", "skf-7011-cdga-hc", "--fa", "1000:5000:20", "--speed", "0:11200:20",
                           "--chunk", "1", "--workers", "2", "--json", "--out", str(out)],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, start_new_session=True)
     victim = None
