@@ -186,3 +186,17 @@ def test_three_row_set_preload_balances(row):
     np.testing.assert_allclose(fa[0] + fa[1], 400.0, rtol=1e-9)
     np.testing.assert_allclose(fa[2], fa[0] + fa[1], rtol=1e-9)
     np.testing.assert_allclose(fa[0], fa[1], rtol=1e-9)
+
+
+def test_arrangement_reader_lives_in_io_and_old_names_forward():
+    """The TOML reader of sets moved to bearingsim.io.arrangement; the old statics names are the same objects."""
+    from bearingsim.io import arrangement as reader
+    from bearingsim.statics import arrangements as ar_mod
+
+    for name in ("_KEYS", "_ROW_KEYS", "_row_bearing", "arrangement_from_dict"):
+        assert getattr(ar_mod, name) is getattr(reader, name)
+    import bearingsim.io as bio
+
+    assert bio.arrangement_from_dict is reader.arrangement_from_dict
+    with pytest.raises(AttributeError):
+        ar_mod.no_such_name  # noqa: B018

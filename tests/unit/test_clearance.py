@@ -106,3 +106,14 @@ def test_single_bearing_apply_changes_clearance():
     oc = cl.OperatingClearance(speed=12000 * math.pi / 30)
     nb = oc.apply(b)
     assert nb.diametral_clearance < 0
+
+
+def test_clearance_reader_lives_in_io_and_old_names_forward():
+    """The [clearance] reader moved to bearingsim.io.clearance; the old statics names are the same objects."""
+    from bearingsim.io import clearance as reader
+    from bearingsim.statics import clearance as cl_mod
+
+    assert cl_mod.operating_clearance_from_dict is reader.operating_clearance_from_dict
+    assert cl_mod._KEYS is reader._KEYS
+    with pytest.raises(AttributeError):
+        cl_mod.no_such_name  # noqa: B018

@@ -4,7 +4,7 @@ Quantities are strings with units (``"11.1 mm"``), parsed once here into SI floa
 number for a dimensional field is refused (:func:`bearingsim.units.file_input`).  A bearing
 argument is either a catalogue name (``bearingsim catalog`` lists them) or a path to a TOML file.
 A file with ``rows`` or ``arrangement`` is a bearing set or double-row unit, built by
-:func:`bearingsim.statics.arrangements.arrangement_from_dict` (imported when needed: that module
+:func:`bearingsim.io.arrangement.arrangement_from_dict` (imported when needed: that module
 reads its row bearings through this one).
 """
 
@@ -69,7 +69,7 @@ def load_bearing(spec: str | Path):
     """Load a bearing from a catalogue name or a TOML path.
 
     Returns a :class:`~bearingsim.geometry.BallBearing` (or, for arrangement files, the
-    object built by :mod:`bearingsim.statics.arrangements` when available).
+    :class:`~bearingsim.statics.arrangements.BearingSystem` read by :mod:`bearingsim.io.arrangement`).
     """
     if isinstance(spec, BallBearing) or hasattr(spec, "rows_parameters"):
         return spec  # already a bearing (or bearing system)
@@ -139,9 +139,9 @@ def bearing_from_dict(data: dict) -> BallBearing:
 
 def _bearing_from_dict(data: dict) -> BallBearing:
     if "rows" in data or "arrangement" in data:
-        from ..statics import arrangements  # noqa: F401  (issue 3: sets and double-row units)
+        from .arrangement import arrangement_from_dict  # sets and double-row units (imports the statics)
 
-        return arrangements.arrangement_from_dict(data)
+        return arrangement_from_dict(data)
     unknown = sorted(set(data) - _BEARING_KEYS)
     if unknown:
         raise InputError(unknown[0], "unknown key in bearing file",
