@@ -21,7 +21,34 @@ from __future__ import annotations
 import os
 import sys
 
-__all__ = ["__version__"]
+#: The public API, loaded on first use (PEP 562) so that ``import bearingsim`` stays numerics-free:
+#: ``bearingsim.solve(...)`` imports :mod:`bearingsim.statics.jones_harris` the first time it is touched.
+#: name -> (module, attribute); the documented module paths keep working as well.
+_PUBLIC = {
+    # bearings and files
+    "load_bearing": ("bearingsim.io", "load_bearing"),
+    "BallBearing": ("bearingsim.geometry", "BallBearing"),
+    "catalog_names": ("bearingsim.io", "catalog_names"),
+    # quasi-static equilibrium
+    "Loads": ("bearingsim.statics.jones_harris", "Loads"),
+    "solve": ("bearingsim.statics.jones_harris", "solve"),
+    "solve_many": ("bearingsim.statics.jones_harris", "solve_many"),
+    "StaticResult": ("bearingsim.statics.jones_harris", "StaticResult"),
+    "solve_thrust": ("bearingsim.statics.axial", "solve_thrust"),
+    # sweeps
+    "map_grid": ("bearingsim.sweep", "map_grid"),
+    # lubrication
+    "get_lubricant": ("bearingsim.io", "get_lubricant"),
+    # dynamics
+    "load_case": ("bearingsim.io", "load_case"),
+    "simulate": ("bearingsim.dynamics.run", "simulate"),
+    # errors
+    "BearingSimError": ("bearingsim.errors", "BearingSimError"),
+    "InputError": ("bearingsim.errors", "InputError"),
+    "ConvergenceError": ("bearingsim.errors", "ConvergenceError"),
+}
+
+__all__ = ["__version__", *_PUBLIC]
 
 _DIST = "bearingsim"
 
@@ -48,12 +75,23 @@ def _read_version() -> str:
         return "0+unknown"
 
 
+def __dir__():
+    return sorted(set(globals()) | set(__all__))
+
+
 def __getattr__(name: str):
-    # PEP 562: the version is read on first use (importlib.metadata costs a few ms that most imports do not need)
+    # PEP 562: the version and the public API are loaded on first use (importlib.metadata costs a few ms that most imports do not need)
     if name == "__version__":
         v = _read_version()
         globals()["__version__"] = v
         return v
+    if name in _PUBLIC:
+        import importlib
+
+        module, attr = _PUBLIC[name]
+        value = getattr(importlib.import_module(module), attr)
+        globals()[name] = value
+        return value
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
