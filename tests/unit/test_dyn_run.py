@@ -166,3 +166,64 @@ def test_fluctuation_range_of_a_lagging_tilt_is_closed_form():
     np.testing.assert_allclose(res.loop_widths(300.0), expected, rtol=1e-5)
     assert len(res.loop_widths(300.0)) == 3  # 2.5 cycles: M passes 300 N m rising then falling in each of 3
     assert math.isnan(res.fluctuation_range(700.0))
+
+
+@pytest.mark.parametrize("method", ["dopri5", "ros2w", "ros34w"])
+def test_stepper_advances_through_the_integrator_contract(method, monkeypatch):
+    """Stepper.advance calls ``METHODS[method].advance(workspace, t_end)`` (the contract of
+    dynamics.integrate.base), and the trajectory equals that of the method's numba kernel called with the
+    arguments the stepper passed before it used the contract (bitwise)."""
+    import tomllib
+
+    from bearingsim.dynamics import integrate as ig
+    from bearingsim.dynamics import model as md
+    from bearingsim.dynamics.run import Stepper, build
+
+    model, loadspec, y0, _ = build(case_from_dict(tomllib.loads(CASE.format(duration="0.1 ms"))))
+    st = Stepper(model, loadspec, y0.copy(), method=method, h=1e-7)
+    calls = []
+    real = ig.METHODS[method].advance
+
+    def spy(ws, t_end):
+        calls.append((ws.y is st.y, ws.jacobian is st._ws, t_end))
+        return real(ws, t_end)
+
+    monkeypatch.setattr(ig.METHODS[method], "advance", spy)
+    times = (2e-5, 5e-5)
+    for t_end in times:
+        st.advance(t_end)
+    assert calls == [(True, True, t) for t in times]
+    # the former direct kernel calls, on a second stepper's arrays
+    ref = Stepper(model, loadspec, y0.copy(), method=method, h=1e-7)
+    kernel = ig.METHODS[method].integrate
+    t, h, steps = 0.0, 1e-7, 0
+    for t_end in times:
+        common = (fo.rhs_args, ref._args, t, t_end, ref.y, h, ref.atol, ref.rtol, ref.h_min,
+                  ref.max_steps_per_interval, ref._info)
+        if method == "dopri5":
+            status, t, h = kernel(*common)
+        elif method == "ros2w":
+            status, t, h = kernel(*common, ref._blk, md.N_BALL, ref.jac_every)
+        else:
+            status, t, h = kernel(*common, ref._blk, md.N_BALL, ref.jac_every, ref._ws, ref._rmass, ref._bmass)
+        assert status == ig.OK
+        steps += int(ref._info[0])
+    assert st.y.tobytes() == ref.y.tobytes()
+    assert (st.t, st.h, st.steps) == (t, h, steps) and st.steps > 0
+
+
+def test_integrator_attribute_says_whether_ros34pw2_couples_the_ring():
+    """The output file's ``integrator`` attribute: ROS34PW2 couples the inner ring with the balls by default
+    (it said "block-diagonal per ball", which is only true with the ring held fixed or the coupling off)."""
+    import tomllib
+
+    from bearingsim.dynamics import model as md
+    from bearingsim.dynamics.run import build, integrator_text
+
+    model = build(case_from_dict(tomllib.loads(CASE.format(duration="0.1 ms"))))[0]
+    assert "coupled with the inner ring" in integrator_text("ros34w", model)
+    assert "block-diagonal per ball" in integrator_text("ros34w", model, ring_coupling=False)
+    model.gp[md.G_RING_FIXED] = 1.0
+    assert "block-diagonal per ball" in integrator_text("ros34w", model)
+    assert "block-diagonal per ball" in integrator_text("ros2w", model)
+    assert integrator_text("dopri5") == "Dormand-Prince 5(4) with error control"

@@ -26,7 +26,7 @@ KNOWN_PRIVATE = {
     ("bearingsim.dynamics.cage", "bearingsim.statics._kernels"),
     ("bearingsim.dynamics.forces", "bearingsim.statics._kernels"),
     ("bearingsim.dynamics.model", "bearingsim.statics._kernels"),
-    ("bearingsim.dynamics.run", "bearingsim.statics._kernels"),
+    ("bearingsim.dynamics.stepper", "bearingsim.statics._kernels"),
     ("bearingsim.geometry", "bearingsim.statics._kernels"),
     ("bearingsim.lubrication", "bearingsim.statics._kernels"),
     ("bearingsim.export", "bearingsim.statics._batch"),

@@ -1,0 +1,178 @@
+"""Stepping a dynamic model between output times, and sampling the output quantities.
+
+:class:`Stepper` holds the state of one run (t [s], y, the proposed step h [s], step counts) and
+advances it with the integrator named by ``method`` through the contract of
+:mod:`bearingsim.dynamics.integrate`: ``METHODS[method].advance(workspace, t_end)`` on a
+:class:`~bearingsim.dynamics.integrate.Workspace` whose state array is the stepper's ``y`` and whose
+Jacobian (ROS34PW2 keeps it from one call to the next, and checkpoints save it) is ``Stepper._ws``.
+:meth:`Stepper.sample` evaluates the right-hand side of :mod:`.forces` once at the current state and
+packs the output quantities (:func:`sample_from`), named as in :data:`.output.VARIABLES`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import BearingSimError, InputError
+from ..statics import _kernels as kn
+from . import forces as fo
+from . import integrate as ig
+from . import model as md
+
+
+class SimulationError(BearingSimError):
+    """The integration failed (diverging step, separated balls); data so far are saved."""
+
+
+#: integrator names and what they are (the ``integrator`` attribute of an output file)
+INTEGRATOR_TEXT = {
+    "dopri5": "Dormand-Prince 5(4) with error control",
+    "ros2w": "ROS2 W-method (Verwer et al. 1999), block-diagonal per ball",
+    "ros34w": "ROS34PW2 W-method (Rang & Angermann 2005), per-ball blocks coupled with the inner ring",
+}
+
+
+def integrator_text(method: str, model: md.Model | None = None, ring_coupling: bool = True) -> str:
+    """What the ``integrator`` attribute of an output file says about ``method``.  ROS34PW2 couples the
+    inner ring's block with the balls unless the ring is held fixed (``G_RING_FIXED``) or
+    ``ring_coupling`` is off; then its Jacobian is block-diagonal per ball."""
+    if method == "ros34w" and (not ring_coupling or (model is not None and model.gp[md.G_RING_FIXED] > 0.0)):
+        return "ROS34PW2 W-method (Rang & Angermann 2005), block-diagonal per ball"
+    return INTEGRATOR_TEXT[method]
+
+
+@dataclass
+class Stepper:
+    """State and integrator settings of one run (all SI)."""
+
+    model: md.Model
+    loadspec: np.ndarray
+    y: np.ndarray
+    t: float = 0.0
+    h: float = 1e-7
+    tol: float = 1e-6
+    h_min: float = 1e-13
+    method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit, for stiff traction)
+    jac_every: int = 20  #: steps between Jacobian refreshes (also after two rejections in a row)
+    ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
+    max_steps_per_interval: int = 10_000_000
+    steps: int = 0
+    rejected: int = 0
+    atol: np.ndarray = field(default=None, repr=False)
+    rtol: np.ndarray = field(default=None, repr=False)
+
+    def __post_init__(self):
+        if self.atol is None or self.rtol is None:
+            self.atol, self.rtol = md.tolerance_vectors(self.model, self.tol)
+        if self.method not in ig.METHODS:
+            raise InputError("integrator", f"unknown integrator {self.method!r}", "use dopri5, ros2w or ros34w")
+        self._args = fo.args_of(self.model, self.loadspec)
+        self._info = np.zeros(4)
+        self._blk = np.array([md.N_RING + md.N_BALL * k for k in range(self.model.n_balls)], dtype=np.int64)
+        # ROS34PW2 also carries the inner ring's block and its coupling with the balls (a stiff mode at
+        # low rolling speed, docs/dynamics.md) unless the ring is held fixed
+        m = self.model
+        if m.gp[md.G_RING_FIXED] > 0.0 or not self.ring_coupling:
+            self._rmass, self._bmass = np.zeros(0), np.zeros((0, 2))
+        else:
+            self._rmass = np.array([m.gp[md.G_MR]] * 3 + [m.gp[md.G_ITR]] * 2)
+            self._bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
+        # the ROS34PW2 Jacobian lives from one call to the next (and in checkpoints)
+        self._ws = ig.ros34_workspace(m.n_balls, md.N_BALL, self._rmass.shape[0] == 5)
+        self.workspace = ig.Workspace(fo.rhs_args, self._args, self.y, self.atol, self.rtol, blk=self._blk,
+                                      nbk=md.N_BALL, rmass=self._rmass, bmass=self._bmass, jacobian=self._ws,
+                                      info=self._info)
+
+    def advance(self, t_end: float) -> None:
+        """Integrate to t_end [s] with ``METHODS[method].advance(workspace, t_end)``; raises
+        :class:`SimulationError` naming the time and body on failure."""
+        ws = self.workspace
+        # the stepper's fields are the state (tests and checkpoints set them): the workspace takes them
+        ws.y, ws.atol, ws.rtol, ws.jacobian = self.y, self.atol, self.rtol, self._ws
+        ws.t, ws.h, ws.h_min = self.t, self.h, self.h_min
+        ws.max_steps, ws.jac_every = self.max_steps_per_interval, self.jac_every
+        ws.steps, ws.rejected = self.steps, self.rejected
+        status = ig.METHODS[self.method].advance(ws, float(t_end))
+        self.steps, self.rejected = ws.steps, ws.rejected
+        self.t = ws.t
+        if status != ig.OK:
+            comp = md.describe_component(self.model, int(self._info[2]))
+            raise SimulationError(f"integration failed at t = {ws.t * 1e3:.6g} ms: {ig.STATUS_TEXT[status]}; "
+                                  f"largest error in {comp}")
+        self.h = ws.h
+
+    def sample(self) -> dict:
+        """Output quantities at the current state (SI)."""
+        dy, diag, gd = fo.evaluate(self.model, self.t, self.y, self.loadspec)
+        out = sample_from(self.model, self.t, self.y, diag, gd)
+        out["power_loss_rolling"] = 0.0
+        if int(self.model.gp[md.G_TRAC]) == 2 and self.model.lubs is not None:
+            # rolling viscous resistance share: the same state without it (seed 001 eqs. 4-5)
+            from ..contact import slices
+
+            if not np.any(self.model.lubs[:, slices.L_ROLLRES] != 0):
+                return out
+            saved = self.model.lubs.copy()
+            try:
+                self.model.lubs[:, slices.L_ROLLRES] = 0.0
+                _, _, gd2 = fo.evaluate(self.model, self.t, self.y, self.loadspec)
+            finally:
+                self.model.lubs[:] = saved
+            out["power_loss_rolling"] = (gd[fo.GD_PI] + gd[fo.GD_PO]) - (gd2[fo.GD_PI] + gd2[fo.GD_PO])
+        return out
+
+
+def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: np.ndarray) -> dict:
+    """Pack one output sample (dictionary of numpy arrays / floats, SI)."""
+    oc = model.cage_offset
+    nc = model.n_cages
+    cage = np.array([y[oc + md.N_CAGE * c + 9] for c in range(nc)])
+    cage_angle = np.array([y[oc + md.N_CAGE * c + 6] for c in range(nc)])
+    cage_pos = np.array([y[oc + md.N_CAGE * c:oc + md.N_CAGE * c + 3] for c in range(nc)])
+    deform = np.zeros(nc)
+    stress = np.zeros(nc)
+    for c in range(nc):
+        eta, _ = model.mode_slices(c)
+        n, z = eta.stop - eta.start, int(model.cp[c, md.C_Z])
+        if n:
+            u = np.einsum("k,kjd->jd", y[eta], model.cage_modes[c, :n, 2:2 + 6 * z].reshape(n, z, 6)[:, :, :3])
+            deform[c] = np.sqrt((u * u).sum(axis=1)).max()
+            stress[c] = np.abs(np.tensordot(y[eta], model.cage_stress[c], (0, 0))).max()
+    return {
+        "time": t,
+        "inner_ring_displacement": y[0:5].copy(),
+        "inner_ring_velocity": y[5:10].copy(),
+        "applied_load": gd[fo.GD_FA:fo.GD_MZ + 1].copy(),
+        "shaft_speed": gd[fo.GD_W],
+        "cage_angular_speed": cage,
+        "cage_angle": cage_angle,
+        "cage_position": cage_pos,
+        "ball_orbital_speed": diag[:, fo.D_WM].copy(),
+        "ball_spin_speed": diag[:, fo.D_WR].copy(),
+        "ball_pitch_angle": diag[:, fo.D_BETA].copy(),
+        "inner_contact_load": diag[:, fo.D_QI].copy(),
+        "outer_contact_load": diag[:, fo.D_QO].copy(),
+        "inner_contact_angle": diag[:, fo.D_AI].copy(),
+        "outer_contact_angle": diag[:, fo.D_AO].copy(),
+        "inner_approach": diag[:, fo.D_DI].copy(),
+        "outer_approach": diag[:, fo.D_DO].copy(),
+        "inner_slide_roll_ratio": diag[:, fo.D_SRI].copy(),
+        "outer_slide_roll_ratio": diag[:, fo.D_SRO].copy(),
+        "inner_power_loss": diag[:, fo.D_PI].copy(),
+        "outer_power_loss": diag[:, fo.D_PO].copy(),
+        "cage_contact_load": diag[:, fo.D_QC].copy(),
+        "cage_power_loss": diag[:, fo.D_PC].copy(),
+        "inner_ring_friction_torque": gd[fo.GD_TQI],
+        "outer_ring_friction_torque": gd[fo.GD_TQO],
+        "power_loss_inner": gd[fo.GD_PI],
+        "power_loss_outer": gd[fo.GD_PO],
+        "power_loss_cage": gd[fo.GD_PC],
+        "power_loss_land": gd[fo.GD_PL],
+        "contact_potential_energy": gd[fo.GD_EPOT],
+        "cage_strain_energy": gd[fo.GD_ECAGE],
+        "cage_pocket_deformation": deform,
+        "cage_peak_stress": stress,
+    }
+
