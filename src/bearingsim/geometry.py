@@ -58,7 +58,7 @@ import numpy as np
 from .contact import hertz
 from .errors import InputError
 from .materials import Material
-from .statics import _kernels as kn
+from .statics import layout as rl
 
 #: plausibility bounds (module docstring table), SI: [m], [-], [rad]
 LIMITS = {
@@ -277,7 +277,7 @@ class BallBearing:
 
     def row_parameters(self, x_row: float = 0.0, sign: float = 1.0, axial_offset: float = 0.0,
                        first_ball_azimuth: float = 0.0) -> np.ndarray:
-        """Parameter vector of this bearing as a row for the kernels (layout in :mod:`._kernels`).
+        """Parameter vector of this bearing as a row for the kernels (layout in :mod:`.statics.layout`).
 
         x_row [m] axial position of the row plane; sign ±1 orientation; axial_offset [m]
         preload offset of the inner groove centres; first_ball_azimuth [rad].
@@ -287,10 +287,10 @@ class BallBearing:
         if sign not in (1.0, -1.0):
             raise InputError("sign", f"must be +1 or -1, got {sign!r}", "the row's orientation")
         p = self._base_row.copy()
-        p[kn.P_XROW] = x_row
-        p[kn.P_SIGN] = sign
-        p[kn.P_PSI0] = first_ball_azimuth
-        p[kn.P_AXOFF] = axial_offset
+        p[rl.P_XROW] = x_row
+        p[rl.P_SIGN] = sign
+        p[rl.P_PSI0] = first_ball_azimuth
+        p[rl.P_AXOFF] = axial_offset
         return p
 
     @cached_property
@@ -303,30 +303,30 @@ class BallBearing:
         ki, ko, _ = self.contact_constants
         ci = self.contact(1.0, True)
         co = self.contact(1.0, False)
-        p = np.zeros(kn.NPAR)
-        p[kn.P_Z] = self.ball_count
-        p[kn.P_D] = d
-        p[kn.P_DM] = self.pitch_diameter
-        p[kn.P_RI] = ri
-        p[kn.P_RO] = ro
-        p[kn.P_KI] = ki
-        p[kn.P_KO] = ko
+        p = np.zeros(rl.NPAR)
+        p[rl.P_Z] = self.ball_count
+        p[rl.P_D] = d
+        p[rl.P_DM] = self.pitch_diameter
+        p[rl.P_RI] = ri
+        p[rl.P_RO] = ro
+        p[rl.P_KI] = ki
+        p[rl.P_KO] = ko
         if self.kind == "angular_contact":
-            p[kn.P_DX0] = big_a * math.sin(a0)
-            p[kn.P_DR0] = big_a * math.cos(a0) - 0.5 * self.diametral_clearance
-            p[kn.P_XIC] = ri * math.sin(a0)
+            p[rl.P_DX0] = big_a * math.sin(a0)
+            p[rl.P_DR0] = big_a * math.cos(a0) - 0.5 * self.diametral_clearance
+            p[rl.P_XIC] = ri * math.sin(a0)
         else:
-            p[kn.P_DX0] = 0.0
-            p[kn.P_DR0] = big_a - 0.5 * self.diametral_clearance
-            p[kn.P_XIC] = 0.0
-        p[kn.P_RIC] = 0.5 * self.pitch_diameter + ri * math.cos(a0)
-        p[kn.P_MASS] = self.ball_mass
-        p[kn.P_JB] = self.ball_inertia
-        p[kn.P_GRI] = self.inner_conformity * d
-        p[kn.P_CPI] = ci.max_pressure
-        p[kn.P_CPO] = co.max_pressure
-        p[kn.P_CAI] = ci.a * ci.ell_e
-        p[kn.P_CAO] = co.a * co.ell_e
+            p[rl.P_DX0] = 0.0
+            p[rl.P_DR0] = big_a - 0.5 * self.diametral_clearance
+            p[rl.P_XIC] = 0.0
+        p[rl.P_RIC] = 0.5 * self.pitch_diameter + ri * math.cos(a0)
+        p[rl.P_MASS] = self.ball_mass
+        p[rl.P_JB] = self.ball_inertia
+        p[rl.P_GRI] = self.inner_conformity * d
+        p[rl.P_CPI] = ci.max_pressure
+        p[rl.P_CPO] = co.max_pressure
+        p[rl.P_CAI] = ci.a * ci.ell_e
+        p[rl.P_CAO] = co.a * co.ell_e
         p.setflags(write=False)
         return p
 

@@ -121,7 +121,7 @@ def lubrication_report(result, lubricant, temperature: float, roughness: float =
         raise InputError("roughness", f"must be finite and >= 0, got {roughness!r}", 'e.g. "0.1 um"')
     if not isinstance(n_slices, int) or n_slices < 1:
         raise InputError("n_slices", f"must be an integer >= 1, got {n_slices!r}", "e.g. 10")
-    from .statics import _kernels as kn
+    from .statics import layout as rl
 
     rows = result.rows_params
     e_eff = _effective_modulus(result.bearing)
@@ -134,8 +134,8 @@ def lubrication_report(result, lubricant, temperature: float, roughness: float =
     for j in range(len(balls["azimuth_rad"])):
         r = int(balls["row"][j])
         par = rows[r]
-        d, dm = par[kn.P_D], par[kn.P_DM]
-        f_i, f_o = par[kn.P_RI] / d + 0.5, par[kn.P_RO] / d + 0.5
+        d, dm = par[rl.P_D], par[rl.P_DM]
+        f_i, f_o = par[rl.P_RI] / d + 0.5, par[rl.P_RO] / d + 0.5
         ai, ao = float(balls["inner_contact_angle_rad"][j]), float(balls["outer_contact_angle_rad"][j])
         entry = {"index": j, "row": r, "azimuth_rad": float(balls["azimuth_rad"][j])}
         loaded = False

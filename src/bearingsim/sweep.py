@@ -36,6 +36,7 @@ import numpy as np
 
 from .errors import BearingSimError, InputError
 from .io import netcdf as nc
+from .statics.layout import STATUS_LONG_NAME, status_cf_attributes
 
 #: grid axes in storage order (outermost first), with their dimension for units.py and SI unit
 AXES = (("preload", "force", "N"), ("fa", "force", "N"), ("fr", "force", "N"), ("fr_z", "force", "N"),
@@ -224,9 +225,7 @@ _VARS = {
     "stiffness": ("k", ("dof", "dof2"), "f8", nc.STIFFNESS_UNITS,
                   "5x5 stiffness matrix K[i, j] = dF_i/dq_j (rows: Fa, Fr_y, Fr_z, M_y, M_z; columns: x, y, z, "
                   "gamma_y, gamma_z)"),
-    "status": ("status", (), "i4", "1", "0 converged, 1 iteration limit, 2 singular, 3 contact past groove bottom, "
-               "4 a ball not converged, 5 not confirmed by the independent recomputation, 6 contact angle of 90 deg "
-               "or more, 7 internal error at this point, 8 free inner ring (no ball loaded)"),
+    "status": ("status", (), "i4", "1", STATUS_LONG_NAME),  # codes: bearingsim.statics.layout.STATUS
     "warning_flags": ("warning_flags", (), "i4", "1", "plausibility warnings (bitmask, bearingsim.limits)"),
     "converged": ("converged", (), "i1", "1", "1 when the point converged"),
     "iterations": ("iterations", (), "i4", "1", "ring Newton iterations (warm + cold start)"),
@@ -244,11 +243,15 @@ _SUMMARY_INDEX = {"p_inner": 0, "p_outer": 1, "alpha_inner_min": 2, "alpha_inner
 
 def _var_attrs(name: str) -> dict:
     """Extra attributes of a map variable: CF flag_masks/flag_meanings of ``warning_flags`` (bits in
-    :mod:`bearingsim.limits`)."""
+    :mod:`bearingsim.limits`), CF flag_values/flag_meanings of ``status`` (:mod:`bearingsim.statics.layout`)."""
     if name == "warning_flags":
         from .limits import cf_attributes
 
         return cf_attributes()
+    if name == "status":
+        attrs = status_cf_attributes()
+        attrs["flag_values"] = np.array(attrs["flag_values"], dtype=np.int32)  # the variable's type (CF §3.5)
+        return attrs
     return {}
 
 

@@ -23,12 +23,7 @@ PKG = "bearingsim"
 #: issue 12: to move to a public layout module (the P_* row layout of statics._kernels and the batch solver
 #: are imported across packages today); remove a pair once its import goes
 KNOWN_PRIVATE = {
-    ("bearingsim.dynamics.cage", "bearingsim.statics._kernels"),
     ("bearingsim.dynamics.forces", "bearingsim.statics._kernels"),
-    ("bearingsim.dynamics.model", "bearingsim.statics._kernels"),
-    ("bearingsim.dynamics.stepper", "bearingsim.statics._kernels"),
-    ("bearingsim.geometry", "bearingsim.statics._kernels"),
-    ("bearingsim.lubrication", "bearingsim.statics._kernels"),
     ("bearingsim.export", "bearingsim.statics._batch"),
     ("bearingsim.sweep", "bearingsim.statics._batch"),
 }

@@ -23,7 +23,7 @@ import math
 import numpy as np
 
 from ..errors import InputError
-from ..statics import _kernels as kn
+from ..statics import layout as kn  # the row-parameter layout (P_*)
 from .layout import C_BALL0, C_IP, C_IT, C_MASS, C_MODE0, C_NMODES, C_PSI0, C_RP, C_Z, N_BALL, N_CAGE, N_RING
 
 #: modal damping ratio ζ of every cage mode when none is given [-] (a structural ratio typical of a

@@ -28,7 +28,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from ..statics import _kernels as kn
+from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import layout as ly
 
 

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import BearingSimError, InputError
-from ..statics import _kernels as kn
+from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import forces as fo
 from . import integrate as ig
 from . import model as md

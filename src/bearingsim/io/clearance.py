@@ -1,4 +1,5 @@
-"""The ``[clearance]`` table of bearing and arrangement files → :class:`~bearingsim.statics.clearance.OperatingClearance`.
+"""The ``[clearance]`` table of bearing and arrangement files →
+:class:`~bearingsim.statics.clearance.OperatingClearance`.
 
 The physics (Lamé fits, thermal and centrifugal expansion) stays in :mod:`bearingsim.statics.clearance`;
 this module only reads: quantities with their units are parsed into SI floats here.

@@ -7,7 +7,7 @@ this module holds only the per-ball and per-ring arithmetic.  Two ring solvers: 
 :func:`solve_ring` as its safeguard).
 
 Model (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3, eqs. 3.22–3.61; seed 000 eqs. 6–16).
-Each row is described by a parameter vector (indices below).  For ball j at azimuth ψ_j,
+Each row is described by a parameter vector (indices in :mod:`bearingsim.statics.layout`).  For ball j at azimuth ψ_j,
 in the row's local axial–radial plane (ξ = s (x − x_row), r), the vector from the outer
 groove-curvature centre (fixed) to the inner one is
 
@@ -39,11 +39,12 @@ Robustness (issue 11): every kernel is compiled with ``error_model="numpy"`` —
 relations at contact angles where they have no solution, ``po + pi = 0`` or ``cos α_i = γ′``) gives NaN,
 never an exception — and the residual norms propagate NaN (:func:`_scaled_norm`), so a failed evaluation
 is a rejected trial, never a small residual.  A singular ring Jacobian gets a Levenberg–Marquardt step
-(:func:`regularised_step`) or status 2, never ``np.linalg.solve``'s LinAlgError.  Status codes of the ring
-solvers: 0 converged, 1 iteration limit, 2 singular, 3 loaded contact past the groove bottom of an angular
-contact row, 6 loaded contact at |α| ≥ 90° (:func:`contact_past_groove_edge`); the callers add 4 (a ball's
-own balance failed), 5 (the ring balance fails the independent re-solve, :func:`equilibrium_residual`),
-7 (internal error of one point in a batch) and 8 (no ball loaded at the inner raceway: a free ring).
+(:func:`regularised_step`) or status 2, never ``np.linalg.solve``'s LinAlgError.  Status codes (one table:
+:data:`bearingsim.statics.layout.STATUS`) of the ring solvers: 0 converged, 1 iteration limit, 2 singular,
+3 loaded contact past the groove bottom of an angular contact row, 6 loaded contact at |α| ≥ 90°
+(:func:`contact_past_groove_edge`); the callers add 4 (a ball's own balance failed), 5 (the ring balance
+fails the independent re-solve, :func:`equilibrium_residual`), 7 (internal error of one point in a batch)
+and 8 (no ball loaded at the inner raceway: a free ring).
 """
 
 from __future__ import annotations
@@ -53,34 +54,36 @@ import math
 import numpy as np
 from numba import njit
 
-# ---- row parameter layout -------------------------------------------------
-P_Z = 0  # number of balls
-P_D = 1  # ball diameter [m]
-P_DM = 2  # pitch diameter [m]
-P_RI = 3  # (f_i - 1/2) D [m]
-P_RO = 4  # (f_o - 1/2) D [m]
-P_KI = 5  # inner contact load-deflection constant [N/m^1.5]
-P_KO = 6  # outer contact constant [N/m^1.5]
-P_DX0 = 7  # axial separation of groove centres in the centred position [m]
-P_DR0 = 8  # radial separation of groove centres in the centred position [m]
-P_RIC = 9  # radius of the inner groove-centre locus [m]
-P_XIC = 10  # local axial position of the inner groove centre from the row plane [m]
-P_XROW = 11  # global axial position of the row plane [m]
-P_SIGN = 12  # +1 or -1: orientation of the row
-P_MASS = 13  # ball mass [kg]
-P_JB = 14  # ball polar moment of inertia [kg m^2]
-P_GRI = 15  # inner groove radius f_i D [m] (arm of the friction moment)
-P_PSI0 = 16  # azimuth of ball 0 [rad]
-P_CPI = 17  # p_max = CPI * Q^(1/3), inner [Pa/N^(1/3)]
-P_CPO = 18  # outer
-P_CAI = 19  # a * E(kappa) = CAI * Q^(1/3), inner [m/N^(1/3)] (raceway control criterion)
-P_CAO = 20  # outer
-P_AXOFF = 21  # axial preload offset e (local) [m]
-NPAR = 22
-
-CONTROL_OUTER = 0
-CONTROL_INNER = 1
-CONTROL_AUTO = 2
+# ---- row parameter layout and raceway control: the public contract of bearingsim.statics.layout ----------
+from .layout import (  # noqa: F401  (re-exported: the kernels read them as compile-time constants)
+    CONTROL_AUTO,
+    CONTROL_INNER,
+    CONTROL_OUTER,
+    NPAR,
+    P_AXOFF,
+    P_CAI,
+    P_CAO,
+    P_CPI,
+    P_CPO,
+    P_D,
+    P_DM,
+    P_DR0,
+    P_DX0,
+    P_GRI,
+    P_JB,
+    P_KI,
+    P_KO,
+    P_MASS,
+    P_PSI0,
+    P_RI,
+    P_RIC,
+    P_RO,
+    P_SIGN,
+    P_XIC,
+    P_XROW,
+    P_Z,
+    STATUS,
+)
 
 
 @njit(cache=True, error_model="numpy")

@@ -22,6 +22,7 @@ import numpy as np
 from ..errors import InputError, InputTypeError
 from . import _kernels as kn
 from .axial import solve_thrust
+from .layout import STATUS  # the one table of status codes (jones_harris.STATUS stays importable)
 
 CONTROLS = {"outer": kn.CONTROL_OUTER, "inner": kn.CONTROL_INNER, "auto": kn.CONTROL_AUTO}
 DOF = ("x", "y", "z", "gamma_y", "gamma_z")
@@ -33,25 +34,6 @@ TOL_RING = 1e-10
 TOL_VERIFY = 1e-7
 MAXIT_BALL = 60
 MAXIT_RING = 100
-
-#: status codes of the kernels and of :func:`solve` / :func:`solve_many`
-STATUS = {
-    0: "converged",
-    1: "no equilibrium found within the iteration limit",
-    2: "singular stiffness: no ball carries load in some direction, the bearing cannot carry "
-       "this load (e.g. an axial load that pulls a single angular contact row apart)",
-    3: "the only equilibrium puts a loaded contact past the groove bottom of an angular contact "
-       "row (negative contact angle, where the ring has its low shoulder): add axial load or a "
-       "second row",
-    4: "ring converged but a ball's equilibrium did not",
-    5: "the ring balance is not met when the balls are re-solved from scratch at the returned displacement "
-       "(the ball equilibrium is not unique here): not an equilibrium to report",
-    6: "the only equilibrium found puts a loaded contact at a contact angle of 90° or more, beyond the "
-       "groove edge of the ring (outside the model): the load is beyond what the bearing can carry",
-    7: "the solver failed on this point (internal error); see the log",
-    8: "no ball carries load at the inner raceway (no load, or every ball lifted off by its centrifugal "
-       "force): the inner ring is free and its position is not determined",
-}
 
 
 def _free_ring(ballout: np.ndarray, rows: np.ndarray, scale: float) -> bool:
