@@ -1,27 +1,13 @@
-"""Contact forces and equations of motion of the dynamic model (numba kernels).
+"""Equations of motion of the dynamic model (numba kernels).
 
 Everything here works on the plain arrays of :class:`bearingsim.dynamics.model.Model`, laid out as
 documented in :mod:`.layout`.  :func:`rhs` assembles the equations of motion from one helper per
-section (balls on their raceways, cage pockets with the elastic modes, land guidance, cage and ring
-equations); the contact laws are :func:`race_contact`, :func:`coulomb_slices` and :func:`pocket_point`;
-the load and speed histories are the kernels of :mod:`.loads`.
-
-Ball–raceway normal force (seed 001 §3.1; Harris & Kotzalas 2007 vol. 1 eq. 7.4):
-the ball centre b and the groove-curvature centre g of the raceway in the ball's
-meridian plane (the closest point of the groove-centre circle) give the approach
-δ = |b − g| − (f − ½)D; along u = (b − g)/|b − g|
-
-    Q = K δ^1.5 (1 + (3/2) α δ̇),   δ̇ = u·(v_b − v_g),   Q ≥ 0,
-
-the Hunt–Crossley contact law (Hunt & Crossley, J. Appl. Mech. 42 (1975) 440, eq. 12
-with n = 3/2; restitution e ≈ 1 − α v_impact).  It is chosen because the damping force
-vanishes with δ (no jump at first touch, no tensile force at separation, unlike a
-linear dashpot) and the dissipated energy per impact is a fixed fraction of the
-impact energy, as measured for steel impacts.  K is the statics constant K_i or K_o
-(evaluated at the free contact angle, :meth:`BallBearing.contact_constants`), so the
-model reduces exactly to the Jones–Harris statics.  The force acts on the ball as −Q u
-and on the ring as +Q u through g: it has no moment about the ball centre and derives
-from the potential (2/5) K δ^2.5 (energy is conserved without damping and friction).
+section (:func:`balls_on_raceways`, :func:`cage_pockets` with the elastic modes, :func:`land_guidance`,
+:func:`cage_equations`, :func:`ring_equations`, :func:`global_diagnostics`); :func:`evaluate` calls it
+from Python.  The contact laws — the Hunt–Crossley Hertz force and traction of a ball–raceway contact
+(:func:`~.contacts.race_contact`), the Coulomb stand-in (:func:`~.contacts.coulomb_slices`) and the
+pocket geometry (:func:`~.contacts.pocket_point`) — are in :mod:`.contacts` (their names stay
+importable from here); the load and speed histories are the kernels of :mod:`.loads`.
 
 Ball–cage (seed 001 §3.2, eqs. 6–7): the pocket surface is a set of points in the
 pocket frame; the deepest interference of a point with the ball gives a Hertz-type
@@ -29,13 +15,6 @@ force Q = K_c δ^1.5 along the line from the point to the ball centre and slidin
 friction F = −μ Q v_s/√(|v_s|² + v_ref²) (μ = 0.06 in seed 001; v_ref regularises the
 sign at zero sliding).  Cage guidance by a ring land uses the same law on the radial
 eccentricity of the cage beyond the land clearance.
-
-Tangential ball–raceway forces: model 0 none; model 1 a *regularised Coulomb stand-in
-for tests* (not a lubricant model): on the n slices of the contact ellipse of
-:mod:`bearingsim.contact.slices` (load share and load centroid of each strip, seed 001 eq. 1,
-points on the deformed surface) the force opposes the slice's sliding velocity (seed 001 eqs. 2–3),
-μ = μ₀ s/√(s² + s₀²) with s = |v_s|/u_roll the slide-roll ratio; model 2 the
-lubricated sliced-ellipse kernel :func:`bearingsim.contact.slices.contact_traction`.
 """
 
 from __future__ import annotations
@@ -45,118 +24,21 @@ import math
 import numpy as np
 from numba import njit
 
-from ..contact import slices as _sl
 from ..statics import _kernels as kn
 from . import layout as ly
 
+# the contact laws (re-exported: ``forces.race_contact``, ``forces.coulomb_slices`` ... keep working)
+from .contacts import (  # noqa: F401
+    coulomb_on_slices,
+    coulomb_slices,
+    pocket_point,
+    race_contact,
+    slice_table,
+)
+from .contacts import cross as _cross
+
 # the load and speed kernels (re-exported: ``forces.loads_at``, ``forces.pack_loads`` ... keep working)
 from .loads import constant_loads, load_channel, loads_at, pack_loads, speed_at  # noqa: F401
-
-
-@njit(cache=True)
-def _cross(a, b, out):
-    out[0] = a[1] * b[2] - a[2] * b[1]
-    out[1] = a[2] * b[0] - a[0] * b[2]
-    out[2] = a[0] * b[1] - a[1] * b[0]
-
-
-@njit(cache=True)
-def slice_table(nsl, table):
-    """table[k], table[nsl + k] ← load share and load centroid ξ̄ of slice k of n = nsl
-    (:func:`bearingsim.contact.slices.slice_fraction`, :func:`~bearingsim.contact.slices.slice_centroid`),
-    evaluated once per right-hand side for :func:`coulomb_on_slices`."""
-    for k in range(nsl):
-        e1 = -1.0 + 2.0 * k / nsl
-        e2 = -1.0 + 2.0 * (k + 1) / nsl
-        table[k] = _sl.slice_fraction(e1, e2)
-        table[nsl + k] = _sl.slice_centroid(e1, e2)
-
-
-@njit(cache=True)
-def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, out):
-    """Regularised Coulomb traction on slices of the contact ellipse (TEST STAND-IN, not a lubricant model).
-
-    The slices of :mod:`bearingsim.contact.slices` (seed 001 eq. 1): slice k spans ξ = x/a ∈ [ξ_k, ξ_k+1],
-    ξ_k = −1 + 2k/n, of the major axis (length 2a); its load is the Hertz pressure integrated over the
-    strip, Q_k = Q·``slice_fraction``(ξ_k, ξ_k+1), and it acts at the strip's load centroid
-    x̄_k = a·``slice_centroid``(ξ_k, ξ_k+1) on the deformed surface, p = centre + x̄_k major +
-    ``slice_point_offset``(x̄_k, 1/r_dev)·normal, with ``normal`` the unit normal from the race towards
-    the ball (the convention of :func:`bearingsim.contact.slices.contact_traction`).
-    Sliding velocity v_s = (v_b + ω_b × (p − b)) − (v_r + ω_r × (p − c_r)), projected on
-    the tangent plane (seed 001 eq. 3); force on the ball −μ Q_k v_s/|v_s| (eq. 2) with
-    μ = μ₀ s/√(s² + s₀² + (v_ref/u)²), s = |v_s|/u the slide-roll ratio, u the mean
-    rolling speed.
-
-    out[10] ← force on ball (3) [N], moment on ball about b (3) [N·m], moment on the
-    race about c_r (3) [N·m], power loss [W].  Returns the slide-roll ratio at the
-    centre slice.
-    """
-    table = np.empty(2 * nsl)
-    slice_table(nsl, table)
-    return coulomb_on_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, table,
-                             out)
-
-
-@njit(cache=True)
-def coulomb_on_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, table, out):
-    """:func:`coulomb_slices` with the slices' load shares and centroids given (:func:`slice_table`)."""
-    for k in range(10):
-        out[k] = 0.0
-    if q <= 0.0:
-        return 0.0
-    srr_c = 0.0
-    n0, n1, n2 = normal[0], normal[1], normal[2]
-    curv = _sl.surface_curvature(r_dev)
-    for k in range(nsl):
-        qk = q * table[k]
-        eta = a * table[nsl + k]
-        dn, _ = _sl.slice_point_offset(eta, curv)
-        p0 = centre[0] + eta * major[0] + dn * n0
-        p1 = centre[1] + eta * major[1] + dn * n1
-        p2 = centre[2] + eta * major[2] + dn * n2
-        rb0, rb1, rb2 = p0 - bc[0], p1 - bc[1], p2 - bc[2]
-        rr0, rr1, rr2 = p0 - rc[0], p1 - rc[1], p2 - rc[2]
-        # surface velocities of ball and race at the slice point
-        sb0 = vb[0] + wb[1] * rb2 - wb[2] * rb1
-        sb1 = vb[1] + wb[2] * rb0 - wb[0] * rb2
-        sb2 = vb[2] + wb[0] * rb1 - wb[1] * rb0
-        sr0 = vr[0] + wr[1] * rr2 - wr[2] * rr1
-        sr1 = vr[1] + wr[2] * rr0 - wr[0] * rr2
-        sr2 = vr[2] + wr[0] * rr1 - wr[1] * rr0
-        nb = sb0 * n0 + sb1 * n1 + sb2 * n2
-        nr = sr0 * n0 + sr1 * n1 + sr2 * n2
-        sb0 -= nb * n0
-        sb1 -= nb * n1
-        sb2 -= nb * n2
-        sr0 -= nr * n0
-        sr1 -= nr * n1
-        sr2 -= nr * n2
-        vs0 = sb0 - sr0
-        vs1 = sb1 - sr1
-        vs2 = sb2 - sr2
-        ur0 = 0.5 * (sb0 + sr0)
-        ur1 = 0.5 * (sb1 + sr1)
-        ur2 = 0.5 * (sb2 + sr2)
-        vs = math.sqrt(vs0 * vs0 + vs1 * vs1 + vs2 * vs2)
-        u = math.sqrt(ur0 * ur0 + ur1 * ur1 + ur2 * ur2)
-        den = math.sqrt(vs * vs + (s0 * u) ** 2 + vref * vref)
-        c = -mu0 * qk / den
-        f0 = c * vs0
-        f1 = c * vs1
-        f2 = c * vs2
-        if k == nsl // 2:
-            srr_c = vs / max(u, 1e-12)
-        out[0] += f0
-        out[1] += f1
-        out[2] += f2
-        out[3] += rb1 * f2 - rb2 * f1
-        out[4] += rb2 * f0 - rb0 * f2
-        out[5] += rb0 * f1 - rb1 * f0
-        out[6] -= rr1 * f2 - rr2 * f1
-        out[7] -= rr2 * f0 - rr0 * f2
-        out[8] -= rr0 * f1 - rr1 * f0
-        out[9] += -(f0 * vs0 + f1 * vs1 + f2 * vs2)
-    return srr_c
 
 
 @njit(cache=True)
@@ -177,160 +59,7 @@ def _rot_yz(gy, gz, rm):
     rm[2, 2] = cy
 
 
-@njit(cache=True)
-def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half_d, alpha, lub, gp, a_c, b_c,
-                 r_dev, tang, fb, mb, fr, mr, res, tbuf):
-    """Normal (Hunt–Crossley Hertz) and tangential force of one ball–raceway contact.
 
-    b, v, w: ball centre, velocity, angular velocity; g: groove-curvature centre;
-    vg_lin: velocity of g as a point of the ring (rigid-body, without spin);
-    worb: ball orbital speed [rad/s]: the traction kernel sees all velocities in the
-    frame turning at ω_m about the bearing axis, where the contact is quasi-stationary
-    (sliding velocities do not depend on the frame; rolling speeds do);
-    rcen, vrace, wrace: ring reference point, its velocity and the ring angular
-    velocity (with spin) for the surface velocity; kc [N/m^1.5]; rgroove = (f − ½)D;
-    a_c, b_c: ellipse semi-axes per N^(1/3); tang: unit tangent of the groove circle
-    (rolling direction).  Accumulates the force/moment on the ball (fb, mb) and on the
-    ring (fr, mr about rcen).  res ← Q, δ, u(3), slide-roll ratio, power loss.  tbuf: work array;
-    for the Coulomb stand-in tbuf[44:] holds its slices (:func:`slice_table`).
-    """
-    d0 = b[0] - g[0]
-    d1 = b[1] - g[1]
-    d2 = b[2] - g[2]
-    ll = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
-    delta = ll - rgroove
-    res[0] = 0.0
-    res[1] = delta
-    res[2] = d0 / ll
-    res[3] = d1 / ll
-    res[4] = d2 / ll
-    res[5] = 0.0
-    res[6] = 0.0
-    if delta <= 0.0:
-        return
-    u0 = d0 / ll
-    u1 = d1 / ll
-    u2 = d2 / ll
-    ddot = u0 * (v[0] - vg_lin[0]) + u1 * (v[1] - vg_lin[1]) + u2 * (v[2] - vg_lin[2])
-    q = kc * delta * math.sqrt(delta) * (1.0 + 1.5 * alpha * ddot)
-    if q <= 0.0:
-        return
-    res[0] = q
-    fb[0] -= q * u0
-    fb[1] -= q * u1
-    fb[2] -= q * u2
-    fr[0] += q * u0
-    fr[1] += q * u1
-    fr[2] += q * u2
-    gr0 = g[0] - rcen[0]
-    gr1 = g[1] - rcen[1]
-    gr2 = g[2] - rcen[2]
-    mr[0] += gr1 * q * u2 - gr2 * q * u1
-    mr[1] += gr2 * q * u0 - gr0 * q * u2
-    mr[2] += gr0 * q * u1 - gr1 * q * u0
-    mode = int(gp[ly.G_TRAC])
-    nrm = tbuf[0:3]
-    cen = tbuf[3:6]
-    maj = tbuf[6:9]
-    out = tbuf[10:20]
-    nrm[0] = u0
-    nrm[1] = u1
-    nrm[2] = u2
-    r_c = half_d - 0.5 * delta
-    for i in range(3):
-        cen[i] = b[i] + r_c * nrm[i]
-    _cross(nrm, tang, maj)
-    # velocities relative to the frame orbiting with the ball at worb about the x axis
-    vb_r = tbuf[20:23]
-    wb_r = tbuf[23:26]
-    vr_r = tbuf[26:29]
-    wr_r = tbuf[29:32]
-    vb_r[0] = v[0]
-    vb_r[1] = v[1] + worb * b[2]
-    vb_r[2] = v[2] - worb * b[1]
-    wb_r[0] = w[0] - worb
-    wb_r[1] = w[1]
-    wb_r[2] = w[2]
-    vr_r[0] = vrace[0]
-    vr_r[1] = vrace[1] + worb * rcen[2]
-    vr_r[2] = vrace[2] - worb * rcen[1]
-    wr_r[0] = wrace[0] - worb
-    wr_r[1] = wrace[1]
-    wr_r[2] = wrace[2]
-    # slide-roll ratio at the contact centre (output): v_s / u in the orbiting frame
-    rbv = tbuf[32:35]
-    rrv = tbuf[35:38]
-    t1 = tbuf[38:41]
-    t2 = tbuf[41:44]
-    for i in range(3):
-        rbv[i] = cen[i] - b[i]
-        rrv[i] = cen[i] - rcen[i]
-    _cross(wb_r, rbv, t1)
-    _cross(wr_r, rrv, t2)
-    vs2 = 0.0
-    uu2 = 0.0
-    for i in range(3):
-        sb = vb_r[i] + t1[i]
-        sr = vr_r[i] + t2[i]
-        vs2 += (sb - sr) ** 2
-        uu2 += (0.5 * (sb + sr)) ** 2
-    res[5] = math.sqrt(vs2) / max(math.sqrt(uu2), 1e-12)
-    res[6] = 0.0
-    if mode == 0:
-        return
-    q13 = q ** (1.0 / 3.0)
-    # both traction models take the normal from the race towards the ball
-    for i in range(3):
-        t1[i] = -nrm[i]
-    if mode == 1:
-        coulomb_on_slices(q, a_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[ly.G_MU0],
-                          gp[ly.G_S0], gp[ly.G_VREF], int(gp[ly.G_NSL]), tbuf[44:], out)
-    else:
-        _sl.contact_traction(q, a_c * q13, b_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, lub,
-                             int(gp[ly.G_NSL]), out)
-    res[6] = out[9]
-    for i in range(3):
-        fb[i] += out[i]
-        mb[i] += out[3 + i]
-        fr[i] -= out[i]
-        mr[i] += out[6 + i]
-
-
-@njit(cache=True)
-def pocket_point(shape, par, radius, ut, ur, ux):
-    """Point of the pocket surface nearest the ball centre (ut, ur, ux), pocket frame (t, r, x) [m].
-
-    shape 0: sphere of ``radius`` about the pocket centre, open within the half-angle ``par``
-    [rad] of the radial axis r: the point is radius·û when û = u/|u| lies on the surface, else
-    the nearest point of the opening's rim at the same azimuth.  shape 1: cylinder of ``radius``
-    about the radial axis, half-length ``par`` [m]: the point at the ball centre's height
-    (clamped to ±par) in the direction of its offset in the t–x plane.  Exact closest points
-    (seed 001 §3.2 discretises the surface into nodes; the closed form is what those nodes
-    converge to, without the jumps of the deepest node as the ball moves).
-    """
-    if shape == 0:
-        d = math.sqrt(ut * ut + ur * ur + ux * ux)
-        if d == 0.0:
-            return radius, 0.0, 0.0
-        c = ur / d
-        cmax = math.cos(par)
-        if abs(c) <= cmax:
-            f = radius / d
-            return ut * f, ur * f, ux * f
-        rho = math.sqrt(ut * ut + ux * ux)
-        sp = math.sin(par) * radius
-        cr = cmax * radius if ur > 0.0 else -cmax * radius
-        if rho == 0.0:
-            return sp, cr, 0.0
-        return sp * ut / rho, cr, sp * ux / rho
-    rho = math.sqrt(ut * ut + ux * ux)
-    h = min(par, max(-par, ur))
-    if rho == 0.0:
-        return radius, h, 0.0
-    return radius * ut / rho, h, radius * ux / rho
-
-
-# accumulators of rhs (one float array, summed in the same order as the equations are written)
 A_PIN, A_POUT, A_PCAGE, A_PLAND, A_EPOT, A_ECAGE = range(6)
 NACC = 6
 
