@@ -11,6 +11,7 @@ import ast
 import re
 
 import numpy as np
+import pytest
 
 from bearingsim.statics import layout as L
 
@@ -76,3 +77,44 @@ def test_result_status_text_from_the_table():
 
     res = jh.solve(load_bearing("skf-7011-cdga-hc"), jh.Loads(fa=1000.0), 0.0)
     assert res.status_code == L.STATUS_CONVERGED and res.status == L.STATUS[L.STATUS_CONVERGED]
+
+
+def test_row_formulas_once_kernels_and_dynamics_agree_bitwise():
+    """The groove-centre position and the ball speed constants are written once (layout); the compiled
+    kernels' copies and the dynamic model's groove circles give the same bits on real rows."""
+    from bearingsim.dynamics import layout as dly
+    from bearingsim.dynamics import model as md
+    from bearingsim.io import load_bearing
+    from bearingsim.statics import _kernels as kn
+
+    system = load_bearing("hub-seed001")
+    rows = system.rows_parameters()
+    rng = np.random.default_rng(12)
+    for par in rows:
+        for w2 in [0.0, *(rng.uniform(0.0, 1e7, 5))]:
+            assert kn.ball_speed_constants(par, w2) == L.ball_speed_constants(par, w2)
+        assert kn.inner_groove_centre_axial(par) == L.inner_groove_centre_axial(par)
+    rx = md.row_extras(system, rows)
+    for r, par in enumerate(rows):
+        assert rx[r, dly.X_XGI] == L.inner_groove_centre_axial(par)
+        assert rx[r, dly.X_XGO] == L.outer_groove_centre_axial(par)
+        assert rx[r, dly.X_RGO] == L.outer_groove_centre_radius(par)
+    # the centrifugal constant is F_c at ω_m = ω: ½ m d_m ω² (Harris & Kotzalas 2007 vol. 2 ch. 3)
+    par = rows[0]
+    _, cf = L.ball_speed_constants(par, 100.0**2)
+    assert cf == pytest.approx(0.5 * par[L.P_MASS] * par[L.P_DM] * 1e4, rel=1e-15)
+
+
+def test_hertz_scaling_laws_match_the_full_contact():
+    """Q = K δ^1.5 and p_max = C_p Q^(1/3) (contact.hertz) reproduce the full Hertz solution of a row's
+    contact at other loads (Hamrock & Brewe 1983 eqs. 11–13)."""
+    from bearingsim.contact import hertz
+    from bearingsim.io import load_bearing
+
+    b = load_bearing("skf-7011-cdga-hc")
+    c1 = b.contact(1.0, True)
+    for q in (10.0, 500.0, 3000.0):
+        c = b.contact(q, True)
+        assert hertz.max_pressure_from_load(c1.max_pressure, q) == pytest.approx(c.max_pressure, rel=1e-12)
+        assert hertz.load_from_approach(c.stiffness_constant, c.approach) == pytest.approx(q, rel=1e-12)
+        assert hertz.approach_from_load(c.stiffness_constant, q) == pytest.approx(c.approach, rel=1e-12)

@@ -245,6 +245,29 @@ def series_constant(k_inner: float, k_outer: float) -> float:
     return ((1.0 / k_inner) ** (2.0 / 3.0) + (1.0 / k_outer) ** (2.0 / 3.0)) ** -1.5
 
 
+@njit(cache=True)
+def load_from_approach(k, delta):
+    """Q = K δ^1.5 [N] for an elastic approach δ ≥ 0 [m] and a load–deflection constant K [N/m^1.5]
+    (Hamrock & Brewe 1983 eq. 13 inverted; Harris & Kotzalas 2007 vol. 1 eq. 7.1)."""
+    return k * delta**1.5
+
+
+@njit(cache=True)
+def approach_from_load(k, q):
+    """δ = (Q / K)^(2/3) [m] for a load Q ≥ 0 [N] (the inverse of :func:`load_from_approach`)."""
+    return (q / k) ** (2.0 / 3.0)
+
+
+@njit(cache=True)
+def max_pressure_from_load(c_p, q):
+    """p_max = C_p Q^(1/3) [Pa] for a load Q ≥ 0 [N] at fixed contact geometry.
+
+    With R, κ, 𝓔 fixed, a and b grow as Q^(1/3) (Hamrock & Brewe 1983 eqs. 11–12), so
+    p_max = 3Q/(2πab) = C_p Q^(1/3) with C_p the maximum pressure at Q = 1 N [Pa/N^(1/3)]
+    (``max_pressure`` of a contact evaluated at 1 N, as in the row vectors of the statics)."""
+    return c_p * q ** (1.0 / 3.0)
+
+
 def sphere_on_flat(q: float, radius: float, e_eff: float) -> tuple[float, float, float]:
     """Closed-form Hertz sphere on a flat: contact radius, approach, max pressure.
 

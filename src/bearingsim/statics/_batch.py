@@ -28,6 +28,7 @@ import math
 import numpy as np
 from numba import njit
 
+from ..contact.hertz import max_pressure_from_load
 from . import _kernels as kn
 
 SUMMARY_FIELDS = ("p_inner", "p_outer", "alpha_inner_min", "alpha_inner_max", "alpha_outer_min", "alpha_outer_max",
@@ -108,9 +109,9 @@ def _summarise(rows, ballout, out):
         _contact_extremes(ballout, r, z, 2, 8, 9, inner)
         _contact_extremes(ballout, r, z, 3, 10, 11, outer)
         if inner[0] > 0.0:
-            pi_max = max(pi_max, par[kn.P_CPI] * inner[0] ** (1.0 / 3.0))
+            pi_max = max(pi_max, max_pressure_from_load(par[kn.P_CPI], inner[0]))
         if outer[0] > 0.0:
-            po_max = max(po_max, par[kn.P_CPO] * outer[0] ** (1.0 / 3.0))
+            po_max = max(po_max, max_pressure_from_load(par[kn.P_CPO], outer[0]))
     out[0] = pi_max
     out[1] = po_max
     out[2], out[3] = (inner[1], inner[2]) if inner[1] <= inner[2] else (math.nan, math.nan)

@@ -55,6 +55,7 @@ import numpy as np
 from numba import njit
 
 # ---- row parameter layout and raceway control: the public contract of bearingsim.statics.layout ----------
+from . import layout as _layout
 from .layout import (  # noqa: F401  (re-exported: the kernels read them as compile-time constants)
     CONTROL_AUTO,
     CONTROL_INNER,
@@ -84,6 +85,10 @@ from .layout import (  # noqa: F401  (re-exported: the kernels read them as comp
     P_Z,
     STATUS,
 )
+
+#: the row formulas of :mod:`.layout` (written once there, in plain Python), compiled for the kernels
+inner_groove_centre_axial = njit(cache=True, error_model="numpy")(_layout.inner_groove_centre_axial)
+ball_speed_constants = njit(cache=True, error_model="numpy")(_layout.ball_speed_constants)
 
 
 @njit(cache=True, error_model="numpy")
@@ -482,11 +487,8 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
         z = int(par[P_Z])
         s = par[P_SIGN]
         ric = par[P_RIC]
-        xg = par[P_XROW] + s * (par[P_XIC] + par[P_AXOFF])  # inner groove centre, offset included
-        d = par[P_D]
-        dm = par[P_DM]
-        cg = par[P_JB] * w2 * dm / (d * d)
-        cf = 0.5 * par[P_MASS] * dm * w2
+        xg = inner_groove_centre_axial(par)  # inner groove centre, offset included
+        cg, cf = ball_speed_constants(par, w2)
         for j in range(z):
             psi = par[P_PSI0] + 2.0 * math.pi * j / z
             cp = math.cos(psi)
@@ -932,11 +934,10 @@ def ring_assemble_coupled(rows, qv, omega, lam_state, xb, loads, res, resc, kmat
         z = int(par[P_Z])
         s = par[P_SIGN]
         ric = par[P_RIC]
-        xg = par[P_XROW] + s * (par[P_XIC] + par[P_AXOFF])
+        xg = inner_groove_centre_axial(par)
         d = par[P_D]
         dm = par[P_DM]
-        cg = par[P_JB] * w2 * dm / (d * d)
-        cf = 0.5 * par[P_MASS] * dm * w2
+        cg, cf = ball_speed_constants(par, w2)
         ri = par[P_RI]
         ro = par[P_RO]
         ki = par[P_KI]

@@ -34,6 +34,7 @@ from functools import cached_property
 import numpy as np
 from scipy.optimize import brentq
 
+from ..contact import hertz
 from ..errors import InputError
 from ..geometry import BallBearing
 from . import _kernels as kn
@@ -224,8 +225,8 @@ class BearingSystem:
             if dn <= 0:
                 continue
             ki, ko, kn_ = b.contact_constants
-            qball = kn_ * dn**1.5
-            p = max(par[kn.P_CPI], par[kn.P_CPO]) * qball ** (1.0 / 3.0)
+            qball = hertz.load_from_approach(kn_, dn)
+            p = hertz.max_pressure_from_load(max(par[kn.P_CPI], par[kn.P_CPO]), qball)
             if p > MAX_PRELOAD_PRESSURE:
                 raise InputError("preload", f"row {i}: an axial offset of {r.axial_offset * 1e6:.4g} µm makes the "
                                  f"balls penetrate the raceways by {dn * 1e6:.4g} µm (contact pressure "
@@ -326,7 +327,7 @@ def _offset_limits(b: BallBearing) -> tuple[float, float]:
     dx0, dr0 = par[kn.P_DX0], par[kn.P_DR0]
     _, _, kn_ = b.contact_constants
     qmax = (MAX_PRELOAD_PRESSURE / max(par[kn.P_CPI], par[kn.P_CPO])) ** 3
-    dn = (qmax / kn_) ** (2.0 / 3.0)
+    dn = hertz.approach_from_load(kn_, qmax)
     lo = math.sqrt(max(rsum**2 - dr0**2, 0.0)) - dx0
     hi = math.sqrt((rsum + dn) ** 2 - dr0**2) - dx0
     return max(lo, 0.0), hi

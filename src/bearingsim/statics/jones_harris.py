@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..contact import hertz
 from ..errors import InputError, InputTypeError
 from . import _kernels as kn
 from .axial import solve_thrust
@@ -274,7 +275,7 @@ def _moment_tilt(bearing, loads: Loads) -> np.ndarray:
     psi = par[kn.P_PSI0] + 2 * math.pi * np.arange(z) / z
     reach = float(np.max(np.abs(np.sin(psi) * loads.m_y - np.cos(psi) * loads.m_z))) / m
     q_ball = 2.0 * m / (z * ric)
-    approach = (q_ball / bearing.contact_constants[2]) ** (2.0 / 3.0)
+    approach = hertz.approach_from_load(bearing.contact_constants[2], q_ball)
     tilt = (big_a * math.sin(bearing.free_contact_angle) + approach) / (ric * max(reach, 1e-3))
     return np.array([loads.m_y / m * tilt, loads.m_z / m * tilt])
 
@@ -497,8 +498,8 @@ def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.nd
             cols["outer_contact_angle_rad"].append(math.atan2(so, co))
             cols["inner_load_N"].append(bo[2])
             cols["outer_load_N"].append(bo[3])
-            cols["inner_max_pressure_Pa"].append(par[kn.P_CPI] * bo[2] ** (1 / 3))
-            cols["outer_max_pressure_Pa"].append(par[kn.P_CPO] * bo[3] ** (1 / 3))
+            cols["inner_max_pressure_Pa"].append(hertz.max_pressure_from_load(par[kn.P_CPI], bo[2]))
+            cols["outer_max_pressure_Pa"].append(hertz.max_pressure_from_load(par[kn.P_CPO], bo[3]))
             cols["inner_approach_m"].append(bo[4])
             cols["outer_approach_m"].append(bo[5])
             cols["x1_m"].append(xb[r, j, 0])

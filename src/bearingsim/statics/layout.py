@@ -138,3 +138,44 @@ def status_cf_attributes() -> dict:
     """CF attributes of an integer ``status`` variable (CF conventions §3.5: flag_values, flag_meanings); the
     writer gives ``flag_values`` the variable's integer type."""
     return {"flag_values": list(STATUS_SHORT), "flag_meanings": " ".join(m for _, m in STATUS_SHORT.values())}
+
+
+# ---- formulas on the row vector, written once ------------------------------------------------------------
+# Plain Python on the vector (this module stays a leaf, without numba); :mod:`bearingsim.statics._kernels`
+# compiles the same functions with numba for the ring assemblers, and Python callers (the dynamic model's
+# builder) call them as they are: the same floating-point operations in the same order, so the same bits.
+
+
+def inner_groove_centre_axial(par):
+    """Global axial position of the inner groove-curvature centres of a row, ring centred [m].
+
+    x_gi = x_row + s (ξ_ic + e): the inner groove centre lies at local axial position ξ_ic = r_i sin α₀ from
+    the row plane, moved by the preload offset e (Harris & Kotzalas 2007 vol. 2 eqs. 3.22–3.26; seed 000
+    eq. 6).  ``par``: a row-parameter vector (indices :data:`P_XROW`, :data:`P_SIGN`, :data:`P_XIC`,
+    :data:`P_AXOFF`)."""
+    return par[P_XROW] + par[P_SIGN] * (par[P_XIC] + par[P_AXOFF])
+
+
+def outer_groove_centre_axial(par):
+    """Global axial position of the (fixed) outer groove-curvature centres of a row [m].
+
+    x_go = x_row + s (ξ_ic − Δx₀): Δx₀ axially from the inner ones in the centred position, without offset
+    (Harris & Kotzalas 2007 vol. 2 eqs. 3.22–3.26)."""
+    return par[P_XROW] + par[P_SIGN] * (par[P_XIC] - par[P_DX0])
+
+
+def outer_groove_centre_radius(par):
+    """Radius of the circle of the outer groove-curvature centres [m]: r_go = r_ic − Δr₀."""
+    return par[P_RIC] - par[P_DR0]
+
+
+def ball_speed_constants(par, omega_squared):
+    """Gyroscopic and centrifugal constants of a row's balls at ring speed ω (omega_squared = ω² [rad²/s²]).
+
+    Returns (c_g, c_f) [N, N]: c_g = J ω² d_m / D² and c_f = ½ m d_m ω², the force scales of the gyroscopic
+    term G = M_g / D, M_g = J ω_R ω_m sin β, and of the centrifugal force F_c = ½ m d_m ω_m², which the ball
+    kernel (:func:`bearingsim.statics._kernels.ball_eval`) multiplies by functions of Jones' speed ratios
+    (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3; seed 000 eqs. 11–12)."""
+    d = par[P_D]
+    dm = par[P_DM]
+    return par[P_JB] * omega_squared * dm / (d * d), 0.5 * par[P_MASS] * dm * omega_squared
