@@ -12,7 +12,7 @@ import enum
 
 
 class ExitCode(enum.IntEnum):
-    """Exit status of the ``bearingsim`` command (the one table; :func:`bearingsim.clitools.report_error`
+    """Exit status of the ``bearingsim`` command (the one table; :func:`bearingsim.cli.errors.report_error`
     maps every exception to one of them and one line on stderr)."""
 
     OK = 0

@@ -415,7 +415,7 @@ def format_quantity(value: float, dimension: str, unit: str | None = None) -> st
 
 
 def _convert(text: str, si: str, field: str, dim: str | None = None, default: str = "") -> float:
-    """Compatibility wrapper (``cli_lubrication`` reads ``--speeds`` with it): ``text`` with its unit in
+    """Compatibility wrapper (``cli.lubrication`` reads ``--speeds`` with it): ``text`` with its unit in
     the dimension whose SI unit is ``si``, through :func:`parse_quantity` (no expression evaluation)."""
     for name, (_, si_name, _) in DIMENSIONS.items():
         if si_name == si and name not in ("frequency", "angle"):

@@ -362,7 +362,7 @@ def test_cli_cage_modes_json_and_bad_input():
     import typer
     from typer.testing import CliRunner
 
-    from bearingsim import cli_cage
+    from bearingsim.cli import cage as cli_cage
     from bearingsim.cage_modes import default_cage_ring as dcr
 
     app = typer.Typer()

@@ -154,9 +154,9 @@ def test_full_disk_is_one_line_exit_2(args):
     assert not Path("/dev/full.png").exists()  # matplotlib's habit of appending ".png" is not followed
 
 
-# ---- the mechanism (clitools), in-process ------------------------------------------------------------------
+# ---- the mechanism (cli.output), in-process ------------------------------------------------------------------
 def test_atomic_output_keeps_the_old_file_when_the_writer_fails(tmp_path):
-    from bearingsim.clitools import atomic_output
+    from bearingsim.cli.output import atomic_output
     from bearingsim.errors import InputError
 
     target = tmp_path / "sub" / "result.csv"
@@ -179,7 +179,7 @@ def test_atomic_output_keeps_the_old_file_when_the_writer_fails(tmp_path):
 
 
 def test_output_file_refuses_a_folder_and_a_path_below_a_file(tmp_path):
-    from bearingsim.clitools import output_file, output_folder
+    from bearingsim.cli.output import output_file, output_folder
     from bearingsim.errors import InputError
 
     with pytest.raises(InputError, match="--plot: .* is a folder"):
@@ -216,7 +216,7 @@ def test_writing_maps_only_errors_about_the_output(tmp_path):
     another file (an input read in the same block) passes unchanged."""
     import errno
 
-    from bearingsim.clitools import writing
+    from bearingsim.cli.output import writing
     from bearingsim.errors import InputError
 
     out = tmp_path / "run.nc"

@@ -93,7 +93,7 @@ def broken_command(tmp_path):
     """A sitecustomize that makes the load parser of every command raise an unexpected RuntimeError (a stand-in
     for a bug), loaded by the installed script through PYTHONPATH."""
     (tmp_path / "sitecustomize.py").write_text(
-        "import bearingsim.clitools as ct\n"
+        "import bearingsim.cli.options as ct\n"
         "def _boom(*a, **k):\n"
         "    raise RuntimeError('boom from the test')\n"
         "ct.parse_loads = _boom\n")

@@ -65,7 +65,7 @@ def test_case_parsing_and_bad_input():
 
 
 def _run_cli(args, **kw):
-    code = "from bearingsim import cli, cli_dynamics; cli_dynamics.register(cli.app); cli.main()"
+    code = "from bearingsim.cli import main; main()"
     return subprocess.Popen([sys.executable, "-c", code, *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             **kw)
 

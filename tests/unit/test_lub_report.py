@@ -10,7 +10,7 @@ import pytest
 import typer
 from typer.testing import CliRunner
 
-from bearingsim.cli_lubrication import register
+from bearingsim.cli.lubrication import register
 from bearingsim.contact import ehl, hertz
 from bearingsim.errors import InputError
 from bearingsim.io import load_bearing

@@ -96,7 +96,7 @@ def test_fast_units_equal_pint():
 
 
 # ---- first-run compilation note ----------------------------------------------------------------------------
-COMPILE_SMALL = ("from bearingsim.clitools import announce_compilation, finish_compilation_note\n"
+COMPILE_SMALL = ("from bearingsim.cli.console import announce_compilation, finish_compilation_note\n"
                  "announce_compilation()\n"
                  "import bearingsim.contact.hertz as h\n"
                  "h.elliptic_ke(0.5)\n"
@@ -122,7 +122,7 @@ def test_compilation_note_on_a_cache_miss_only(tmp_path):
 
 def test_compilation_note_counts_uncached_kernels_apart():
     """A kernel without cache=True compiles on every run: the note does not promise a first run only."""
-    code = ("from bearingsim.clitools import announce_compilation, finish_compilation_note\n"
+    code = ("from bearingsim.cli.console import announce_compilation, finish_compilation_note\n"
             "announce_compilation()\n"
             "from numba import njit\n"
             "def f(x):\n    return x + 1\n"

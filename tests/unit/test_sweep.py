@@ -143,7 +143,7 @@ def test_cli_map_export_and_hub_static(tmp_path):
     import typer
     from typer.testing import CliRunner
 
-    from bearingsim import cli_sweep
+    from bearingsim.cli import sweep as cli_sweep
 
     app = typer.Typer()
     rep = typer.Typer()

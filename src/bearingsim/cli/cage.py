@@ -1,6 +1,6 @@
-"""CLI command of the elastic cage model: ``cage-modes``.
+"""Command of the elastic cage model: ``cage-modes``.
 
-Wire with ``cli_cage.register(app)`` in :mod:`bearingsim.cli`.  Lengths are strings with units
+Registered on the app by :func:`register`.  Lengths are strings with units
 ("15 mm"; a bare number is in m, as everywhere in units.py); ``--json`` prints one JSON object in SI; bad input raises
 :class:`~bearingsim.errors.InputError` (the main CLI prints it and exits 2).
 """
@@ -12,7 +12,8 @@ from typing import Optional
 
 import typer
 
-from .clitools import BearingArg
+from .console import make_console
+from .options import BearingArg, JsonOpt
 
 
 def cage_modes_cmd(
@@ -24,7 +25,7 @@ def cage_modes_cmd(
     pocket: Optional[str] = typer.Option(None, "--pocket-diameter",
                                          help='Pocket diameter, e.g. "11.3 mm" (default D + 0.2 mm)'),
     elements: int = typer.Option(8, "--elements-per-pitch", help="FE elements per pocket pitch (even, ≥ 4)"),
-    as_json: bool = typer.Option(False, "--json", help="Print one JSON object in SI units"),
+    as_json: JsonOpt = False,
 ):
     """Free–free elastic modes of the cage (FE ring model) for mode synthesis in the dynamics.
 
@@ -32,9 +33,9 @@ def cage_modes_cmd(
     on the pitch circle, width 1.4 D, thickness 0.3 D, pockets D + 0.2 mm); a bearing system
     (double row, arrangement) uses its first row's geometry.
     """
-    from .cage_modes import cage_modes, default_cage_ring
-    from .io import load_bearing
-    from .units import parse_quantity
+    from ..cage_modes import cage_modes, default_cage_ring
+    from ..io import load_bearing
+    from ..units import parse_quantity
 
     b = load_bearing(bearing)
     row = b.rows[0].bearing if hasattr(b, "rows") else b
@@ -54,8 +55,6 @@ def cage_modes_cmd(
         typer.echo(json.dumps(out))
         return
     from rich.table import Table
-
-    from .clitools import make_console
 
     con = make_console()
     r = ring

@@ -1,20 +1,25 @@
-"""CLI of the dynamic engine: ``bearingsim simulate CASE.toml --out run.nc [--resume]`` and
-``bearingsim reproduce hub-hysteresis CASE.toml`` (seed 001 Figs. 7–9).
-
-Wired with ``cli_dynamics.register(app, reproduce_app)``.
+"""Commands of the dynamic engine: ``bearingsim simulate CASE.toml --out run.nc [--resume]`` and
+``bearingsim reproduce hub-hysteresis CASE.toml`` (seed 001 Figs. 7–9).  Registered on the app by :func:`register`.
 """
 
 from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Optional
+from typing import Annotated, Optional
 
 import typer
 
+from .console import announce_compilation, make_console
+from .options import out_option
+
+CaseArg = Annotated[Path, typer.Argument(help="case TOML file (see examples/spindle-7011.toml)")]
+SimulateOut = out_option("output netCDF file (streamed in chunks)", "-o")
+HysteresisOut = out_option("folder for the runs, CSV and loop plot")
+
 
 def _numbers(text: str, field: str) -> list[float]:
-    from .errors import InputError
+    from ..errors import InputError
 
     try:
         vals = [float(x) for x in text.split(",") if x.strip()]
@@ -23,95 +28,98 @@ def _numbers(text: str, field: str) -> list[float]:
     return vals
 
 
+def simulate(case: CaseArg,
+             out: SimulateOut,
+             resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint OUT.ckpt.npz "
+                                         "(none: start from the beginning, with a note)"),
+             checkpoint_every: Optional[str] = typer.Option(
+                 None, "--checkpoint-every",
+                 help="wall-clock time between checkpoints, e.g. '10 s' (default: the case's, else 30 s)"),
+             duration: Optional[str] = typer.Option(None, "--duration",
+                                                    help="override the case duration, e.g. '2 ms'"),
+             json_out: bool = typer.Option(False, "--json", help="print a JSON summary (SI)"),
+             quiet: bool = typer.Option(False, "--quiet", help="no progress bar")):
+    """Run a dynamic simulation of rings, balls and cage in time."""
+    import dataclasses
+
+    from ..dynamics.case import load_case
+    from ..dynamics.run import simulate as run_sim
+    from ..units import parse_quantity
+    from .output import output_file, writing
+
+    c = load_case(case)
+    out = output_file(out, "--out", renamed=True)
+    if duration is not None:
+        c = dataclasses.replace(c, duration=parse_quantity(duration, "time", "--duration"))
+    con = make_console(stderr=True)
+    every = None
+    if checkpoint_every is not None:
+        from ..errors import InputError
+
+        every = parse_quantity(checkpoint_every, "time", "--checkpoint-every")
+        if not every > 0:
+            raise InputError("--checkpoint-every", f"must be a positive time, got {checkpoint_every!r}",
+                             "e.g. '30 s'")
+    announce_compilation()
+    with writing("--out", out):  # a full disk while streaming: one line; the checkpoint (if any) allows --resume
+        res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con,
+                      checkpoint_seconds=every)
+    summary = dict(res.summary)
+    summary["output"] = str(out)
+    try:
+        summary["steady_state"] = res.steady_state()
+    except Exception:  # noqa: BLE001 - a summary must not hide the saved output
+        pass
+    if json_out:
+        typer.echo(json.dumps(summary))
+    else:
+        con.print(f"wrote {out}: {summary['simulated_seconds'] * 1e3:.4g} ms simulated in "
+                  f"{summary['wall_seconds']:.3g} s ({summary['wall_per_simulated_second']:.4g} wall s per "
+                  f"simulated s, {summary['steps']} steps)")
+        ss = summary.get("steady_state")
+        if ss:
+            con.print(f"last half of the run: heat {ss['heat_generation_total_W']:.4g} W (ball-inner "
+                      f"{ss['power_loss_inner']:.4g}, ball-outer {ss['power_loss_outer']:.4g}, ball-cage "
+                      f"{ss['power_loss_cage']:.4g}, land {ss['power_loss_land']:.4g}; rolling resistance "
+                      f"{ss['power_loss_rolling']:.4g} of the raceway terms); inner-ring friction torque "
+                      f"{ss['inner_ring_friction_torque']:.4g} N·m; cage {ss['cage_angular_speed']:.5g} rad/s")
+            if ss.get("cage_pocket_deformation_max", 0.0) > 0:
+                con.print("elastic cage: largest pocket displacement "
+                          f"{ss['cage_pocket_deformation_max'] * 1e6:.3g} µm, largest normal stress "
+                          f"{ss['cage_peak_stress_max'] / 1e6:.3g} MPa")
+
+
+def reproduce_hub_hysteresis(
+    case: Path = typer.Argument(..., help="hub case TOML (e.g. examples/hub-moment-50hz.toml)"),
+    speeds: str = typer.Option("100", "--speeds", help="vehicle speeds [km/h], comma-separated (seed: 10,50,100)"),
+    frequencies: str = typer.Option("50", "--frequencies", help="load frequencies [Hz] (seed: 1,10,50)"),
+    cycles: int = typer.Option(3, "--cycles", help="load cycles per run (the first is a start-up)"),
+    out: HysteresisOut = Path("out"),
+):
+    """Seed 001 Figs. 7–9: tilt–moment hysteresis W_H at 0.3 kN·m per speed and load frequency (long runs)."""
+    from ..studies.hub_dynamic import run_study
+    from .output import atomic_output, output_folder, writing
+
+    con = make_console()
+    out = output_folder(out, "--out")
+    announce_compilation()
+    with writing("--out", out):
+        study = run_study(case, _numbers(speeds, "--speeds"), _numbers(frequencies, "--frequencies"), cycles,
+                          out_dir=out, progress=True, console=make_console(stderr=True))
+    study.print_table(con)
+    csv, png = out / "hub_hysteresis.csv", out / "hub_hysteresis_loops.png"
+    with atomic_output(csv, "--out") as tmp:
+        study.to_csv(tmp)
+    with atomic_output(png, "--out") as tmp:
+        study.plot(tmp)
+    con.print(f"wrote {csv} and {png}")
+
+
 def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None:
     """Add ``simulate`` (and, with ``reproduce_app``, ``reproduce hub-hysteresis``) to the typer app."""
+    app.command("simulate")(simulate)
+    if reproduce_app is not None:
+        reproduce_app.command("hub-hysteresis")(reproduce_hub_hysteresis)
 
-    @app.command()
-    def simulate(case: Path = typer.Argument(..., help="case TOML file (see examples/spindle-7011.toml)"),
-                 out: Path = typer.Option(..., "--out", "-o", help="output netCDF file (streamed in chunks)"),
-                 resume: bool = typer.Option(False, "--resume", help="continue from the checkpoint OUT.ckpt.npz "
-                                             "(none: start from the beginning, with a note)"),
-                 checkpoint_every: Optional[str] = typer.Option(
-                     None, "--checkpoint-every",
-                     help="wall-clock time between checkpoints, e.g. '10 s' (default: the case's, else 30 s)"),
-                 duration: Optional[str] = typer.Option(None, "--duration",
-                                                        help="override the case duration, e.g. '2 ms'"),
-                 json_out: bool = typer.Option(False, "--json", help="print a JSON summary (SI)"),
-                 quiet: bool = typer.Option(False, "--quiet", help="no progress bar")):
-        """Run a dynamic simulation of rings, balls and cage in time (issue 5)."""
-        import dataclasses
 
-        from .clitools import announce_compilation, make_console, output_file, writing
-        from .dynamics.case import load_case
-        from .dynamics.run import simulate as run_sim
-        from .units import parse_quantity
-
-        c = load_case(case)
-        out = output_file(out, "--out", renamed=True)
-        if duration is not None:
-            c = dataclasses.replace(c, duration=parse_quantity(duration, "time", "--duration"))
-        con = make_console(stderr=True)
-        every = None
-        if checkpoint_every is not None:
-            from .errors import InputError
-
-            every = parse_quantity(checkpoint_every, "time", "--checkpoint-every")
-            if not every > 0:
-                raise InputError("--checkpoint-every", f"must be a positive time, got {checkpoint_every!r}",
-                                 "e.g. '30 s'")
-        announce_compilation()
-        with writing("--out", out):  # a full disk while streaming: one line; the checkpoint (if any) allows --resume
-            res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con,
-                          checkpoint_seconds=every)
-        summary = dict(res.summary)
-        summary["output"] = str(out)
-        try:
-            summary["steady_state"] = res.steady_state()
-        except Exception:  # noqa: BLE001 - a summary must not hide the saved output
-            pass
-        if json_out:
-            typer.echo(json.dumps(summary))
-        else:
-            con.print(f"wrote {out}: {summary['simulated_seconds'] * 1e3:.4g} ms simulated in "
-                      f"{summary['wall_seconds']:.3g} s ({summary['wall_per_simulated_second']:.4g} wall s per "
-                      f"simulated s, {summary['steps']} steps)")
-            ss = summary.get("steady_state")
-            if ss:
-                con.print(f"last half of the run: heat {ss['heat_generation_total_W']:.4g} W (ball-inner "
-                          f"{ss['power_loss_inner']:.4g}, ball-outer {ss['power_loss_outer']:.4g}, ball-cage "
-                          f"{ss['power_loss_cage']:.4g}, land {ss['power_loss_land']:.4g}; rolling resistance "
-                          f"{ss['power_loss_rolling']:.4g} of the raceway terms); inner-ring friction torque "
-                          f"{ss['inner_ring_friction_torque']:.4g} N·m; cage {ss['cage_angular_speed']:.5g} rad/s")
-                if ss.get("cage_pocket_deformation_max", 0.0) > 0:
-                    con.print("elastic cage: largest pocket displacement "
-                              f"{ss['cage_pocket_deformation_max'] * 1e6:.3g} µm, largest normal stress "
-                              f"{ss['cage_peak_stress_max'] / 1e6:.3g} MPa")
-
-    if reproduce_app is None:
-        return
-
-    @reproduce_app.command("hub-hysteresis")
-    def reproduce_hub_hysteresis(
-        case: Path = typer.Argument(..., help="hub case TOML (e.g. examples/hub-moment-50hz.toml)"),
-        speeds: str = typer.Option("100", "--speeds", help="vehicle speeds [km/h], comma-separated (seed: 10,50,100)"),
-        frequencies: str = typer.Option("50", "--frequencies", help="load frequencies [Hz] (seed: 1,10,50)"),
-        cycles: int = typer.Option(3, "--cycles", help="load cycles per run (the first is a start-up)"),
-        out: Path = typer.Option(Path("out"), "--out", help="folder for the runs, CSV and loop plot"),
-    ):
-        """Seed 001 Figs. 7–9: tilt–moment hysteresis W_H at 0.3 kN·m per speed and load frequency (long runs)."""
-        from .clitools import announce_compilation, atomic_output, make_console, output_folder, writing
-        from .studies.hub_dynamic import run_study
-
-        con = make_console()
-        out = output_folder(out, "--out")
-        announce_compilation()
-        with writing("--out", out):
-            study = run_study(case, _numbers(speeds, "--speeds"), _numbers(frequencies, "--frequencies"), cycles,
-                              out_dir=out, progress=True, console=make_console(stderr=True))
-        study.print_table(con)
-        csv, png = out / "hub_hysteresis.csv", out / "hub_hysteresis_loops.png"
-        with atomic_output(csv, "--out") as tmp:
-            study.to_csv(tmp)
-        with atomic_output(png, "--out") as tmp:
-            study.plot(tmp)
-        con.print(f"wrote {csv} and {png}")
+__all__ = ["register", "reproduce_hub_hysteresis", "simulate"]

@@ -1,6 +1,6 @@
-"""CLI commands of the lubrication module: ``lubrication``, ``lubricants``, ``traction-curve``.
+"""Commands of the lubrication module: ``lubrication``, ``lubricants``, ``traction-curve``.
 
-Wire with ``cli_lubrication.register(app)`` in :mod:`bearingsim.cli`.  Options take
+Registered on the app by :func:`register`.  Options take
 quantities with units as strings; ``--json`` prints one JSON object in SI; bad input
 raises :class:`~bearingsim.errors.InputError` (the main CLI prints it and exits 2).
 """
@@ -13,20 +13,23 @@ from pathlib import Path
 
 import typer
 
-from .clitools import (  # noqa: F401
+from . import options
+from .console import announce_compilation, make_console
+from .options import (
     BearingArg,
     ControlOpt,
     FaOpt,
     FrOpt,
     FzOpt,
+    JsonOpt,
     MomentOpt,
     MyOpt,
     SpeedOpt,
-    announce_compilation,
-    atomic_output,
-    output_file,
-    parse_loads,
+    out_option,
 )
+from .output import atomic_output, output_file
+
+TractionOut = out_option("Image file to write")
 
 
 def lubrication(
@@ -43,19 +46,19 @@ def lubrication(
     roughness: str = typer.Option("0.1 um", "--roughness", help='Composite rms roughness, e.g. "0.05 um"'),
     slices: int = typer.Option(10, "--slices", help="Slices of each contact ellipse"),
     model: str = typer.Option("mixed", "--model", help="Traction model: mixed, fluid or boundary"),
-    as_json: bool = typer.Option(False, "--json", help="Print one JSON object in SI units"),
+    as_json: JsonOpt = False,
 ):
     """Film thickness, Λ, regime, traction and power loss of every loaded contact (Jones kinematics)."""
-    from .errors import InputError
-    from .io import load_bearing
-    from .lubrication import lubrication_report
-    from .statics.jones_harris import solve
-    from .units import parse_quantity
+    from ..errors import InputError
+    from ..io import load_bearing
+    from ..lubrication import lubrication_report
+    from ..statics.jones_harris import solve
+    from ..units import parse_quantity
 
     announce_compilation()
     b = load_bearing(bearing)
-    loads = parse_loads(fa, fr, fz, moment, my)
-    omega = parse_quantity(speed, "speed", "--speed") if speed is not None else 0.0
+    loads = options.parse_loads(fa, fr, fz, moment, my)
+    omega = options.parse_speed(speed)
     if omega == 0.0:
         raise InputError("--speed", "a lubrication report needs a non-zero speed", 'e.g. --speed "3000 rpm"')
     t = parse_quantity(temperature, "temperature", "--temperature")
@@ -76,8 +79,6 @@ def lubrication(
 
 def _print_report(rep: dict, name: str) -> None:
     from rich.table import Table
-
-    from .clitools import make_console
 
     con = make_console()
     con.print(f"[bold]{name}[/]  {rep['lubricant']} at {rep['temperature_K'] - 273.15:.1f} °C "
@@ -105,17 +106,15 @@ def _print_report(rep: dict, name: str) -> None:
     con.print(f"total power loss {rep['total_power_loss_W']:.2f} W")
 
 
-def lubricants(as_json: bool = typer.Option(False, "--json", help="Print one JSON object in SI units")):
+def lubricants(as_json: JsonOpt = False):
     """List the built-in lubricants."""
-    from .lubricants import library
+    from ..lubricants import library
 
     lib = library()
     if as_json:
         typer.echo(json.dumps({n: lub.summary(333.15) for n, lub in lib.items()}))
         return
     from rich.table import Table
-
-    from .clitools import make_console
 
     t = Table(title="bearingsim lubricants (η at 60 °C)")
     t.add_column("name", no_wrap=True)
@@ -133,7 +132,7 @@ def lubricants(as_json: bool = typer.Option(False, "--json", help="Print one JSO
 
 
 def traction_curve(
-    out: Path = typer.Option(Path("traction_curve.png"), "--out", help="Image file to write"),
+    out: TractionOut = Path("traction_curve.png"),
     lubricant: str = typer.Option("hub-grease-base-oil", "--lubricant", help="Library name or TOML"),
     temperature: str = typer.Option("60 degC", "--temperature", help="Oil temperature"),
     loads: str = typer.Option("500 N,2000 N,5000 N", "--loads", help="Comma-separated contact loads"),
@@ -141,9 +140,9 @@ def traction_curve(
     s_max: float = typer.Option(0.05, "--s-max", help="Largest slide-roll ratio plotted"),
 ):
     """Plot the traction coefficient vs slide-roll ratio (seed 001 Fig. 4 style) for one ball contact."""
-    from .errors import InputError
-    from .lubrication import plot_traction_curves
-    from .units import _convert, parse_quantity
+    from ..errors import InputError
+    from ..lubrication import plot_traction_curves
+    from ..units import _convert, parse_quantity
 
     t = parse_quantity(temperature, "temperature", "--temperature")
     qs = [parse_quantity(x.strip(), "force", "--loads") for x in loads.split(",") if x.strip()]

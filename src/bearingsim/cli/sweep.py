@@ -1,7 +1,7 @@
-"""CLI commands of issue 3: ``bearingsim map``, ``bearingsim export ross``, ``bearingsim reproduce hub-static``.
+"""Commands of the quasi-static maps: ``map``, ``export ross`` and ``reproduce hub-static``.
 
-Wire with ``cli_sweep.register(app, reproduce_app)``.  Options take quantities with units as strings;
-grids are ``START:STOP:COUNT`` (inclusive); bare numbers are in N, N·m and rpm.
+Options take quantities with units as strings; grids are ``START:STOP:COUNT`` (inclusive); bare numbers are in N,
+N·m and rpm.  Registered on the app by :func:`register`.
 """
 
 from __future__ import annotations
@@ -15,171 +15,189 @@ from typing import Optional
 
 import typer
 
+from . import options
+from .console import announce_compilation, make_console
+from .options import (
+    BearingArg,
+    ControlOpt,
+    FaGrid,
+    FaOpt,
+    FrGrid,
+    FrOpt,
+    FzGrid,
+    FzOpt,
+    MomentGrid,
+    MomentOpt,
+    MyGrid,
+    MyOpt,
+    OutFolder,
+    SpeedGrid,
+    out_option,
+)
 
-def _console():
-    from rich.console import Console
+MapOut = out_option("netCDF file to write (streamed, atomic)", optional=True)
+RossOut = out_option("JSON file (coefficients); a .toml name saves a ross.BearingElement")
 
-    return Console()
+def map_cmd(
+    bearing: BearingArg,
+    fa: FaGrid = None,
+    fr: FrGrid = None,
+    fz: FzGrid = None,
+    moment: MomentGrid = None,
+    my: MyGrid = None,
+    speed: SpeedGrid = None,
+    preload: Optional[str] = typer.Option(None, "--preload", help="Preload per row, value or grid (N); sets only"),
+    control: ControlOpt = "outer",
+    out: MapOut = None,
+    workers: Optional[int] = typer.Option(None, "--workers", help="Local processes (default: all cores)"),
+    scheduler: Optional[str] = typer.Option(None, "--scheduler", help="Dask scheduler address tcp://host:port"),
+    worker_timeout: float = typer.Option(60.0, "--worker-timeout",
+                                         help="With --scheduler: fail after this many seconds without workers"),
+    chunk: int = typer.Option(2000, "--chunk", help="Points per block"),
+    plot: Optional[Path] = typer.Option(None, "--plot", help="Write a K_xx stiffness map (PNG)"),
+    as_json: bool = typer.Option(False, "--json", help="Print a JSON summary in SI"),
+):
+    """Quasi-static map over a grid of loads, speeds and preloads (xarray / netCDF)."""
+    from ..sweep import map_grid, plot_map
+    from .output import apply_umask, atomic_output, output_file, writing
+
+    def opt(v):
+        return 0.0 if v is None else v
+
+    # both outputs checked (folders created) before the map is computed
+    if out is not None:
+        out = output_file(out, "--out", renamed=True)
+    if plot is not None:
+        plot = output_file(plot, "--plot")
+    announce_compilation()
+    if scheduler is None:
+        # kernels compiled (first run) or loaded here, with the note, before local worker processes start:
+        # they then load them from the cache instead of each compiling them silently behind the progress bar
+        from ..sweep import warm_up
+
+        with contextlib.suppress(Exception):  # a warm-up never stops the map: its errors come from map_grid
+            warm_up(bearing)
+    t0 = time.perf_counter()
+    # a full disk while streaming: map_grid removes its temporary file; one line here
+    with writing("--out", out) if out is not None else contextlib.nullcontext():
+        ds = map_grid(bearing, fa=opt(fa), fr=opt(fr), fr_z=opt(fz), m_y=opt(my), moment=opt(moment),
+                      speed=opt(speed), preload=preload, control=control, out=out, workers=workers,
+                      scheduler=scheduler, chunk_points=chunk, progress=not as_json,
+                      worker_timeout=worker_timeout)
+    if out is not None:
+        apply_umask(out)
+    dt = time.perf_counter() - t0
+    npts = int(ds["converged"].size)
+    nconv = int(ds["converged"].sum())
+    png = None
+    if plot is not None:
+        with atomic_output(plot, "--plot", default_suffix=".png") as tmp:
+            plot_map(ds, tmp)
+        png = plot
+    summary = {"bearing": ds.attrs.get("bearing", bearing), "points": npts, "converged": nconv,
+               "seconds": dt, "points_per_second": npts / dt if dt > 0 else None,
+               "dims": {d: int(n) for d, n in ds.sizes.items() if d not in ("dof", "dof2")},
+               "out": str(out) if out is not None else None, "plot": str(png) if png else None}
+    if as_json:
+        typer.echo(json.dumps(summary))
+    else:
+        con = make_console()
+        con.print(f"{summary['bearing']}: {npts} points, {nconv} converged, {dt:.2f} s "
+                  f"({summary['points_per_second']:.0f} points/s)")
+        if out is not None:
+            con.print(f"wrote {out}")
+        if png:
+            con.print(f"wrote {png}")
+    ds.close()
+    if nconv < npts:
+        raise typer.Exit(1)
+
+
+def export_ross(
+    bearing: BearingArg,
+    speed: SpeedGrid = "0:10000:11",
+    fa: FaOpt = None,
+    fr: FrOpt = None,
+    fz: FzOpt = None,
+    moment: MomentOpt = None,
+    my: MyOpt = None,
+    control: ControlOpt = "outer",
+    out: RossOut = Path("bearing_ross.json"),
+    node: int = typer.Option(0, "--node", help="Shaft node for the ROSS element (.toml output)"),
+):
+    """Speed-dependent stiffness for ross.BearingElement (kxx, kyy, kxy, kyx, kzz)."""
+    from ..export import export_json, to_ross_bearing
+    from ..io import load_bearing
+    from ..sweep import parse_grid
+    from .output import atomic_output, output_file
+
+    loads = options.parse_loads(fa, fr, fz, moment, my)
+    speeds = parse_grid(speed, "speed", "--speed")
+    out = output_file(out, "--out")
+    announce_compilation()
+    b = load_bearing(bearing)
+    if out.suffix.lower() == ".toml":
+        el = to_ross_bearing(b, node, speeds, loads, control)
+        with atomic_output(out, "--out") as tmp:
+            if out.is_file() and tmp != out:  # ROSS adds the element to an existing file's elements
+                import shutil
+
+                shutil.copyfile(out, tmp)
+            el.save(tmp)
+    else:
+        with atomic_output(out, "--out") as tmp:
+            export_json(b, speeds, tmp, loads, control)
+    make_console().print(f"wrote {out} ({speeds.size} speeds, {speeds[0] * 30 / math.pi:.0f}–"
+                     f"{speeds[-1] * 30 / math.pi:.0f} rpm); ROSS takes kxx, kyy, kxy, kyx, kzz — tilt and "
+                     "translation–tilt terms are dropped (listed in the JSON)")
+
+
+def reproduce_hub_static(
+    out: OutFolder = Path("out"),
+    bearing: str = typer.Option("hub-seed001", "--bearing", help="Hub unit (catalogue or TOML)"),
+    vehicle_speed: Optional[str] = typer.Option(None, "--vehicle-speed",
+                                                help="Vehicle speed in km/h (default: at rest)"),
+    points: int = typer.Option(25, "--points", help="Number of moments from -600 to +600 N·m"),
+):
+    """Seed 001: tilt of the hub unit's inner ring vs moment (quasi-static reference)."""
+    import numpy as np
+
+    from ..errors import InputError
+    from ..io import load_bearing
+    from ..studies import hub_static as hs
+    from .output import atomic_output, output_folder
+
+    if points < 2:
+        raise InputError("--points", "must be at least 2", "e.g. --points 25")
+    w = 0.0
+    if vehicle_speed is not None:
+        try:
+            v = float(str(vehicle_speed).replace("km/h", "").strip())
+        except ValueError:
+            raise InputError("--vehicle-speed", f"not a number of km/h: {vehicle_speed!r}", "e.g. 50") from None
+        w = hs.vehicle_speed_to_shaft(v)
+    out = output_folder(out, "--out")
+    announce_compilation()
+    res = hs.run_study(load_bearing(bearing), np.linspace(-hs.M_MAX, hs.M_MAX, points), speed=w)
+    typer.echo(res.table())
+    csv, png = out / "hub_static.csv", out / "hub_static.png"
+    with atomic_output(csv, "--out") as tmp:
+        res.to_csv(tmp)
+    with atomic_output(png, "--out") as tmp:
+        res.plot(tmp)
+    make_console().print(f"wrote {csv} and {png}")
+    if not res.converged.all():
+        raise typer.Exit(1)
 
 
 def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None:
     """Add ``map``, ``export ross`` and (when ``reproduce_app`` is given) ``reproduce hub-static``."""
-
-    @app.command("map")
-    def map_cmd(
-        bearing: str = typer.Argument(..., help="Catalogue name or TOML file"),
-        fa: Optional[str] = typer.Option(None, "--fa", help='Axial load or grid, e.g. "1000:5000:9" (N)'),
-        fr: Optional[str] = typer.Option(None, "--fr", help="Radial load along +y, value or grid (N)"),
-        fz: Optional[str] = typer.Option(None, "--fz", help="Radial load along +z, value or grid (N)"),
-        moment: Optional[str] = typer.Option(None, "--moment", help="Moment about z, value or grid (N·m)"),
-        my: Optional[str] = typer.Option(None, "--my", help="Moment about y, value or grid (N·m)"),
-        speed: Optional[str] = typer.Option(None, "--speed", help='Speed or grid, e.g. "0:11200:41" (rpm)'),
-        preload: Optional[str] = typer.Option(None, "--preload", help="Preload per row, value or grid (N); sets only"),
-        control: str = typer.Option("outer", "--control", help="Raceway control: outer, inner or auto"),
-        out: Optional[Path] = typer.Option(None, "--out", help="netCDF file to write (streamed, atomic)"),
-        workers: Optional[int] = typer.Option(None, "--workers", help="Local processes (default: all cores)"),
-        scheduler: Optional[str] = typer.Option(None, "--scheduler", help="Dask scheduler address tcp://host:port"),
-        worker_timeout: float = typer.Option(60.0, "--worker-timeout",
-                                             help="With --scheduler: fail after this many seconds without workers"),
-        chunk: int = typer.Option(2000, "--chunk", help="Points per block"),
-        plot: Optional[Path] = typer.Option(None, "--plot", help="Write a K_xx stiffness map (PNG)"),
-        as_json: bool = typer.Option(False, "--json", help="Print a JSON summary in SI"),
-    ):
-        """Quasi-static map over a grid of loads, speeds and preloads (xarray / netCDF)."""
-        from .clitools import announce_compilation, apply_umask, atomic_output, output_file, writing
-        from .sweep import map_grid, plot_map
-
-        def opt(v):
-            return 0.0 if v is None else v
-
-        # both outputs checked (folders created) before the map is computed
-        if out is not None:
-            out = output_file(out, "--out", renamed=True)
-        if plot is not None:
-            plot = output_file(plot, "--plot")
-        announce_compilation()
-        if scheduler is None:
-            # kernels compiled (first run) or loaded here, with the note, before local worker processes start:
-            # they then load them from the cache instead of each compiling them silently behind the progress bar
-            from .sweep import warm_up
-
-            with contextlib.suppress(Exception):  # a warm-up never stops the map: its errors come from map_grid
-                warm_up(bearing)
-        t0 = time.perf_counter()
-        # a full disk while streaming: map_grid removes its temporary file; one line here
-        with writing("--out", out) if out is not None else contextlib.nullcontext():
-            ds = map_grid(bearing, fa=opt(fa), fr=opt(fr), fr_z=opt(fz), m_y=opt(my), moment=opt(moment),
-                          speed=opt(speed), preload=preload, control=control, out=out, workers=workers,
-                          scheduler=scheduler, chunk_points=chunk, progress=not as_json,
-                          worker_timeout=worker_timeout)
-        if out is not None:
-            apply_umask(out)
-        dt = time.perf_counter() - t0
-        npts = int(ds["converged"].size)
-        nconv = int(ds["converged"].sum())
-        png = None
-        if plot is not None:
-            with atomic_output(plot, "--plot", default_suffix=".png") as tmp:
-                plot_map(ds, tmp)
-            png = plot
-        summary = {"bearing": ds.attrs.get("bearing", bearing), "points": npts, "converged": nconv,
-                   "seconds": dt, "points_per_second": npts / dt if dt > 0 else None,
-                   "dims": {d: int(n) for d, n in ds.sizes.items() if d not in ("dof", "dof2")},
-                   "out": str(out) if out is not None else None, "plot": str(png) if png else None}
-        if as_json:
-            typer.echo(json.dumps(summary))
-        else:
-            con = _console()
-            con.print(f"{summary['bearing']}: {npts} points, {nconv} converged, {dt:.2f} s "
-                      f"({summary['points_per_second']:.0f} points/s)")
-            if out is not None:
-                con.print(f"wrote {out}")
-            if png:
-                con.print(f"wrote {png}")
-        ds.close()
-        if nconv < npts:
-            raise typer.Exit(1)
-
+    app.command("map")(map_cmd)
     export_app = typer.Typer(no_args_is_help=True, help="Export bearing coefficients to other codes.")
+    export_app.command("ross")(export_ross)
     app.add_typer(export_app, name="export")
+    if reproduce_app is not None:
+        reproduce_app.command("hub-static")(reproduce_hub_static)
 
-    @export_app.command("ross")
-    def export_ross(
-        bearing: str = typer.Argument(..., help="Catalogue name or TOML file"),
-        speed: str = typer.Option("0:10000:11", "--speed", help="Speed grid or value (rpm)"),
-        fa: Optional[str] = typer.Option(None, "--fa", help="Axial load (N)"),
-        fr: Optional[str] = typer.Option(None, "--fr", help="Radial load along +y (N)"),
-        fz: Optional[str] = typer.Option(None, "--fz", help="Radial load along +z (N)"),
-        moment: Optional[str] = typer.Option(None, "--moment", help="Moment about z (N·m)"),
-        my: Optional[str] = typer.Option(None, "--my", help="Moment about y (N·m)"),
-        control: str = typer.Option("outer", "--control", help="Raceway control"),
-        out: Path = typer.Option(Path("bearing_ross.json"), "--out",
-                                 help="JSON file (coefficients); a .toml name saves a ross.BearingElement"),
-        node: int = typer.Option(0, "--node", help="Shaft node for the ROSS element (.toml output)"),
-    ):
-        """Speed-dependent stiffness for ross.BearingElement (kxx, kyy, kxy, kyx, kzz)."""
-        from .clitools import announce_compilation, atomic_output, output_file, parse_loads
-        from .export import export_json, to_ross_bearing
-        from .io import load_bearing
-        from .sweep import parse_grid
 
-        loads = parse_loads(fa, fr, fz, moment, my)
-        speeds = parse_grid(speed, "speed", "--speed")
-        out = output_file(out, "--out")
-        announce_compilation()
-        b = load_bearing(bearing)
-        if out.suffix.lower() == ".toml":
-            el = to_ross_bearing(b, node, speeds, loads, control)
-            with atomic_output(out, "--out") as tmp:
-                if out.is_file() and tmp != out:  # ROSS adds the element to an existing file's elements
-                    import shutil
-
-                    shutil.copyfile(out, tmp)
-                el.save(tmp)
-        else:
-            with atomic_output(out, "--out") as tmp:
-                export_json(b, speeds, tmp, loads, control)
-        _console().print(f"wrote {out} ({speeds.size} speeds, {speeds[0] * 30 / math.pi:.0f}–"
-                         f"{speeds[-1] * 30 / math.pi:.0f} rpm); ROSS takes kxx, kyy, kxy, kyx, kzz — tilt and "
-                         "translation–tilt terms are dropped (listed in the JSON)")
-
-    if reproduce_app is None:
-        return
-
-    @reproduce_app.command("hub-static")
-    def reproduce_hub_static(
-        out: Path = typer.Option(Path("out"), "--out", help="Folder for the CSV and the plot"),
-        bearing: str = typer.Option("hub-seed001", "--bearing", help="Hub unit (catalogue or TOML)"),
-        vehicle_speed: Optional[str] = typer.Option(None, "--vehicle-speed",
-                                                    help="Vehicle speed in km/h (default: at rest)"),
-        points: int = typer.Option(25, "--points", help="Number of moments from -600 to +600 N·m"),
-    ):
-        """Seed 001: tilt of the hub unit's inner ring vs moment (quasi-static reference)."""
-        import numpy as np
-
-        from .clitools import announce_compilation, atomic_output, output_folder
-        from .errors import InputError
-        from .io import load_bearing
-        from .studies import hub_static as hs
-
-        if points < 2:
-            raise InputError("--points", "must be at least 2", "e.g. --points 25")
-        w = 0.0
-        if vehicle_speed is not None:
-            try:
-                v = float(str(vehicle_speed).replace("km/h", "").strip())
-            except ValueError:
-                raise InputError("--vehicle-speed", f"not a number of km/h: {vehicle_speed!r}", "e.g. 50") from None
-            w = hs.vehicle_speed_to_shaft(v)
-        out = output_folder(out, "--out")
-        announce_compilation()
-        res = hs.run_study(load_bearing(bearing), np.linspace(-hs.M_MAX, hs.M_MAX, points), speed=w)
-        typer.echo(res.table())
-        csv, png = out / "hub_static.csv", out / "hub_static.png"
-        with atomic_output(csv, "--out") as tmp:
-            res.to_csv(tmp)
-        with atomic_output(png, "--out") as tmp:
-            res.plot(tmp)
-        _console().print(f"wrote {csv} and {png}")
-        if not res.converged.all():
-            raise typer.Exit(1)
+__all__ = ["export_ross", "map_cmd", "register", "reproduce_hub_static"]

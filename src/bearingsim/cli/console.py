@@ -1,0 +1,112 @@
+"""What the commands show on the terminal besides their results: a rich console wide enough for pipes, and the
+one-time note on stderr while numba compiles kernels on a first run (:func:`announce_compilation`)."""
+
+from __future__ import annotations
+
+import sys
+
+
+def make_console(stderr: bool = False):
+    """A rich Console; 160 columns wide when the output is not a terminal (pipes, files, CI logs),
+    so that tables are not truncated to 80 columns."""
+    from rich.console import Console
+
+    con = Console(stderr=stderr)
+    if not con.is_terminal:
+        con = Console(stderr=stderr, width=160)
+    return con
+
+
+class _CompileNote:
+    """numba listener: says once, on stderr, that kernels are being compiled (a cache miss: first run after an
+    install or a change of the kernels), with a count on a terminal, and how long it took at the end.  Only
+    bearingsim's kernels are counted (numba compiles some of its own helpers inside them); kernels without
+    ``cache=True`` are counted apart, since they compile on every run."""
+
+    HEAD = "compiling numerical kernels"
+
+    def __init__(self):
+        self.cached = 0
+        self.uncached = 0
+        self.t0 = None
+        self.tty = False
+
+    def start(self, name: str, cached: bool) -> None:
+        import time
+
+        if self.t0 is None:
+            self.t0 = time.perf_counter()
+            self.tty = bool(getattr(sys.stderr, "isatty", lambda: False)())
+            what = " (first run only, or after an update; typically 10–60 s)" if cached else ""
+            self._write(f"{self.HEAD}{what}…" + ("" if self.tty else "\n"))
+        if self.tty:
+            self._write(f"\r\x1b[2K{self.HEAD}: {self.cached + self.uncached} done, now {name}…")
+
+    def end(self, cached: bool) -> None:
+        if cached:
+            self.cached += 1
+        else:
+            self.uncached += 1
+
+    def finish(self) -> None:
+        import time
+
+        if self.t0 is None:
+            return
+        dt = time.perf_counter() - self.t0
+        n = self.cached + self.uncached
+        tail = "cached for the next runs" if not self.uncached else (
+            f"{self.uncached} of them without a disk cache, compiled on every run")
+        self._write(("\r\x1b[2K" if self.tty else "") + f"compiled {n} kernels in {dt:.0f} s ({tail})\n")
+        self.t0 = None
+        self.cached = self.uncached = 0
+
+    @staticmethod
+    def _write(text: str) -> None:
+        try:
+            sys.stderr.write(text)
+            sys.stderr.flush()
+        except (OSError, ValueError):
+            pass
+
+
+_NOTE: _CompileNote | None = None
+
+
+def announce_compilation() -> None:
+    """Install (once per process) the numba listener of :class:`_CompileNote`.  Call it at the start of a command
+    that runs compiled kernels; it imports numba (which such a command imports anyway)."""
+    global _NOTE
+    if _NOTE is not None:
+        return
+    from numba.core import event
+
+    note = _CompileNote()
+
+    def kernel(ev):
+        """(name, cached) of a bearingsim kernel being compiled, None for numba's own helpers."""
+        disp = (ev.data or {}).get("dispatcher")
+        func = getattr(disp, "py_func", None)
+        if not str(getattr(func, "__module__", "")).startswith("bearingsim"):
+            return None
+        return func.__name__, type(getattr(disp, "_cache", None)).__name__ not in ("NullCache", "NoneType")
+
+    class _Listener(event.Listener):
+        def on_start(self, ev):
+            k = kernel(ev)
+            if k is not None:
+                note.start(*k)
+
+        def on_end(self, ev):
+            k = kernel(ev)
+            if k is not None:
+                note.end(k[1])
+
+    event.register("numba:compile", _Listener())
+    _NOTE = note
+
+
+def finish_compilation_note() -> None:
+    """Close the compilation note (its last line) if kernels were compiled in this process."""
+    if _NOTE is not None:
+        _NOTE.finish()
