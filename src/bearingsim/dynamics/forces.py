@@ -24,7 +24,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ..statics import _kernels as kn
+from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import layout as ly
 
 # the contact laws (re-exported: ``forces.race_contact``, ``forces.coulomb_slices`` ... keep working)
