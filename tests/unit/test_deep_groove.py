@@ -26,7 +26,7 @@ import subprocess
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 from scipy.optimize import brentq
 
@@ -106,9 +106,15 @@ def planar_radial_2d(b, fy, fz, omega=0.0):
         h = 1e-7 * np.linalg.norm(u)
         jac = np.column_stack([(resid(u + h * e) - r) / h for e in np.eye(2)])
         du = np.linalg.lstsq(jac, -r, rcond=None)[0]  # singular with one loaded ball: minimum norm
-        u = u + du
-        if np.linalg.norm(du) <= 1e-14 * np.linalg.norm(u):
+        # backtracking: a full step from a start with few loaded balls can overshoot into a state where the
+        # balls have lifted off (found by hypothesis: 6209, 25 um, 100 N at the limiting speed)
+        step = 1.0
+        while step > 1e-12 and np.linalg.norm(resid(u + step * du)) > np.linalg.norm(r):
+            step *= 0.5
+        u = u + step * du
+        if np.linalg.norm(step * du) <= 1e-14 * np.linalg.norm(u):
             break
+    assert np.linalg.norm(resid(u)) <= 1e-6 * max(fr, 1.0), "reference planar solution did not converge"
     return u
 
 
@@ -126,6 +132,7 @@ def test_issue_geometries_no_longer_raise_and_match_planar_solution(name, pd_um)
 @settings(max_examples=25, deadline=None)
 @given(name=st.sampled_from(sorted(GEOMETRIES)), pd_um=st.floats(0.0, 50.0), fr=st.floats(100.0, 20000.0),
        angle=st.floats(0.0, 2 * math.pi), speed_frac=st.sampled_from([0.0, 0.0, 0.3, 1.0]))
+@example(name="6209", pd_um=25.0, fr=100.0, angle=1.375, speed_frac=1.0)  # the reference needed a line search
 def test_radial_displacement_equals_planar_rigid_ring_solution(name, pd_um, fr, angle, speed_frac):
     """Across 62xx/63xx-like geometries, 0–50 µm clearance, 100 N–20 kN in any radial direction, at rest and
     up to a limiting speed (n·d_m = 5e5 mm·rpm, a grease-lubricated deep-groove rating): the 5-DOF solution
