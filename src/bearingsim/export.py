@@ -93,7 +93,7 @@ def ross_coefficients(bearing, speeds, loads=None, control: str = "outer") -> di
     load nor preload (its stiffness is zero: nothing to export), :class:`ConvergenceError` if any
     speed did not converge.
     """
-    from .statics._batch import run_batch
+    from .statics.batch import run_batch
 
     bearing, speeds, loads = _check_arguments(bearing, speeds, loads, control)
     arr = np.tile(loads.as_array(), (speeds.size, 1))

@@ -178,7 +178,7 @@ def solve_block(bearing, axes: dict, block: tuple, control: str = "outer") -> di
     ``block`` holds one slice per grid dimension (the axes with more than one value, in AXES order).
     Points are visited in serpentine order so that each starts next to the previous one.
     """
-    from .statics._batch import NSUMMARY, run_batch
+    from .statics.batch import NSUMMARY, run_batch
 
     dims = [name for name, _, _ in AXES if len(axes[name]) > 1]
     vals = {name: np.asarray(axes[name], dtype=float) for name, _, _ in AXES}

@@ -20,12 +20,9 @@ from pathlib import Path
 SRC = Path(__file__).resolve().parents[2] / "src"
 PKG = "bearingsim"
 
-#: issue 12: the batch solver (statics._batch) is still imported by the map and the export (the row layout is
-#: public in statics.layout and no longer imported from statics._kernels); remove a pair once its import goes
-KNOWN_PRIVATE = {
-    ("bearingsim.export", "bearingsim.statics._batch"),
-    ("bearingsim.sweep", "bearingsim.statics._batch"),
-}
+#: pairs allowed to import another package's private module: none since issue 12 (the row layout is public in
+#: statics.layout, the batch solver's entry in statics.batch); add none
+KNOWN_PRIVATE: set[tuple[str, str]] = set()
 
 
 def _modules() -> dict[str, Path]:

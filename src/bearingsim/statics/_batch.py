@@ -9,16 +9,17 @@ start when the warm one fails.  It returns summaries per point, not per-ball tab
 Summary arrays (n = number of points):
     q [n, 5]  displacement (δx, δy, δz, γy, γz) [m, rad]
     k [n, 5, 5]  stiffness [N/m, N/rad, N·m/m, N·m/rad]
-    status [n]  kernel status (0 converged, 1 iteration limit, 2 singular, 3 contact past the groove
-                bottom) or 4 when the ring converged but a ball's own balance did not
+    status [n]  status code (:data:`bearingsim.statics.layout.STATUS`, the one table of codes)
     iterations [n], residual [n] [N]
     p_inner, p_outer [n]  maximum contact pressure [Pa]
     alpha_inner_min/max, alpha_outer_min/max [n]  contact angles of the loaded balls [rad]
     n_lift_off [n]  balls without load at the inner raceway while others carry load
     warning_flags [n]  int32 bitmask of :mod:`bearingsim.limits` (pressure, contact angle, speed, lift-off
                 at speed, not converged)
-Status codes: the keys of :data:`bearingsim.statics.jones_harris.STATUS` (0 converged; 5 not confirmed by
-the independent recomputation; 6 contact at 90° or more; 7 internal error of this point; 8 free ring).
+Status codes: the keys of :data:`bearingsim.statics.layout.STATUS` (0 converged; 1 iteration limit; 2 singular;
+3 contact past the groove bottom; 4 a ball's own balance failed; 5 not confirmed by the independent
+recomputation; 6 contact at 90° or more; 7 internal error of this point; 8 free ring).  Public entry:
+:mod:`bearingsim.statics.batch`.
 """
 
 from __future__ import annotations
