@@ -12,7 +12,7 @@ import dataclasses
 
 from ..errors import InputError
 from ..geometry import BallBearing
-from ..statics.arrangements import BearingSystem, Row, _preload_offset, make_system
+from ..statics.arrangements import BearingSystem, Row, make_system, offset_for_preload
 from ..units import parse_quantity
 from .bearing import bearing_from_dict, load_bearing
 from .clearance import operating_clearance_from_dict
@@ -109,7 +109,7 @@ def arrangement_from_dict(data: dict) -> BearingSystem:
             raise InputError("preload_offset", "with [[rows]] give axial_offset per row", "move it into the rows")
         pl = 0.0
         if preload is not None:
-            e = _preload_offset(rows, preload)
+            e = offset_for_preload(rows, preload)
             rows = [dataclasses.replace(r, axial_offset=e) for r in rows]
             pl = preload
         system = BearingSystem(name, tuple(rows), load_point, "custom", pl,

@@ -259,7 +259,7 @@ def _row_forces(system, q, speed=0.0, result=None):
     return out
 
 
-def _preload_offset(bearing_rows, force: float) -> float:
+def offset_for_preload(bearing_rows, force: float) -> float:
     """Offset e [m] (equal in every row) giving the preload ``force`` [N] at rest (brentq on e)."""
     if not (math.isfinite(force) and force > 0):
         raise InputError("preload", f"must be a positive force, got {force!r} N", 'e.g. preload = "5400 N"')
@@ -320,6 +320,10 @@ def _preload_offset(bearing_rows, force: float) -> float:
     return brentq(g, lo, hi, xtol=1e-15, rtol=1e-12)
 
 
+#: former private name (the readers in bearingsim.io and the map used it)
+_preload_offset = offset_for_preload
+
+
 def _offset_limits(b: BallBearing) -> tuple[float, float]:
     """(offset at first contact, offset reaching MAX_PRELOAD_PRESSURE) of one row at q = 0 [m]."""
     par = b.row_parameters()
@@ -377,7 +381,7 @@ def make_system(row_bearing: BallBearing, arrangement: str = "DB", row_spacing: 
         if arr == "DT":
             raise InputError("preload", "a tandem pair cannot be preloaded against itself",
                              "use DB or DF, or give [[rows]] with axial offsets")
-        e = _preload_offset(rows, preload)
+        e = offset_for_preload(rows, preload)
         rows = [dataclasses.replace(r, axial_offset=e) for r in rows]
         pl = preload
     if dynamic_load_rating is None:
