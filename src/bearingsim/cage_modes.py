@@ -1,6 +1,6 @@
 """Elastic cage: a finite-element ring model and its free–free modes (for mode synthesis).
 
-Seed 001 (Sakaguchi & Shibutani, NTN Technical Review 87, 2019, §2–3 and Table 3): IBDAS models
+[S1] (Sakaguchi & Shibutani, NTN Technical Review 87, 2019, §2–3 and Table 3): IBDAS models
 the elastic deformation of each cage by mode synthesis (56 modes per cage).  This module builds
 the structural side: the cage as a closed ring of straight 3-D frame elements, its free–free
 modes, and the mass-normalised mode shapes at the pocket centres, which the dynamic model uses
@@ -248,7 +248,7 @@ def default_cage_ring(ball_diameter: float, pitch_diameter: float, ball_count: i
     clearance each side), Z = ball count, first pocket at ψ = 0, steel E = 2.06e11 Pa,
     ν = 0.3, ρ = 7850 kg/m³, 8 elements per pocket pitch.  Keyword ``overrides`` replace any
     CageRing field.  Note that on the pitch circle the bridges of a tight ball set are thin
-    (hub row of seed 001: 0.6 mm), which makes this assumed cage soft there; real cages sit
+    (hub row of [S1]: 0.6 mm), which makes this assumed cage soft there; real cages sit
     off the pitch circle or have shaped pockets — give measured cage data when available.
     """
     _positive("ball_diameter", ball_diameter, 'e.g. "11.1 mm"')
@@ -681,7 +681,7 @@ def cage_modes(ring: CageRing, n_modes: int, fe: CageFE | None = None) -> CageMo
         fe = assemble(ring)
     nmax = fe.n_dof - 6
     if isinstance(n_modes, bool) or not isinstance(n_modes, (int, np.integer)) or n_modes < 1:
-        raise InputError("n_modes", f"must be a positive integer, got {n_modes!r}", "e.g. 56 (seed 001)")
+        raise InputError("n_modes", f"must be a positive integer, got {n_modes!r}", "e.g. 56 ([S1])")
     if n_modes > nmax:
         raise InputError("n_modes", f"{n_modes} exceeds the {nmax} elastic modes of this FE model",
                          f"ask for at most {nmax} modes or raise elements_per_pitch")

@@ -18,7 +18,7 @@ from .options import BearingArg, JsonOpt
 
 def cage_modes_cmd(
     bearing: BearingArg,
-    modes: int = typer.Option(56, "--modes", help="Number of elastic modes (seed 001 uses 56 per cage)"),
+    modes: int = typer.Option(56, "--modes", help="Number of elastic modes (Sakaguchi & Shibutani use 56 per cage)"),
     width: Optional[str] = typer.Option(None, "--width", help='Cage axial width, e.g. "15 mm" (default 1.4 D)'),
     thickness: Optional[str] = typer.Option(None, "--thickness",
                                             help='Cage radial thickness, e.g. "3 mm" (default 0.3 D)'),

@@ -1,5 +1,5 @@
 """Commands of the dynamic engine: ``bearingsim simulate CASE.toml --out run.nc [--resume]`` and
-``bearingsim reproduce hub-hysteresis CASE.toml`` (seed 001 Figs. 7–9).  Registered on the app by :func:`register`.
+``bearingsim reproduce hub-hysteresis CASE.toml`` ([S1] Figs. 7–9).  Registered on the app by :func:`register`.
 """
 
 from __future__ import annotations
@@ -96,7 +96,7 @@ def reproduce_hub_hysteresis(
     cycles: int = typer.Option(3, "--cycles", help="load cycles per run (the first is a start-up)"),
     out: HysteresisOut = Path("out"),
 ):
-    """Seed 001 Figs. 7–9: tilt–moment hysteresis W_H at 0.3 kN·m per speed and load frequency (long runs)."""
+    """Hub-bearing hysteresis (Sakaguchi & Shibutani [S1], Figs. 7–9): tilt–moment hysteresis W_H at 0.3 kN·m per speed and load frequency (long runs)."""
     from ..studies.hub_dynamic import run_study
     from .output import atomic_output, output_folder, writing
 

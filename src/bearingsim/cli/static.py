@@ -119,7 +119,8 @@ def reproduce_spindle(
     out: SpindleOut = Path("out"),
     bearing: str = typer.Option("skf-7011-cdga-hc", "--bearing", help="Bearing to use (catalogue or TOML)"),
 ):
-    """Seed 000: tables T1–T3 side by side with the paper, Fig. 5 plot and CSV."""
+    """Axial stiffness of the SKF 7011 spindle bearing vs load and speed ([S0] in docs/references.md): tables
+    T1–T3 side by side with the paper, its Fig. 5 as a plot, and a CSV."""
     from ..io import load_bearing
     from ..studies.spindle import run_study
     from .output import atomic_output, output_folder

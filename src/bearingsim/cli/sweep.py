@@ -159,7 +159,7 @@ def reproduce_hub_static(
                                                 help="Vehicle speed in km/h (default: at rest)"),
     points: int = typer.Option(25, "--points", help="Number of moments from -600 to +600 N·m"),
 ):
-    """Seed 001: tilt of the hub unit's inner ring vs moment (quasi-static reference)."""
+    """Hub unit of Sakaguchi & Shibutani [S1]: tilt of the hub unit's inner ring vs moment (quasi-static reference)."""
     import numpy as np
 
     from ..errors import InputError

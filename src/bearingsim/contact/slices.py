@@ -1,6 +1,6 @@
 """The sliced contact ellipse: tangential forces of a lubricated ball–raceway contact.
 
-Seed 001 (Sakaguchi & Shibutani, NTN Technical Review 87), section 3.1, eqs. 1–5:
+[S1] (Sakaguchi & Shibutani, NTN Technical Review 87), section 3.1, eqs. 1–5:
 
 1. The ellipse (semi-axes a along the transverse major axis, b along rolling) is cut
    into n slices of equal width 2a/n along the major axis.  Slice j, ξ = x/a ∈ [ξ_j, ξ_j+1],
@@ -34,7 +34,7 @@ Seed 001 (Sakaguchi & Shibutani, NTN Technical Review 87), section 3.1, eqs. 1�
    :mod:`bearingsim.contact.traction`).
 5. Rolling viscous resistance and oil-film force (seed eqs. 4–5): F_R,j from Zhou &
    Hoeprich (1991) eq. 17 (or the IR closed form) for a line contact of length 2a/n
-   carrying Q_j, multiplied by φ_T φ_s and by the fluid weight w(Λ) (the seed assumes it
+   carrying Q_j, multiplied by φ_T φ_s and by the fluid weight w(Λ) (the paper assumes it
    exists only where a film is formed).  It acts on both surfaces against the rolling
    direction û = u/|u|; the pressure-centre shift adds P_1 = 2F_R R_x/R_1 on the ball
    (R_1 = |p − c_ball|, through the ball centre, no moment) and P_2 = 2F_R − P_1 on the
@@ -153,7 +153,7 @@ def slice_area_fraction(xi0, xi1):
 @njit(cache=True, error_model="numpy")
 def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball, w_ball,
                      race_centre, v_race, w_race, lub, n_slices, out):
-    """Tangential forces of one lubricated ball–race contact on n slices (seed 001 eqs. 1–5).
+    """Tangential forces of one lubricated ball–race contact on n slices ([S1] eqs. 1–5).
 
     All SI.  q normal load [N] (≥ 0); a, b semi-major (transverse) / semi-minor (rolling)
     axes [m]; r_dev radius of the deformed contact surface in the major-axis plane [m]

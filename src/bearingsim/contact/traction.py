@@ -8,7 +8,7 @@ Models (one function each, numba kernels + Python wrappers that check input):
   (D = μ_∞, A = μ₀ − μ_∞, dμ/ds(s_max) = 0 ⇒ B = C A/(1 − C s_max), and one scalar
   equation A e^(−t)/(1 − t) = μ_max − μ_∞ for t = C s_max, solved by bisection).
 * Boundary lubrication: the same four-parameter form with its own constants, a
-  function of the slide–roll ratio only (seed 001, section 3.1).  The default
+  function of the slide–roll ratio only ([S1], section 3.1).  The default
   constants (μ₀ = 0, peak 0.12 at s = 0.01, μ_∞ = 0.10) are typical of boundary
   lubricated steel and were chosen here, not taken from a source.
 * Fluid film, physically based (:func:`fluid_shear_stress`): Eyring shear thinning
@@ -43,10 +43,10 @@ Models (one function each, numba kernels + Python wrappers that check input):
   G = τ_L/r_L at the inlet temperature), ℓ the contact length in the rolling direction.  Without
   it the initial slope of μ(s) is η(p) u/(h p̄), with a Roelands viscosity of 10¹⁰–10¹⁷ Pa·s at
   1–2 GPa: a Coulomb-like jump that is neither measured nor integrable at a useful step size.
-* Mixed lubrication (seed 001, ref. 8): μ = μ_b + (μ_f − μ_b) w(Λ), w = 0 for Λ ≤ Λ₁,
-  1 for Λ ≥ Λ₂, linear in between (default Λ₁ = 1, Λ₂ = 3; the seed says only
+* Mixed lubrication ([S1], ref. 8): μ = μ_b + (μ_f − μ_b) w(Λ), w = 0 for Λ ≤ Λ₁,
+  1 for Λ ≥ Λ₂, linear in between (default Λ₁ = 1, Λ₂ = 3; the paper says only
   "proportionally to the film parameter"; the limits are our choice).
-* Rolling viscous resistance (seed 001 eq. 4): Zhou & Hoeprich (1991), J. Tribol. 113:590,
+* Rolling viscous resistance ([S1] eq. 4): Zhou & Hoeprich (1991), J. Tribol. 113:590,
   eqs. 17, 21–23 for a line contact of length L (here one slice of the ellipse):
   F_R = φ_s φ_T 29.2 (R/α) L (G U)^0.648 W^0.246, W = w/(E′R), w = load per unit length.
   This is their fit of isothermal piezoviscous-elastic (PE) solutions; it is used in PE
@@ -55,7 +55,7 @@ Models (one function each, numba kernels + Python wrappers that check input):
   condition, derived here:  F_R/L = 6 η u √(2R/h₀) · ½[(1 − ξ_e²)(π/2 + atan ξ_e) − ξ_e],
   ξ_e = 0.475130, h₀ = 4.89497 η u R/w, i.e. F_R/L = 2.0796 √(η u w)  (checked against a
   numerical Reynolds solution in tests/unit/test_traction.py).
-* Oil-film force (seed 001 eq. 5): the pressure-centre shift gives each body a
+* Oil-film force ([S1] eq. 5): the pressure-centre shift gives each body a
   tangential pressure force P_x,i with P_x,i R_i = 2 F_R R_x (Zhou & Hoeprich 1991, text
   after eq. 5: N e = P_x R_e = P_x,1 R_1 = P_x,2 R_2 = 2 F_r0 R_e), acting through that
   body's centre of curvature, in the rolling direction.
@@ -233,7 +233,7 @@ def traction_curve(s, coefficients) -> np.ndarray:
 
 def mixed_coefficient(mu_boundary: float, mu_fluid: float, film_parameter: float,
                       lambda1: float = 1.0, lambda2: float = 3.0) -> float:
-    """μ = μ_b + (μ_f − μ_b) w(Λ), w linear from 0 at Λ₁ to 1 at Λ₂ (seed 001 §3.1)."""
+    """μ = μ_b + (μ_f − μ_b) w(Λ), w linear from 0 at Λ₁ to 1 at Λ₂ ([S1] §3.1)."""
     if not (0 <= lambda1 < lambda2):
         raise InputError("lambda1/lambda2", f"need 0 <= lambda1 < lambda2, got {lambda1}, {lambda2}", "")
     if math.isnan(film_parameter) or film_parameter < 0:

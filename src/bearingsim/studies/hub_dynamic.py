@@ -1,12 +1,12 @@
-"""Seed 001 hub unit in time: hysteresis of the inner-ring tilt against the moment (Figs. 7–9).
+"""[S1] hub unit in time: hysteresis of the inner-ring tilt against the moment (Figs. 7–9).
 
-Seed 001 (Sakaguchi & Shibutani, NTN Technical Review 87) runs the hub unit at 10, 50 and 100 km/h
+[S1] (Sakaguchi & Shibutani, NTN Technical Review 87) runs the hub unit at 10, 50 and 100 km/h
 with the moment, the axial and the radial load varying together at 1, 10 and 50 Hz (Table 2), and
 measures the hysteresis of the tilt by the fluctuation range W_H: the difference of the tilt where
 the moment passes 0.3 kN·m falling and rising (its Fig. 8).  Its Fig. 9 gives W_H for the nine
 (speed, frequency) pairs; the extracted text lists the bubble labels 3.0 0.7 0.3 / 4.1 1.3 1.3 /
 6.7 4.2 0.9 (·10⁻³ deg) without their positions.  Of the eight ways to lay three groups of three on
-the 3 × 3 grid, two break the seed's statement (W_H grows with the load-variation frequency and
+the 3 × 3 grid, two break the paper's statement (W_H grows with the load-variation frequency and
 falls with the vehicle speed; slide-roll ratio ∝ frequency · load / speed, its eq. 9) only once;
 the others break it 5–10 times.  :data:`SEED_FIG9` (groups = frequencies 1, 10, 50 Hz, speeds
 10, 50, 100 km/h in order) and :data:`SEED_FIG9_ALT` (groups = speeds 100, 50, 10 km/h, frequencies
@@ -36,11 +36,11 @@ import numpy as np
 from ..errors import InputError
 from .hub_static import TYRE_RADIUS, vehicle_speed_to_shaft
 
-#: seed 001 Fig. 9, W_H [1e-3 deg] by (vehicle speed [km/h], load frequency [Hz]); our reading (module docstring)
+#: [S1] Fig. 9, W_H [1e-3 deg] by (vehicle speed [km/h], load frequency [Hz]); our reading (module docstring)
 SEED_FIG9 = {(10, 50): 6.7, (50, 50): 4.2, (100, 50): 0.9,
              (10, 10): 4.1, (50, 10): 1.3, (100, 10): 1.3,
              (10, 1): 3.0, (50, 1): 0.7, (100, 1): 0.3}
-#: the other reading that breaks the seed's stated trends only once (module docstring)
+#: the other reading that breaks the paper's stated trends only once (module docstring)
 SEED_FIG9_ALT = {(10, 50): 6.7, (50, 50): 4.1, (100, 50): 3.0,
                  (10, 10): 4.2, (50, 10): 1.3, (100, 10): 0.7,
                  (10, 1): 0.9, (50, 1): 1.3, (100, 1): 0.3}
@@ -67,7 +67,7 @@ class HysteresisCell:
         return float(np.std(self.widths)) if len(self.widths) > 1 else math.nan
 
     def seed(self, table=None) -> float:
-        """Seed 001 Fig. 9 value [rad] (reading :data:`SEED_FIG9` or ``table``), NaN for a pair the seed did not run."""
+        """[S1] Fig. 9 value [rad] (reading :data:`SEED_FIG9` or ``table``), NaN for a pair the paper did not run."""
         v = (SEED_FIG9 if table is None else table).get((round(self.speed_kmh), round(self.frequency_hz)))
         return math.radians(v * 1e-3) if v is not None else math.nan
 
@@ -91,7 +91,7 @@ class HysteresisStudy:
     def print_table(self, console) -> None:
         from rich.table import Table
 
-        t = Table(title=f"Seed 001 hub unit: fluctuation range W_H at {self.moment / 1e3:g} kN·m "
+        t = Table(title=f"[S1] hub unit: fluctuation range W_H at {self.moment / 1e3:g} kN·m "
                         "(tilt falling − rising; 10⁻³ deg)")
         for c in ("km/h", "Hz", "cycles", "ours mean", "ours spread", "per cycle", "seed Fig. 9*", "or*", "wall s",
                   "steps"):
@@ -102,8 +102,8 @@ class HysteresisStudy:
                       f"{r['seed_fig9_alt_mdeg']:.1f}",
                       f"{r['wall_s']:.0f}", str(r["steps"]))
         console.print(t)
-        console.print("* the two readings of the seed's Fig. 9 consistent with its stated trends "
-                      "(bearingsim/studies/hub_dynamic.py); the seed's loop lags the moment (W_H > 0)")
+        console.print("* the two readings of the paper's Fig. 9 consistent with its stated trends "
+                      "(bearingsim/studies/hub_dynamic.py); the paper's loop lags the moment (W_H > 0)")
 
     def to_csv(self, path) -> Path:
         path = Path(path)
@@ -115,7 +115,7 @@ class HysteresisStudy:
         return path
 
     def plot(self, path) -> Path:
-        """Tilt against moment of the last cycle of every run (seed 001 Fig. 7 style)."""
+        """Tilt against moment of the last cycle of every run ([S1] Fig. 7 style)."""
         import matplotlib
 
         matplotlib.use("Agg", force=False)

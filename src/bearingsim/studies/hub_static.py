@@ -1,11 +1,11 @@
-"""Seed 001 hub unit: quasi-static tilt of the inner ring versus moment (−600 … +600 N·m).
+"""[S1] hub unit: quasi-static tilt of the inner ring versus moment (−600 … +600 N·m).
 
-The reference curve every dynamic result of seed 001 must meet when the loads vary slowly
-(seed 001 Fig. 6: the tilt–moment lines at 10, 50 and 100 km/h share one slope).
+The reference curve every dynamic result of [S1] must meet when the loads vary slowly
+([S1] Fig. 6: the tilt–moment lines at 10, 50 and 100 km/h share one slope).
 
-Bearing: catalogue ``hub-seed001`` (seed 001 Table 1: two rows of 16 balls of 11.1 mm on a 61 mm
+Bearing: catalogue ``hub-seed001`` ([S1] Table 1: two rows of 16 balls of 11.1 mm on a 61 mm
 pitch circle, 35°, rows 18.2 mm apart, back-to-back, preload 5,400 N; groove curvatures and
-material assumed, see the catalogue files).  Loads (seed 001 Table 2) act on the inner ring at the
+material assumed, see the catalogue files).  Loads ([S1] Table 2) act on the inner ring at the
 load acting point, 10.4 mm from the centre between the rows (``load_point`` of the unit).
 
 Tie between the loads (our assumption; Table 2 gives only the ranges, which vary together):
@@ -37,14 +37,14 @@ import numpy as np
 from ..statics import arrangements as ar
 from ..statics.jones_harris import Loads, solve
 
-M_MAX = 600.0  #: [N·m] seed 001 Table 2
-FA_MAX = 1890.0  #: [N] seed 001 Table 2
-FR_MIN, FR_MAX = 1820.0, 3750.0  #: [N] seed 001 Table 2
+M_MAX = 600.0  #: [N·m] [S1] Table 2
+FA_MAX = 1890.0  #: [N] [S1] Table 2
+FR_MIN, FR_MAX = 1820.0, 3750.0  #: [N] [S1] Table 2
 TYRE_RADIUS = M_MAX / FA_MAX  #: [m] implied by the tie M = R Fa
 
 
 def tied_loads(moment: float) -> Loads:
-    """Loads of seed 001 Table 2 tied to the moment M [N·m] (module docstring) → Loads [N, N·m]."""
+    """Loads of [S1] Table 2 tied to the moment M [N·m] (module docstring) → Loads [N, N·m]."""
     s = moment / M_MAX
     return Loads(fa=FA_MAX * s, fr_y=0.5 * (FR_MIN + FR_MAX) + 0.5 * (FR_MAX - FR_MIN) * s, m_z=moment)
 
@@ -122,7 +122,7 @@ class HubStaticResult:
         path = Path(path)
         rows = self.rows()
         with path.open("w", newline="", encoding="utf-8") as fh:
-            fh.write("# seed 001 hub unit, quasi-static tilt vs moment (bearingsim.studies.hub_static); SI units\n")
+            fh.write("# [S1] hub unit, quasi-static tilt vs moment (bearingsim.studies.hub_static); SI units\n")
             w = csv.DictWriter(fh, fieldnames=list(rows[0]))
             w.writeheader()
             w.writerows(rows)

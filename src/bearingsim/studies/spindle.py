@@ -1,13 +1,13 @@
-"""Seed 000 study: axial stiffness of the SKF 7011 CDGA/HC spindle bearing vs load and speed.
+"""[S0] study: axial stiffness of the SKF 7011 CDGA/HC spindle bearing vs load and speed.
 
-Reproduces tables T1–T3 and Fig. 5 of seed 000 with our models:
+Reproduces tables T1–T3 and Fig. 5 of [S0] with our models:
 * "without inertia": the thrust model of :mod:`bearingsim.statics.axial` (seed section 2.1);
 * "with inertia": the Jones–Harris model of :mod:`bearingsim.statics.jones_harris`
   (seed section 2.2), K_xx of the 5×5 stiffness, outer-raceway control;
 * Palmgren: :func:`bearingsim.statics.axial.palmgren_axial_stiffness` with the free contact
   angle α₀ and with the loaded contact angle of the thrust model.
 
-The seed's values are read from ``bearingsim/data/seed000.toml``.
+The paper's values are read from ``bearingsim/data/seed000.toml``.
 """
 
 from __future__ import annotations
@@ -26,13 +26,13 @@ from ..statics.jones_harris import Loads, solve
 
 
 def seed_tables() -> dict:
-    """Tables T1–T3 of seed 000 (Ca in N/µm) as transcribed in the package data."""
+    """Tables T1–T3 of [S0] (Ca in N/µm) as transcribed in the package data."""
     return tomllib.loads((resources.files("bearingsim") / "data" / "seed000.toml").read_text(encoding="utf-8"))
 
 
 @dataclass
 class SpindleStudy:
-    """Our axial stiffness values [N/m] next to the seed's [N/µm]."""
+    """Our axial stiffness values [N/m] next to the paper's [N/µm]."""
 
     bearing: object
     loads: np.ndarray  #: [N]
@@ -48,7 +48,7 @@ class SpindleStudy:
     seed: dict
 
     def deviations(self) -> dict:
-        """Relative deviations of ours from the seed (ours/seed − 1) for T1 and T2."""
+        """Relative deviations of ours from the paper (ours/seed − 1) for T1 and T2."""
         s = self.seed
         return {
             "T1_without": self.t1_without / 1e6 / np.array(s["T1"]["without_inertia"]) - 1,
@@ -63,7 +63,7 @@ class SpindleStudy:
 
         s = self.seed
         dev = self.deviations()
-        t1 = Table(title="T1/T3: axial stiffness at n = 0 [N/µm]: ours | seed 000 | deviation")
+        t1 = Table(title="T1/T3: axial stiffness at n = 0 [N/µm]: ours | [S0] | deviation")
         for c in ("Fa [N]", "no inertia", "seed", "dev", "Jones–Harris", "seed", "dev",
                   "Palmgren α₀", "Palmgren α", "seed Palmgren", "dev (α)", "seed FEM"):
             t1.add_column(c, justify="right")
@@ -85,7 +85,7 @@ class SpindleStudy:
         console.print(t2)
 
     def to_csv(self, path: Path) -> Path:
-        """One row per (table, speed, load): ours and the seed's Ca in N/µm."""
+        """One row per (table, speed, load): ours and the paper's Ca in N/µm."""
         path = Path(path)
         s = self.seed
         with path.open("w", newline="") as fh:
@@ -105,7 +105,7 @@ class SpindleStudy:
         return path
 
     def plot(self, path: Path) -> Path:
-        """Fig. 5 of seed 000: Ca vs speed, one line per load; the seed's T2 points as markers."""
+        """Fig. 5 of [S0]: Ca vs speed, one line per load; the paper's T2 points as markers."""
         import matplotlib
 
         matplotlib.use("Agg")
@@ -116,10 +116,10 @@ class SpindleStudy:
         for i, fa in enumerate(self.loads):
             line, = ax.plot(self.fig_speeds_rpm, self.fig[:, i] / 1e6, label=f"Fa = {fa:.0f} N (bearingsim)")
             ax.plot(self.seed["T2"]["speeds_rpm"], seed_t2[:, i], "o", color=line.get_color(), mfc="none",
-                    label="seed 000 T2" if i == 0 else None)
+                    label="[S0] T2" if i == 0 else None)
         ax.set_xlabel("speed n [rpm]")
         ax.set_ylabel("axial stiffness Ca [N/µm]")
-        ax.set_title(f"{getattr(self.bearing, 'name', '')}: axial stiffness vs speed (seed 000 Fig. 5)")
+        ax.set_title(f"{getattr(self.bearing, 'name', '')}: axial stiffness vs speed ([S0] Fig. 5)")
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
         fig.tight_layout()
@@ -130,7 +130,7 @@ class SpindleStudy:
 
 
 def run_study(bearing, fig_points: int = 57) -> SpindleStudy:
-    """Compute T1–T3 and Fig. 5 for ``bearing`` (default: the seed's 7011, estimated ball set)."""
+    """Compute T1–T3 and Fig. 5 for ``bearing`` (default: the paper's 7011, estimated ball set)."""
     seed = seed_tables()
     loads = np.array(seed["loads_N"], dtype=float)
     t1_without = np.empty(len(loads))
