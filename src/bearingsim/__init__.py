@@ -80,7 +80,8 @@ def __dir__():
 
 
 def __getattr__(name: str):
-    # PEP 562: the version and the public API are loaded on first use (importlib.metadata costs a few ms that most imports do not need)
+    # PEP 562: the version and the public API are loaded on first use (importlib.metadata costs a few ms that most
+    # imports do not need)
     if name == "__version__":
         v = _read_version()
         globals()["__version__"] = v

@@ -28,8 +28,14 @@ import pytest
 import scipy.linalg
 from numpy.testing import assert_allclose
 
-from bearingsim.cage_modes import (CageRing, assemble, cage_modes, cowper_shear_coefficient, default_cage_ring,
-                                   rect_torsion_constant)
+from bearingsim.cage_modes import (
+    CageRing,
+    assemble,
+    cage_modes,
+    cowper_shear_coefficient,
+    default_cage_ring,
+    rect_torsion_constant,
+)
 from bearingsim.errors import InputError
 
 E, NU, RHO = 2.06e11, 0.3, 7850.0
@@ -362,8 +368,8 @@ def test_cli_cage_modes_json_and_bad_input():
     import typer
     from typer.testing import CliRunner
 
-    from bearingsim.cli import cage as cli_cage
     from bearingsim.cage_modes import default_cage_ring as dcr
+    from bearingsim.cli import cage as cli_cage
 
     app = typer.Typer()
 

@@ -27,9 +27,19 @@ import numpy as np
 import pytest
 from numpy.testing import assert_allclose
 
-from bearingsim.cage_modes import (CageRing, _element_frames, assemble, cage_modes, element_end_forces,
-                                   normal_stress, peak_stress, peak_stress_location, stress_points, stress_shapes,
-                                   torsion_shear_stress)
+from bearingsim.cage_modes import (
+    CageRing,
+    _element_frames,
+    assemble,
+    cage_modes,
+    element_end_forces,
+    normal_stress,
+    peak_stress,
+    peak_stress_location,
+    stress_points,
+    stress_shapes,
+    torsion_shear_stress,
+)
 from bearingsim.errors import InputError
 
 E, NU = 2.06e11, 0.3

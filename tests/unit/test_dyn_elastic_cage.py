@@ -14,6 +14,8 @@ import math
 
 import numpy as np
 import pytest
+from test_dyn_energy import _setup as _kicked_hub_row
+from test_dyn_energy import total_energy
 
 from bearingsim.dynamics import forces as fo
 from bearingsim.dynamics import model as md
@@ -22,8 +24,6 @@ from bearingsim.dynamics.run import Stepper
 from bearingsim.errors import InputError
 from bearingsim.io import load_bearing
 from bearingsim.statics import _kernels as kn
-from test_dyn_energy import _setup as _kicked_hub_row
-from test_dyn_energy import total_energy
 
 SOFT = {"young_modulus": 1e8, "density": 1100.0}  # a rubber-soft cage: modes at ~100 Hz take energy
 

@@ -10,9 +10,6 @@ from bearingsim import lubricants as L
 from bearingsim.contact import ehl
 from bearingsim.errors import InputError
 
-
-
-
 SPEED = 1e-4  # slow enough to pass IR -> IE -> PE on the load sweep
 ARGS = dict(eta0=0.03, alpha=2.1e-8, e_eff=2.286e11, rx=4.7e-3, ry=0.144)
 

@@ -177,8 +177,8 @@ def test_cli_simulate_bad_case_file(bad_files, kind, tmp_path):
 from hypothesis import HealthCheck, given, settings  # noqa: E402
 from hypothesis import strategies as st  # noqa: E402
 
-from bearingsim.io.case import _KEYS as CASE_KEYS  # noqa: E402
 from bearingsim.dynamics.case import case_from_dict  # noqa: E402
+from bearingsim.io.case import _KEYS as CASE_KEYS  # noqa: E402
 from bearingsim.lubricants import lubricant_from_dict  # noqa: E402
 
 _WORDS = ["10 mm", "72.5 mm", "15 deg", "0 mm", "-5 mm", "1e9 mm", "5 kg", "3 N", "0.52", "1e400", "208 GPa",

@@ -6,7 +6,6 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
-
 from scipy.special import gamma
 
 from bearingsim import life

@@ -27,7 +27,8 @@ from . import cage, dynamics, lubrication, static, sweep
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="bearingsim: ball bearing statics, stiffness, lubrication and dynamics.")
-reproduce_app = typer.Typer(no_args_is_help=True, help="Reproduce the published studies (references in docs/references.md).")
+reproduce_app = typer.Typer(no_args_is_help=True,
+                            help="Reproduce the published studies (references in docs/references.md).")
 app.add_typer(reproduce_app, name="reproduce")
 
 

@@ -96,7 +96,8 @@ def reproduce_hub_hysteresis(
     cycles: int = typer.Option(3, "--cycles", help="load cycles per run (the first is a start-up)"),
     out: HysteresisOut = Path("out"),
 ):
-    """Hub-bearing hysteresis (Sakaguchi & Shibutani [S1], Figs. 7–9): tilt–moment hysteresis W_H at 0.3 kN·m per speed and load frequency (long runs)."""
+    """Hub-bearing hysteresis (Sakaguchi & Shibutani [S1], Figs. 7–9): tilt–moment hysteresis W_H at 0.3 kN·m
+    per speed and load frequency (long runs)."""
     from ..studies.hub_dynamic import run_study
     from .output import atomic_output, output_folder, writing
 

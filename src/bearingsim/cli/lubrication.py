@@ -139,7 +139,8 @@ def traction_curve(
     speeds: str = typer.Option("1 m/s,5 m/s,20 m/s", "--speeds", help="Comma-separated rolling speeds"),
     s_max: float = typer.Option(0.05, "--s-max", help="Largest slide-roll ratio plotted"),
 ):
-    """Plot the traction coefficient vs slide-roll ratio (as in Sakaguchi & Shibutani [S1], Fig. 4) for one ball contact."""
+    """Plot the traction coefficient vs slide-roll ratio (as in Sakaguchi & Shibutani [S1], Fig. 4) for one ball
+    contact."""
     from ..errors import InputError
     from ..lubrication import plot_traction_curves
     from ..units import _convert, parse_quantity

@@ -175,7 +175,8 @@ def _check(q, rx, ry, e_eff):
     for name, v in (("rx", rx), ("ry", ry)):
         if not (v > 0 and math.isfinite(v)):
             raise InputError(name, f"effective radius must be positive and finite, got {v!r}",
-                             "check the ball diameter and groove radius (a concave groove tighter than the ball is impossible)")
+                             "check the ball diameter and groove radius "
+                             "(a concave groove tighter than the ball is impossible)")
     if not (e_eff > 0):
         raise InputError("effective_modulus", f"must be positive, got {e_eff!r}", "check the materials")
 

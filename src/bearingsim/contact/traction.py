@@ -267,5 +267,6 @@ def rolling_resistance(regime_name: str, eta0: float, alpha: float, e_eff: float
 
 
 __all__ = ["four_parameter", "fit_four_parameter", "traction_curve", "mixed_weight", "mixed_coefficient",
-           "roelands_viscosity", "limiting_shear_stress", "fluid_shear_stress", "elastic_plastic_mean_stress", "rolling_resistance_zh",
+           "roelands_viscosity", "limiting_shear_stress", "fluid_shear_stress", "elastic_plastic_mean_stress",
+           "rolling_resistance_zh",
            "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING"]

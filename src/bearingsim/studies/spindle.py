@@ -94,7 +94,8 @@ class SpindleStudy:
             for i, fa in enumerate(self.loads):
                 w.writerow(["T1", "without_inertia", 0, fa, self.t1_without[i] / 1e6, s["T1"]["without_inertia"][i]])
                 w.writerow(["T1", "with_inertia", 0, fa, self.t1_with[i] / 1e6, s["T1"]["with_inertia"][i]])
-                w.writerow(["T3", "palmgren_loaded_angle", 0, fa, self.palmgren_loaded[i] / 1e6, s["T3"]["palmgren"][i]])
+                w.writerow(["T3", "palmgren_loaded_angle", 0, fa, self.palmgren_loaded[i] / 1e6,
+                            s["T3"]["palmgren"][i]])
                 w.writerow(["T3", "palmgren_free_angle", 0, fa, self.palmgren_free[i] / 1e6, s["T3"]["palmgren"][i]])
             for k, n in enumerate(self.t2_speeds_rpm):
                 for i, fa in enumerate(self.loads):
