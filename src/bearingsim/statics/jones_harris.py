@@ -35,6 +35,9 @@ TOL_RING = 1e-10
 TOL_VERIFY = 1e-7
 MAXIT_BALL = 60
 MAXIT_RING = 100
+#: p_max = C_p Q^(1/3) of :func:`bearingsim.contact.hertz.max_pressure_from_load` as plain Python (the ball table
+#: calls it twice per ball: without the compiled function's dispatch cost)
+_max_pressure = hertz.max_pressure_from_load.py_func
 
 
 def _free_ring(ballout: np.ndarray, rows: np.ndarray, scale: float) -> bool:
@@ -498,8 +501,8 @@ def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.nd
             cols["outer_contact_angle_rad"].append(math.atan2(so, co))
             cols["inner_load_N"].append(bo[2])
             cols["outer_load_N"].append(bo[3])
-            cols["inner_max_pressure_Pa"].append(hertz.max_pressure_from_load(par[kn.P_CPI], bo[2]))
-            cols["outer_max_pressure_Pa"].append(hertz.max_pressure_from_load(par[kn.P_CPO], bo[3]))
+            cols["inner_max_pressure_Pa"].append(_max_pressure(par[kn.P_CPI], bo[2]))
+            cols["outer_max_pressure_Pa"].append(_max_pressure(par[kn.P_CPO], bo[3]))
             cols["inner_approach_m"].append(bo[4])
             cols["outer_approach_m"].append(bo[5])
             cols["x1_m"].append(xb[r, j, 0])
