@@ -99,7 +99,7 @@ def reproduce_hub_hysteresis(
     """Hub-bearing hysteresis (Sakaguchi & Shibutani [S1], Figs. 7–9): tilt–moment hysteresis W_H at 0.3 kN·m
     per speed and load frequency (long runs)."""
     from ..studies.hub_dynamic import run_study
-    from .output import atomic_output, output_folder, writing
+    from .output import output_folder, write_study, writing
 
     con = make_console()
     out = output_folder(out, "--out")
@@ -108,11 +108,7 @@ def reproduce_hub_hysteresis(
         study = run_study(case, _numbers(speeds, "--speeds"), _numbers(frequencies, "--frequencies"), cycles,
                           out_dir=out, progress=True, console=make_console(stderr=True))
     study.print_table(con)
-    csv, png = out / "hub_hysteresis.csv", out / "hub_hysteresis_loops.png"
-    with atomic_output(csv, "--out") as tmp:
-        study.to_csv(tmp)
-    with atomic_output(png, "--out") as tmp:
-        study.plot(tmp)
+    csv, png = write_study(study, out, "hub_hysteresis.csv", "hub_hysteresis_loops.png")
     con.print(f"wrote {csv} and {png}")
 
 

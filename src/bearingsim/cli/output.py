@@ -153,6 +153,17 @@ def atomic_output(path, option: str = "--out", default_suffix: str = "") -> Iter
         raise
 
 
+def write_study(study, folder: Path, csv_name: str, png_name: str, option: str = "--out") -> tuple[Path, Path]:
+    """Write a study's table (``study.to_csv``) and figure (``study.plot``) into ``folder``, each through
+    :func:`atomic_output`; returns the two paths.  Used by every ``reproduce`` command."""
+    csv, png = Path(folder) / csv_name, Path(folder) / png_name
+    with atomic_output(csv, option) as tmp:
+        study.to_csv(tmp)
+    with atomic_output(png, option) as tmp:
+        study.plot(tmp)
+    return csv, png
+
+
 def apply_umask(path) -> None:
     """Give a finished output file the mode a new file gets from the user's umask (writers that go through
     ``tempfile.mkstemp`` leave 0600)."""

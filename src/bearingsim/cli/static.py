@@ -123,18 +123,14 @@ def reproduce_spindle(
     T1–T3 side by side with the paper, its Fig. 5 as a plot, and a CSV."""
     from ..io import load_bearing
     from ..studies.spindle import run_study
-    from .output import atomic_output, output_folder
+    from .output import output_folder, write_study
 
     announce_compilation()
     out = output_folder(out, "--out")
     study = run_study(load_bearing(bearing))
     con = make_console()
     study.print_tables(con)
-    csv, png = out / "spindle_axial_stiffness.csv", out / "spindle_axial_stiffness_fig5.png"
-    with atomic_output(csv, "--out") as tmp:
-        study.to_csv(tmp)
-    with atomic_output(png, "--out") as tmp:
-        study.plot(tmp)
+    csv, png = write_study(study, out, "spindle_axial_stiffness.csv", "spindle_axial_stiffness_fig5.png")
     con.print(f"wrote {csv} and {png}")
 
 

@@ -165,7 +165,7 @@ def reproduce_hub_static(
     from ..errors import InputError
     from ..io import load_bearing
     from ..studies import hub_static as hs
-    from .output import atomic_output, output_folder
+    from .output import output_folder, write_study
 
     if points < 2:
         raise InputError("--points", "must be at least 2", "e.g. --points 25")
@@ -180,11 +180,7 @@ def reproduce_hub_static(
     announce_compilation()
     res = hs.run_study(load_bearing(bearing), np.linspace(-hs.M_MAX, hs.M_MAX, points), speed=w)
     typer.echo(res.table())
-    csv, png = out / "hub_static.csv", out / "hub_static.png"
-    with atomic_output(csv, "--out") as tmp:
-        res.to_csv(tmp)
-    with atomic_output(png, "--out") as tmp:
-        res.plot(tmp)
+    csv, png = write_study(res, out, "hub_static.csv", "hub_static.png")
     make_console().print(f"wrote {csv} and {png}")
     if not res.converged.all():
         raise typer.Exit(1)
