@@ -12,7 +12,7 @@ diametral clearance P_d.  A deep-groove bearing has its groove centres in one pl
 its free contact angle follows from the clearance, cos α₀ = 1 − P_d / (2A)
 (Harris & Kotzalas 2007 vol. 1 eq. 2.10).
 
-Plausibility bounds (issue 11 item 5): values outside them are refused with
+Plausibility bounds: values outside them are refused with
 :class:`~bearingsim.errors.InputError` when a bearing is built (from a file or in code).  They are
 wide engineering bounds, meant to catch unit slips (a bare ``72.5`` read as metres, ``E = 1 Pa``)
 and impossible geometry, not to judge a design.  :data:`LIMITS` holds the numbers.
@@ -194,7 +194,7 @@ class BallBearing:
                              "check the clearance, its unit and the conformities")
 
     def _check_types(self):
-        """API boundary: every field of the right type, else InputError naming it (issue 11 item 10)."""
+        """API boundary: every field of the right type, else InputError naming it."""
         if not isinstance(self.name, str):
             raise InputError("name", f"expected a string, got {type(self.name).__name__}", 'e.g. name = "6205"')
         if not isinstance(self.kind, str):
@@ -268,7 +268,7 @@ class BallBearing:
     def contact_constants(self) -> tuple[float, float, float]:
         """(K_i, K_o, K_n) [N/m^1.5] at α₀ (Harris & Kotzalas 2007 vol. 1 eq. 7.4 for K_n).
 
-        As in Harris's and the seed's formulation, the constants are evaluated once at
+        As in Harris's formulation and that of [S0], the constants are evaluated once at
         the free contact angle; their change with the loaded angle is below 0.5 % here.
         """
         ki = self.contact(1.0, True).stiffness_constant

@@ -3,7 +3,7 @@
 Every entry cites where its numbers come from.  Values are SI:
 Young's modulus [Pa], Poisson's ratio [-], density [kg/m³].
 
-Plausibility bounds (:data:`LIMITS`, issue 11 item 5; the table of all bearing-input bounds is in
+Plausibility bounds (:data:`LIMITS`; the table of all bearing-input bounds is in
 :mod:`bearingsim.geometry`): E 1–1000 GPa (polymers ~2 GPa to tungsten carbide ~600 GPa),
 0 ≤ ν < 0.5, ρ 500–25 000 kg/m³.  Outside them a material is refused with
 :class:`~bearingsim.errors.InputError`: ``E = 1 Pa`` or a density in g/cm³ written as kg/m³ is a
@@ -95,7 +95,7 @@ LIBRARY: dict[str, Material] = {
     "cage_steel": Material(
         "cage_steel", 2.06e11, 0.30, 7850.0,
         "ASSUMED pressed-steel cage (typical low-carbon sheet steel: E = 206 GPa, nu = 0.3, 7850 kg/m3); "
-        "neither seed gives the cage material"),
+        "neither [S0] nor [S1] gives the cage material"),
 }
 
 

@@ -4,7 +4,7 @@ Everything inside bearingsim is a plain SI float.  Strings such as ``"11.1 mm"``
 ``"11200 rpm"`` or ``"310 GPa"`` from TOML files and the command line are parsed
 here once and checked for dimension.
 
-Grammar (issue 11 item 3: a quantity is never evaluated as arithmetic)::
+Grammar (a quantity is never evaluated as arithmetic)::
 
     quantity := number [unit]
     number   := [+|-] digits [. digits] [(e|E) [+|-] digits]        (one number, decimal point)
@@ -110,7 +110,7 @@ _SUPERSCRIPTS = str.maketrans({"²": "^2", "³": "^3", "⁻": "^-", "¹": "1"})
 
 
 #: Units typed most often (catalogue files, the command line's defaults) converted without pint, whose import
-#: costs ~0.2 s of every command's start-up (issue 11 item 9): dimension -> {unit text: (factor, offset)}; the SI
+#: costs ~0.2 s of every command's start-up: dimension -> {unit text: (factor, offset)}; the SI
 #: value is ``number * factor + offset``, the same floating-point operations pint performs for these units
 #: (tests/unit/test_startup.py::test_fast_units_equal_pint checks every entry bitwise against pint).  Anything
 #: else goes through pint.

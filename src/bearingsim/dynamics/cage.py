@@ -1,6 +1,6 @@
 """The cage: a rigid body, or a rigid body carrying elastic modes (mode synthesis).
 
-Seed 001 §3 (Table 3): the cage has 3 translations and 3 rotations and, in IBDAS, 56 elastic
+Sakaguchi & Shibutani [S1] §3 (Table 3): the cage has 3 translations and 3 rotations and, in IBDAS, 56 elastic
 modes.  Its rigid state block is
 
     r (3), v (3), θ, βy, βz, θ̇, β̇y, β̇z                    (N_CAGE = 12 values)

@@ -35,7 +35,7 @@ Example (``examples/spindle-7011.toml``)::
     [cage]
     mass = "0.03 kg"
     pocket_clearance = "0.2 mm"
-    friction = 0.06                     # seed 001 §3.2
+    friction = 0.06                     # Sakaguchi & Shibutani [S1] §3.2
     guidance = "balls"                  # balls, outer-land, inner-land
     land_clearance = "0.2 mm"
     pocket_shape = "sphere"

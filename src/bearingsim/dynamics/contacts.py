@@ -11,7 +11,7 @@
 The equations of motion that use them are :func:`bearingsim.dynamics.forces.rhs` and its section
 helpers.  Array layouts (``gp``, ``cp``, the lubricant rows): :mod:`.layout`.
 
-Ball–raceway normal force (seed 001 §3.1; Harris & Kotzalas 2007 vol. 1 eq. 7.4):
+Ball–raceway normal force (Sakaguchi & Shibutani [S1] §3.1; Harris & Kotzalas 2007 vol. 1 eq. 7.4):
 the ball centre b and the groove-curvature centre g of the raceway in the ball's
 meridian plane (the closest point of the groove-centre circle) give the approach
 δ = |b − g| − (f − ½)D; along u = (b − g)/|b − g|
@@ -30,8 +30,8 @@ from the potential (2/5) K δ^2.5 (energy is conserved without damping and frict
 
 Tangential ball–raceway forces: model 0 none; model 1 a *regularised Coulomb stand-in
 for tests* (not a lubricant model): on the n slices of the contact ellipse of
-:mod:`bearingsim.contact.slices` (load share and load centroid of each strip, seed 001 eq. 1,
-points on the deformed surface) the force opposes the slice's sliding velocity (seed 001 eqs. 2–3),
+:mod:`bearingsim.contact.slices` (load share and load centroid of each strip, [S1] eq. 1,
+points on the deformed surface) the force opposes the slice's sliding velocity ([S1] eqs. 2–3),
 μ = μ₀ s/√(s² + s₀²) with s = |v_s|/u_roll the slide-roll ratio; model 2 the
 lubricated sliced-ellipse kernel :func:`bearingsim.contact.slices.contact_traction`.
 """
@@ -72,14 +72,14 @@ def slice_table(nsl, table):
 def coulomb_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr, mu0, s0, vref, nsl, out):
     """Regularised Coulomb traction on slices of the contact ellipse (TEST STAND-IN, not a lubricant model).
 
-    The slices of :mod:`bearingsim.contact.slices` (seed 001 eq. 1): slice k spans ξ = x/a ∈ [ξ_k, ξ_k+1],
+    The slices of :mod:`bearingsim.contact.slices` ([S1] eq. 1): slice k spans ξ = x/a ∈ [ξ_k, ξ_k+1],
     ξ_k = −1 + 2k/n, of the major axis (length 2a); its load is the Hertz pressure integrated over the
     strip, Q_k = Q·``slice_fraction``(ξ_k, ξ_k+1), and it acts at the strip's load centroid
     x̄_k = a·``slice_centroid``(ξ_k, ξ_k+1) on the deformed surface, p = centre + x̄_k major +
     ``slice_point_offset``(x̄_k, 1/r_dev)·normal, with ``normal`` the unit normal from the race towards
     the ball (the convention of :func:`bearingsim.contact.slices.contact_traction`).
     Sliding velocity v_s = (v_b + ω_b × (p − b)) − (v_r + ω_r × (p − c_r)), projected on
-    the tangent plane (seed 001 eq. 3); force on the ball −μ Q_k v_s/|v_s| (eq. 2) with
+    the tangent plane ([S1] eq. 3); force on the ball −μ Q_k v_s/|v_s| (eq. 2) with
     μ = μ₀ s/√(s² + s₀² + (v_ref/u)²), s = |v_s|/u the slide-roll ratio, u the mean
     rolling speed.
 
@@ -284,7 +284,7 @@ def pocket_point(shape, par, radius, ut, ur, ux):
     the nearest point of the opening's rim at the same azimuth.  shape 1: cylinder of ``radius``
     about the radial axis, half-length ``par`` [m]: the point at the ball centre's height
     (clamped to ±par) in the direction of its offset in the t–x plane.  Exact closest points
-    (seed 001 §3.2 discretises the surface into nodes; the closed form is what those nodes
+    ([S1] §3.2 discretises the surface into nodes; the closed form is what those nodes
     converge to, without the jumps of the deepest node as the ball moves).
     """
     if shape == 0:

@@ -9,10 +9,10 @@ from Python.  The contact laws — the Hunt–Crossley Hertz force and traction 
 pocket geometry (:func:`~.contacts.pocket_point`) — are in :mod:`.contacts` (their names stay
 importable from here); the load and speed histories are the kernels of :mod:`.loads`.
 
-Ball–cage (seed 001 §3.2, eqs. 6–7): the pocket surface is a set of points in the
+Ball–cage (Sakaguchi & Shibutani [S1] §3.2, eqs. 6–7): the pocket surface is a set of points in the
 pocket frame; the deepest interference of a point with the ball gives a Hertz-type
 force Q = K_c δ^1.5 along the line from the point to the ball centre and sliding
-friction F = −μ Q v_s/√(|v_s|² + v_ref²) (μ = 0.06 in seed 001; v_ref regularises the
+friction F = −μ Q v_s/√(|v_s|² + v_ref²) (μ = 0.06 in [S1]; v_ref regularises the
 sign at zero sliding).  Cage guidance by a ring land uses the same law on the radial
 eccentricity of the cage beyond the land clearance.
 """
@@ -231,7 +231,7 @@ def cage_kinematics(y, o, cpar, rm, rcm, occ, wc):
 
 @njit(cache=True, inline="always")
 def cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, wc, fc, mc, fm, diag, want, acc, work):
-    """The ball–pocket contacts of cage ci (seed 001 §3.2, eqs. 6–7; module docstring).
+    """The ball–pocket contacts of cage ci ([S1] §3.2, eqs. 6–7; module docstring).
 
     Per pocket j at azimuth φ_j = ψ₀ + 2πj/Z: the ball centre in the pocket frame (elastic cage: in the
     pocket displaced by u_j and turned by ρ_j), the nearest pocket-surface point (:func:`pocket_point`),
@@ -503,7 +503,7 @@ def cage_equations(ci, o, y, dy, cpar, cm, rm, syb, cyb, fc, mc, fm, g0, g1, g2,
 
 @njit(cache=True, inline="always")
 def ring_equations(y, dy, gp, fring, mring, loads, omega, sy, cy, g0, g1, g2):
-    """Inner ring (seed 001 Table 3; Lagrange with a constant mass matrix): m c̈ = F + F_applied + m g;
+    """Inner ring ([S1] Table 3; Lagrange with a constant mass matrix): m c̈ = F + F_applied + m g;
     I_t γ̈y = Q_γy − I_p Ω γ̇z; I_t γ̈z = Q_γz + I_p Ω γ̇y with Q_γy = M·e_y + M_y − x_L F_z and
     Q_γz = M·R_y e_z + M_z + x_L F_y (applied loads at the load point x_L).  Held fixed: ẏ = 0."""
     xl = gp[ly.G_XL]
@@ -558,7 +558,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
     (:func:`cage_pockets`), land guidance (:func:`land_guidance`) and its rigid and modal equations
     (:func:`cage_equations`); the inner ring (:func:`ring_equations`).
 
-    Inner ring (seed 001 Table 3; Lagrange with constant mass matrix):
+    Inner ring ([S1] Table 3; Lagrange with constant mass matrix):
     m c̈ = F + m g;  I_t γ̈y = Q_γy − I_p Ω γ̇z;  I_t γ̈z = Q_γz + I_p Ω γ̇y, with the
     generalized moments Q_γy = M·e_y and Q_γz = M·R_y e_z of the contact moment M about
     the ring centre, plus the applied loads (moments about the bearing centre of the
@@ -568,7 +568,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
     from the motion itself): m v̇ = F + m g, J ω̇ = M.
     Cage: m v̇ = F + m g; I_p θ̈ = M·(R_y R_z e_x); I_t β̈y = M·e_y − I_p θ̇ β̇z;
     I_t β̈z = M·R_y e_z + I_p θ̇ β̇y.
-    Elastic cage (mode synthesis, seed 001 Table 3; Craig 1981 ch. 17): the pockets move in the cage
+    Elastic cage (mode synthesis, [S1] Table 3; Craig 1981 ch. 17): the pockets move in the cage
     frame by u_j = Σ η_k φ_k^u(j) and turn by ρ_j = Σ η_k φ_k^ρ(j) (free–free mass-normalised modes,
     :mod:`bearingsim.cage_modes`); η̈_k + 2 ζ_k ω_k η̇_k + ω_k² η_k = Σ_j (φ_k^u(j)·F_j + φ_k^ρ(j)·(r_j × F_j))
     with F_j the pocket force on the cage (cage frame) and r_j its point from the deformed pocket

@@ -1,4 +1,4 @@
-"""State layout and bodies of the dynamic bearing model (issue 5; seed 001 Table 3).
+"""State layout and bodies of the dynamic bearing model (Sakaguchi & Shibutani [S1], Table 3).
 
 Bodies (inertial frame, x the bearing axis, ψ = 0 on +y, outer ring fixed):
 
@@ -98,7 +98,7 @@ class Model:
 
 
 def pocket_geometry(ball_diameter: float, shape: str = "sphere", opening_deg: float = 20.0) -> tuple[int, float]:
-    """(shape code, shape parameter) of the pocket surface (seed 001 §3.2), for ``cp[C_SHAPE]``, ``cp[C_POCKET]``.
+    """(shape code, shape parameter) of the pocket surface ([S1] §3.2), for ``cp[C_SHAPE]``, ``cp[C_POCKET]``.
 
     ``shape="sphere"`` (default): a spherical pocket of radius D/2 + clearance, open toward the
     raceways within ``opening_deg`` of the cage's radial axis; it locates a ball-guided cage radially
@@ -202,7 +202,7 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
     keyword options of :func:`bearingsim.contact.slices.pack_lubrication_parameters`
     for traction "slices"; load_point axial position of the load point [m]; speed (Ω₀, Ω₁, ramp) [rad/s, s];
     cage options: mass [kg] (default 10 % of the ball set), pocket clearance [m]
-    (default 2 % of D), friction μ = 0.06 (seed 001 §3.2), guidance "balls",
+    (default 2 % of D), friction μ = 0.06 ([S1] §3.2), guidance "balls",
     "outer-land" or "inner-land" with a radial land clearance [m]; cage_modes: elastic modes per
     cage (0: rigid), with ``cage_ring`` overrides of the assumed ring [SI] and ``modal_damping`` ζ
     (:func:`.cage.attach_elastic_cages`).

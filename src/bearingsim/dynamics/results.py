@@ -104,12 +104,12 @@ class Results:
             yield lambda name, start=0, stop=None: ds[name][start:stop].values
 
     def loop_widths(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> np.ndarray:
-        """Hysteresis of the tilt against the moment per load cycle, seed 001 Fig. 8 definition [rad].
+        """Hysteresis of the tilt against the moment per load cycle, Sakaguchi & Shibutani [S1] Fig. 8 definition [rad].
 
         For every time the applied load ``applied_load[:, load]`` (default M_z) passes ``moment``
         [N·m] rising and then falling: the tilt (``inner_ring_displacement[:, dof]``, default γz) at
         the falling crossing minus that at the rising one (linear interpolation between samples);
-        positive when the tilt lags the moment.  Seed 001 evaluates it at 0.3 kN·m.
+        positive when the tilt lags the moment.  [S1] evaluates it at 0.3 kN·m.
         """
         with self._columns() as read:  # only the two variables, not the whole run
             m = read("applied_load")[:, load]
@@ -136,7 +136,7 @@ class Results:
         return fig
 
     def plot_hysteresis(self, dof: int = 4, load: int = 4):
-        """Tilt against moment (seed 001 Fig. 6)."""
+        """Tilt against moment ([S1] Fig. 6)."""
         import matplotlib.pyplot as plt
 
         fig, a = plt.subplots()

@@ -109,7 +109,7 @@ class Stepper:
         out = sample_from(self.model, self.t, self.y, diag, gd)
         out["power_loss_rolling"] = 0.0
         if int(self.model.gp[md.G_TRAC]) == 2 and self.model.lubs is not None:
-            # rolling viscous resistance share: the same state without it (seed 001 eqs. 4-5)
+            # rolling viscous resistance share: the same state without it (Sakaguchi & Shibutani [S1] eqs. 4-5)
             from ..contact import slices
 
             if not np.any(self.model.lubs[:, slices.L_ROLLRES] != 0):

@@ -6,7 +6,7 @@ this module holds only the per-ball and per-ring arithmetic.  Two ring solvers: 
 :func:`solve_ring_coupled` (the batch solver: Newton on the ring and ball unknowns together, with
 :func:`solve_ring` as its safeguard).
 
-Model (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3, eqs. 3.22–3.61; seed 000 eqs. 6–16).
+Model (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3, eqs. 3.22–3.61; [S0] eqs. 6–16).
 Each row is described by a parameter vector (indices in :mod:`bearingsim.statics.layout`).  For ball j at azimuth ψ_j,
 in the row's local axial–radial plane (ξ = s (x − x_row), r), the vector from the outer
 groove-curvature centre (fixed) to the inner one is
@@ -16,17 +16,17 @@ groove-curvature centre (fixed) to the inner one is
 where u is the displacement of the inner groove centre caused by the inner-ring
 displacement q = (δx, δy, δz, γy, γz) (small rotations), e an axial preload offset and
 s = ±1 the row's orientation.  The ball centre sits at (X₁, X₂) from the outer groove
-centre; the two geometric constraints of the seed (eqs. 6, 9)
+centre; the two geometric constraints of [S0] (eqs. 6, 9)
 
     (A₁ − X₁)² + (A₂ − X₂)² = (r_i + δ_i)²,   X₁² + X₂² = (r_o + δ_o)²,   r = (f − ½) D,
 
 are eliminated exactly (δ_i, δ_o follow from X), leaving the two force balances of the
-ball (seed eq. 10) in the unknowns (X₁, X₂):
+ball ([S0] eq. 10) in the unknowns (X₁, X₂):
 
     Q_i sin α_i − Q_o sin α_o − λ_o G cos α_o + λ_i G cos α_i = 0
     Q_i cos α_i − Q_o cos α_o + λ_o G sin α_o − λ_i G sin α_i + F_c = 0
 
-with Q = K δ^1.5, G = M_g / D, M_g = J ω_R ω_m sin β, F_c = ½ m d_m ω_m² (seed eqs. 11–12)
+with Q = K δ^1.5, G = M_g / D, M_g = J ω_R ω_m sin β, F_c = ½ m d_m ω_m² ([S0] eqs. 11–12)
 and λ_o = 2, λ_i = 0 for outer-raceway control, λ_o = λ_i = 1 for inner control.
 The signs of the gyroscopic terms follow from the free-body diagram of the ball whose
 spin vector (Jones) is ω_R (cos β, −sin β) in (ξ, r) with ω_R < 0: the moment the
@@ -35,7 +35,7 @@ docs/physics.md).  Ball speeds ω_m, ω_R and pitch angle β are Jones' rolling 
 (no slip at the contact centres; see :func:`kinematics`) evaluated at the current
 contact angles; their derivatives are carried through the analytic Jacobian.
 
-Robustness (issue 11): every kernel is compiled with ``error_model="numpy"`` — a zero divisor (Jones'
+Robustness: every kernel is compiled with ``error_model="numpy"`` — a zero divisor (Jones'
 relations at contact angles where they have no solution, ``po + pi = 0`` or ``cos α_i = γ′``) gives NaN,
 never an exception — and the residual norms propagate NaN (:func:`_scaled_norm`), so a failed evaluation
 is a rejected trial, never a small residual.  A singular ring Jacobian gets a Levenberg–Marquardt step
@@ -640,7 +640,7 @@ def regularised_step(kk, res, dq, wsol, dm, mu):
 @njit(cache=True, error_model="numpy")
 def solve_ring(rows, loads, omega, control, qv, lam_state, xb, kmat, ballout, tol_ball, tol_ring,
                maxit_ball, maxit_ring, load_scale):
-    """Newton–Raphson on the five inner-ring displacements (seed 000 eq. 13).
+    """Newton–Raphson on the five inner-ring displacements ([S0] eq. 13).
 
     The Jacobian is the assembled stiffness (implicit differentiation of every ball's
     balance), so each Newton step costs one pass over the balls.  A backtracking line
@@ -1041,7 +1041,7 @@ def solve_ring_coupled(rows, loads, omega, control, qv, lam_state, xb, kmat, bal
     converged when, at the current iterate, every ball meets the ball tolerance and the ring residual
     (uncondensed) meets the ring tolerance — the criteria of :func:`solve_ring` — and then gets the
     groove-bottom check, so the status codes keep their meaning (0, 1, 2, 3).  Same equations
-    (module docstring; seed 000 eqs. 6–13), fewer ball evaluations: one per ball and iteration.
+    (module docstring; [S0] eqs. 6–13), fewer ball evaluations: one per ball and iteration.
     xs : float[nrow, zmax, 8] workspace (saved ball state); wk : float[≥ 47]; wk2 : float[≥ 81] workspaces;
     trig : float[nrow, zmax, 2] from :func:`azimuth_table`.
     Returns (status, iterations, residual, ball_converged) as :func:`solve_ring`.

@@ -4,7 +4,7 @@ A :class:`BearingSystem` is a list of single-row angular contact (or deep-groove
 each with its axial position, its orientation and an axial preload offset, sharing one
 inner ring (the shaft) and one outer ring (the housing).  The quasi-static model is the
 Jones–Harris model of :mod:`bearingsim.statics._kernels` applied to every row at once
-(Harris & Kotzalas 2007 vol. 2 ch. 3 "bearing systems"; seed 000 eq. 13 summed over rows):
+(Harris & Kotzalas 2007 vol. 2 ch. 3 "bearing systems"; [S0] eq. 13 summed over rows):
 
 * row plane of row k at axial position x_k, orientation s_k = ±1 (−1 mirrors the contact
   angle; in a back-to-back (DB, "O") pair the row at −L/2 has s = +1 and the row at +L/2
@@ -21,7 +21,7 @@ Jones–Harris model of :mod:`bearingsim.statics._kernels` applied to every row 
 
 Preload given as a force F₀ [N] is converted to the offset e by solving, at rest and
 without external load, "axial load carried by the rows of orientation +1 = F₀" (brentq on e;
-for a symmetric pair this is the single-row thrust relation, seed 000 eqs. 3–5).
+for a symmetric pair this is the single-row thrust relation, [S0] eqs. 3–5).
 """
 
 from __future__ import annotations

@@ -1,12 +1,12 @@
 """Pure axial (thrust) load without inertial forces, and Palmgren's axial stiffness.
 
-Seed 000 section 2.1 (after Harris & Kotzalas 2007 vol. 1 ch. 7).  With A = (f_i + f_o − 1) D,
+[S0] section 2.1 (after Harris & Kotzalas 2007 vol. 1 ch. 7).  With A = (f_i + f_o − 1) D,
 K_n the ball's combined load–deflection constant and Z balls equally loaded:
 
-    Fa / (Z K_n A^1.5) = sin α (cos α₀ / cos α − 1)^1.5          (seed eq. 3)
-    cos α = cos α₀ / [1 + (Fa / (Z K_n A^1.5 sin α))^(2/3)]        (seed eq. 4, fixed point)
-    δa = A sin(α − α₀) / cos α                                      (seed eq. 5)
-    Ca = dFa/dδa                                                     (seed eq. 6)
+    Fa / (Z K_n A^1.5) = sin α (cos α₀ / cos α − 1)^1.5          ([S0] eq. 3)
+    cos α = cos α₀ / [1 + (Fa / (Z K_n A^1.5 sin α))^(2/3)]        ([S0] eq. 4, fixed point)
+    δa = A sin(α − α₀) / cos α                                      ([S0] eq. 5)
+    Ca = dFa/dδa                                                     ([S0] eq. 6)
 
 Ca in closed form, with c = cos α₀ / cos α:
     dFa/dα = Z K_n A^1.5 [cos α (c − 1)^1.5 + 1.5 tan²α cos α₀ (c − 1)^0.5]
@@ -37,14 +37,14 @@ class ThrustSolution:
 
 
 def thrust_load_of_angle(alpha: float, free_angle: float, z: int, kn: float, big_a: float) -> float:
-    """Fa(α) = Z K_n A^1.5 sin α (cos α₀/cos α − 1)^1.5  [N]  (seed 000 eq. 3)."""
+    """Fa(α) = Z K_n A^1.5 sin α (cos α₀/cos α − 1)^1.5  [N]  ([S0] eq. 3)."""
     c = math.cos(free_angle) / math.cos(alpha) - 1.0
     return z * kn * big_a**1.5 * math.sin(alpha) * max(c, 0.0) ** 1.5
 
 
 def contact_angle_fixed_point(fa: float, free_angle: float, z: int, kn: float, big_a: float,
                               tol: float = 1e-12, maxiter: int = 500) -> tuple[float, bool, int]:
-    """The seed's fixed-point iteration on cos α (seed 000 eq. 4), started from α₁ = α₀.
+    """The fixed-point iteration on cos α of [S0] (eq. 4), started from α₁ = α₀.
 
     Returns (α [rad], converged, iterations).  The iteration is a contraction for usual
     spindle-bearing loads but may fail for α₀ = 0 (deep-groove bearings: sin α₀ = 0 gives
@@ -88,7 +88,7 @@ def axial_stiffness_closed_form(alpha: float, free_angle: float, z: int, kn: flo
 def solve_thrust(bearing, fa: float, method: str = "bracketed") -> ThrustSolution:
     """Contact angle, deflection and axial stiffness of ``bearing`` under thrust ``fa`` [N].
 
-    ``method`` is ``"bracketed"`` (Brent, always converges) or ``"fixed_point"`` (seed eq. 4).
+    ``method`` is ``"bracketed"`` (Brent, always converges) or ``"fixed_point"`` ([S0] eq. 4).
     K_n is evaluated at α₀ (see :attr:`BallBearing.contact_constants`).
     """
     import numbers

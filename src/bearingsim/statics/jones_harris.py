@@ -2,7 +2,7 @@
 
 The per-ball and ring arithmetic are the numba kernels of :mod:`._kernels` (model and
 equations in that module's docstring: Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3;
-seed 000 eqs. 6–16).  This module checks inputs, builds a starting point, calls the
+[S0] eqs. 6–16).  This module checks inputs, builds a starting point, calls the
 kernels, and packages a :class:`StaticResult`.
 
 Units: forces [N], moments [N·m], speeds [rad/s], displacements [m], tilts [rad].
@@ -234,7 +234,7 @@ def initial_guess(bearing, loads: Loads) -> np.ndarray:
         fr = math.hypot(loads.fr_y, loads.fr_z)
         mr = math.hypot(loads.m_y, loads.m_z) / (0.5 * bearing.pitch_diameter)
         fa_eq = max(loads.fa, 0.0) + 0.5 * (fr + mr) * math.tan(max(bearing.free_contact_angle, 0.1)) + 1.0
-        # the seed's fixed point is cheap; Brent's method (imports scipy.optimize) only if it fails
+        # the fixed point of [S0] eq. 4 is cheap; Brent's method (imports scipy.optimize) only if it fails
         th = solve_thrust(bearing, fa_eq, method="fixed_point")
         if not th.converged:
             th = solve_thrust(bearing, fa_eq)

@@ -14,7 +14,7 @@ Row-parameter vector (float64, length :data:`NPAR`; one vector per ball row, sta
 -------------------------------------------------------------------------------------------------------
 Local frame of a row: ξ = s (x − x_row) axial, r radial; s = ±1 the row's orientation.  The groove
 curvature centres: outer fixed, inner at (Δx₀ + e, Δr₀) from it in the centred position
-(Harris & Kotzalas vol. 2 eqs. 3.22–3.26; seed 000 eq. 6).
+(Harris & Kotzalas vol. 2 eqs. 3.22–3.26; [S0] eq. 6).
 
 =============  ====  ==========================================================================  ============
 name           idx   meaning                                                                     unit
@@ -150,7 +150,7 @@ def inner_groove_centre_axial(par):
     """Global axial position of the inner groove-curvature centres of a row, ring centred [m].
 
     x_gi = x_row + s (ξ_ic + e): the inner groove centre lies at local axial position ξ_ic = r_i sin α₀ from
-    the row plane, moved by the preload offset e (Harris & Kotzalas 2007 vol. 2 eqs. 3.22–3.26; seed 000
+    the row plane, moved by the preload offset e (Harris & Kotzalas 2007 vol. 2 eqs. 3.22–3.26; [S0]
     eq. 6).  ``par``: a row-parameter vector (indices :data:`P_XROW`, :data:`P_SIGN`, :data:`P_XIC`,
     :data:`P_AXOFF`)."""
     return par[P_XROW] + par[P_SIGN] * (par[P_XIC] + par[P_AXOFF])
@@ -175,7 +175,7 @@ def ball_speed_constants(par, omega_squared):
     Returns (c_g, c_f) [N, N]: c_g = J ω² d_m / D² and c_f = ½ m d_m ω², the force scales of the gyroscopic
     term G = M_g / D, M_g = J ω_R ω_m sin β, and of the centrifugal force F_c = ½ m d_m ω_m², which the ball
     kernel (:func:`bearingsim.statics._kernels.ball_eval`) multiplies by functions of Jones' speed ratios
-    (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3; seed 000 eqs. 11–12)."""
+    (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 3; [S0] eqs. 11–12)."""
     d = par[P_D]
     dm = par[P_DM]
     return par[P_JB] * omega_squared * dm / (d * d), 0.5 * par[P_MASS] * dm * omega_squared
