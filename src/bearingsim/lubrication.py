@@ -49,12 +49,14 @@ def _effective_modulus(bearing) -> float:
 
 
 def _contact_geometry(d, alpha, inner):
-    """Ball centre at (0, 0, 0) here; returns contact point offset and unit normal (race → ball)."""
+    """Contact-centre offset from the ball centre [m] and unit normal (race → ball) [-], in the
+    row frame of :func:`bearingsim.statics._kernels.kinematics` (x axial, r radial): outer
+    contact at +(D/2)(sin α_o, cos α_o), inner at −(D/2)(sin α_i, cos α_i)."""
     s, c = math.sin(alpha), math.cos(alpha)
     if inner:
-        n = np.array([-s, c, 0.0])
+        n = np.array([s, c, 0.0])
     else:
-        n = np.array([s, -c, 0.0])
+        n = np.array([-s, -c, 0.0])
     return -0.5 * d * n, n
 
 
@@ -62,33 +64,25 @@ def contact_at_jones_kinematics(lub, q, a, b, r_dev, d, dm, alpha_i, alpha_o, om
                                 inner, n_slices=10):
     """Kernel output (out[10]) and (u, s_centre) for one contact at Jones' ball kinematics.
 
-    Cage frame (rotates with ω_m about x): ball centre fixed at (0, d_m/2, 0); inner race
-    spins at ω − ω_m, outer at −ω_m about x; the ball at ω_R about the axis at pitch angle β
-    in the (x, r) plane.  The sign of ω_R and β is the one that makes the sliding at the
-    contact centres smallest (the kinematics are defined by pure rolling there).
+    Cage frame (rotates with ω_m about x), row frame of :func:`bearingsim.statics._kernels.kinematics`
+    (x axial, r radial, t = x × r along the orbit): ball centre fixed at (0, d_m/2, 0); inner race
+    spins at ω − ω_m, outer at −ω_m about x; the ball at Ω = ω_R (cos β, −sin β, 0), the pinned
+    convention of ``kinematics`` (ω, ω_m, ω_R signed as in :func:`bearingsim.statics.jones_harris.ball_table`).
+    With it the sliding at both contact centres is zero (Jones 1960 pure rolling) and the spin
+    about the normal of the controlling raceway is zero (tests/unit/test_kinematics_convention.py).
+    Returns out[10] of :func:`bearingsim.contact.slices.contact_traction`, the entraining speed
+    u [m/s] and the sliding speed at the contact centre [m/s].
     """
     cb = np.array([0.0, 0.5 * dm, 0.0])
     cr = np.zeros(3)
     wr_i = np.array([omega - omega_m, 0.0, 0.0])
     wr_o = np.array([-omega_m, 0.0, 0.0])
-    best = None
-    for sw in (1.0, -1.0):
-        for sb in (1.0, -1.0):
-            wb = sw * omega_r * np.array([math.cos(sb * beta), math.sin(sb * beta), 0.0])
-            tot = 0.0
-            for inn, al, wr in ((True, alpha_i, wr_i), (False, alpha_o, wr_o)):
-                off, n = _contact_geometry(d, al, inn)
-                p = cb + off
-                vs = np.cross(wb, p - cb) - np.cross(wr, p - cr)
-                vs -= (vs @ n) * n
-                tot += float(np.linalg.norm(vs))
-            if best is None or tot < best[0]:
-                best = (tot, wb)
-    wb = best[1]
+    wb = omega_r * np.array([math.cos(beta), -math.sin(beta), 0.0])
     alpha = alpha_i if inner else alpha_o
     off, n = _contact_geometry(d, alpha, inner)
     centre = cb + off
-    major = np.array([math.cos(alpha), math.sin(alpha), 0.0])
+    # major axis of the contact ellipse: in the (x, r) plane, perpendicular to n
+    major = np.array([-math.cos(alpha), math.sin(alpha), 0.0])
     if inner:
         major = -major
     wr = wr_i if inner else wr_o
@@ -126,7 +120,7 @@ def lubrication_report(result, lubricant, temperature: float, roughness: float =
     rows = result.rows_params
     e_eff = _effective_modulus(result.bearing)
     balls = result.balls
-    omega = abs(float(result.speed))
+    omega = float(result.speed)  # signed, as the ball speeds of ball_table
     out_balls = []
     packs: dict = {}
     eta0 = lub_obj.dynamic_viscosity(temperature)
@@ -276,4 +270,5 @@ def physical_fluid_curve(lubricant, temperature: float, load: float, rx: float, 
     return 0.0, mu_max, float(s[i]), mu_inf
 
 
-__all__ = ["physical_fluid_curve", "lubrication_report", "traction_vs_slide_roll", "plot_traction_curves", "contact_at_jones_kinematics"]
+__all__ = ["physical_fluid_curve", "lubrication_report", "traction_vs_slide_roll", "plot_traction_curves",
+           "contact_at_jones_kinematics"]

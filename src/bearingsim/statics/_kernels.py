@@ -104,6 +104,21 @@ def kinematics(si, ci, so, co, gam):
     C = cos α + tan β sin α (Jones 1960, eqs. for the ball speeds with the outer ring
     fixed; Harris & Kotzalas 2007 vol. 2 ch. 2; re-derived from pure rolling at both
     contact centres in docs/physics.md).
+
+    Sign convention (the one every user of these speeds applies as is; tested in
+    tests/unit/test_kinematics_convention.py and tests/validation/test_jones_kinematics.py):
+    the frame is the row's local frame (ξ = s (x − x_row) axial, r radial, t = ξ × r along
+    the orbit), turning with the cage at ω_m [rad/s] about the bearing axis x.  The contact angles
+    are those of ``ball_eval`` (sin α = axial / radial share of the groove-centre-to-ball-centre
+    line): the outer contact centre is at +(D/2)(sin α_o, cos α_o), the inner one at
+    −(D/2)(sin α_i, cos α_i) from the ball centre in (ξ, r).  The ball turns relative to the cage
+    with the angular velocity Ω = ω_R (cos β, −sin β, 0) [rad/s]: ω_R is signed (ω_R/ω < 0), β is
+    the pitch of the rotation axis from +ξ towards −r and does not depend on the sign of ω.
+    ω_m and ω_R are proportional to the signed inner-ring speed ω (positive about +x), for outer
+    and inner control alike.  With this Ω the sliding at both contact centres is zero and the
+    spin about the controlling raceway's normal is zero.  In the global frame (x, r) Ω is a
+    pseudo-vector: (ω_R cos β, −s ω_R sin β), so a mirrored row (s = −1) of a set keeps the
+    axial component and reverses the radial one (as ``dynamics.model`` builds its start state).
     """
     res = np.empty(6)
     for k in range(2):

@@ -18,6 +18,7 @@ import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
+from numba import njit
 
 from ..contact import hertz
 from ..errors import InputError, InputTypeError
@@ -46,6 +47,36 @@ def _free_ring(ballout: np.ndarray, rows: np.ndarray, scale: float) -> bool:
     zs = rows[:, kn.P_Z].astype(int)
     qi = np.concatenate([ballout[r, :z, 2] for r, z in enumerate(zs)])
     return not bool(np.any(qi > TOL_VERIFY * scale))
+
+
+@njit(cache=True, error_model="numpy")
+def _row_loads(rows, qv, ballout, lam, out):
+    """out[r] ← the load row r carries (Fa, Fy, Fz, My, Mz) about the kernel origin [N, N·m]: minus the sum of
+    its balls' generalized forces on the inner ring, read from the solve's ball table ``ballout`` and control
+    state ``lam`` (the terms and order of :func:`._kernels.ring_assemble`: (F_x, F_r) of the inner contact from
+    Q_i, α_i and the gyroscopic share λ_i G, ball-model eqs. in that module), without re-solving any ball."""
+    for r in range(rows.shape[0]):
+        par = rows[r]
+        z = int(par[kn.P_Z])
+        s = par[kn.P_SIGN]
+        ric = par[kn.P_RIC]
+        xg = kn.inner_groove_centre_axial(par)
+        ta1 = np.zeros(5)
+        ta2 = np.zeros(5)
+        gw = np.zeros(5)
+        for k in range(5):
+            out[r, k] = 0.0
+        for j in range(z):
+            psi = par[kn.P_PSI0] + 2.0 * math.pi * j / z
+            kn._groove_offsets(par, s, ric, xg, math.cos(psi), math.sin(psi), qv, ta1, ta2, gw)
+            bo = ballout[r, j]
+            lam_i, _lam_o = kn.control_weights(lam[r, j])
+            qi, g, si, ci = bo[2], bo[6], bo[8], bo[9]
+            fx = qi * si + lam_i * g * ci
+            fr = qi * ci - lam_i * g * si
+            mpsi = lam_i * g * par[kn.P_GRI]
+            for k in range(5):
+                out[r, k] += fx * ta1[k] + fr * ta2[k] - mpsi * gw[k]
 
 
 def _number(value, field: str) -> float:
@@ -102,6 +133,15 @@ class StaticResult:
     #: plausibility warnings (:func:`bearingsim.limits.static_warnings`), empty when none
     warnings: list = field(default_factory=list)
     status_code: int = 0  #: kernel status (keys of :data:`STATUS`)
+    #: per row: the load it carries (Fa, Fy, Fz, My, Mz) about the kernel origin [N, N·m], shape (n_rows, 5),
+    #: summed from the solve's own ball forces (:func:`_row_loads`)
+    row_forces: np.ndarray = field(repr=False, default=None)
+    #: ISO 281 basic rating life L10 [10⁶ rev] (:func:`bearingsim.life.iso281_life`), None when not applicable
+    basic_rating_life: float | None = None
+    #: ISO/TS 16281 reference rating life L10r [10⁶ rev] (:func:`bearingsim.life.reference_rating_life`)
+    reference_rating_life: float | None = None
+    #: per-row results of a bearing system (:func:`bearingsim.statics.arrangements.row_results`), else None
+    rows: list | None = field(repr=False, default=None)
 
     @property
     def clearance(self) -> dict:
@@ -153,14 +193,10 @@ class StaticResult:
             "warnings": list(self.warnings),
             "balls": balls,
         }
-        from ..life import iso281_life, reference_rating_life
-
-        out["basic_rating_life_million_revolutions"] = iso281_life(self)
-        out["reference_rating_life_million_revolutions"] = reference_rating_life(self)
-        if hasattr(self.bearing, "rows"):
-            from .arrangements import row_results
-
-            out["rows"] = row_results(self)
+        out["basic_rating_life_million_revolutions"] = self.basic_rating_life
+        out["reference_rating_life_million_revolutions"] = self.reference_rating_life
+        if self.rows is not None:
+            out["rows"] = self.rows
         return _json_safe(out)
 
     @property
@@ -470,8 +506,24 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
                        status=STATUS.get(status, f"status {status}"), iterations=int(its), residual=float(rn),
                        displacement=q.copy(), stiffness=kmat.copy(), balls=balls, rows_params=rows,
                        status_code=int(status))
+    res.row_forces = np.zeros((rows.shape[0], 5))
+    _row_loads(rows, q, ballout, lam, res.row_forces)
     res.warnings = static_warnings(res)
+    _report(res)
     return res
+
+
+def _report(res: StaticResult) -> None:
+    """The report step of :func:`solve`: the lives and (for a bearing system) the per-row results, computed
+    once from the solution so that :meth:`StaticResult.to_dict` only serialises."""
+    from ..life import iso281_life, reference_rating_life
+
+    res.basic_rating_life = iso281_life(res)
+    res.reference_rating_life = reference_rating_life(res)
+    if hasattr(res.bearing, "rows"):
+        from .arrangements import row_results
+
+        res.rows = row_results(res)
 
 
 def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.ndarray, omega: float) -> dict:
@@ -479,7 +531,9 @@ def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.nd
 
     ``omega`` is the signed inner-ring speed [rad/s]: the ball speeds are proportional to it (Jones'
     relations are linear in ω), so a negative speed gives negative orbital speeds (the cage turns with
-    the shaft) and the spin reverses with it."""
+    the shaft) and the spin reverses with it.  ``orbital_speed_rad_s`` ω_m, ``spin_speed_rad_s`` ω_R and
+    ``pitch_angle_rad`` β follow the sign convention stated in :func:`._kernels.kinematics`: relative
+    to the cage, the ball turns at ω_R (cos β, −sin β) in the row's (axial ξ, radial r) frame."""
     cols = {k: [] for k in ("row", "azimuth_rad", "inner_contact_angle_rad", "outer_contact_angle_rad",
                             "inner_load_N", "outer_load_N", "inner_max_pressure_Pa", "outer_max_pressure_Pa",
                             "inner_approach_m", "outer_approach_m", "x1_m", "x2_m", "centrifugal_force_N",
