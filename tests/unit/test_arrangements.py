@@ -200,3 +200,25 @@ def test_arrangement_reader_lives_in_io_and_old_names_forward():
     assert bio.arrangement_from_dict is reader.arrangement_from_dict
     with pytest.raises(AttributeError):
         ar_mod.no_such_name  # noqa: B018
+
+
+@pytest.mark.parametrize("control", ["outer", "inner", "auto"])
+@pytest.mark.parametrize("speed_rpm", [0.0, 8000.0])
+@pytest.mark.parametrize("which", ["hub", "db", "dt"])
+def test_row_forces_of_the_solve_equal_one_kernel_pass_per_row(row, which, speed_rpm, control):
+    """The row loads stored by solve (summed from its own ball table) are those of re-running
+    ring_assemble over each row's balls at the solution (the pre-refactor bookkeeping), to round-off."""
+    system, loads = {
+        "hub": (load_bearing("hub-seed001"), jh.Loads(fa=945.0, fr_y=3268.0, m_z=300.0)),
+        "db": (ar.make_system(row, "DB", 0.018, preload=300.0), jh.Loads(fa=800.0, fr_y=1500.0, m_y=20.0)),
+        "dt": (ar.make_system(row, "DT", 0.018), jh.Loads(fa=2000.0, fr_y=500.0)),
+    }[which]
+    res = jh.solve(system, loads, speed_rpm * np.pi / 30.0, control=control)
+    assert res.converged, res.status
+    kernel = np.array(ar._row_forces(system, res.displacement, res.speed, res))
+    assert res.row_forces.shape == (len(system.rows), 5)
+    np.testing.assert_allclose(res.row_forces, kernel, rtol=0, atol=1e-12 * np.max(np.abs(kernel)))
+    # and row_results reports exactly the stored forces
+    rr = ar.row_results(res)
+    np.testing.assert_array_equal([[r["loads"]["fa_N"], r["loads"]["fr_y_N"], r["loads"]["fr_z_N"]] for r in rr],
+                                  res.row_forces[:, :3])

@@ -441,3 +441,32 @@ def test_zero_clearance_radial_load_stribeck(deep_groove_zero_clearance):
     assert np.all(q[~loaded] == 0.0)
     assert_allclose(q.max() * b.ball_count / fr, 4.37, rtol=2e-3,
                     err_msg="NSK CAT. E728g sec. 5.1 eq. 4: Qmax = 4.37 Fr/(Z cos a), point contact, e = 0.5")
+
+
+def test_to_dict_only_serialises(monkeypatch):
+    """Lives and per-row results are computed once in solve; to_dict re-runs no kernel and no life model."""
+    import dataclasses
+
+    from bearingsim import life
+    from bearingsim.io import load_bearing
+    from bearingsim.statics import _kernels as kn
+    from bearingsim.statics import arrangements as ar
+
+    hub = dataclasses.replace(load_bearing("hub-seed001"), dynamic_load_rating=40e3)
+    res = solve(hub, Loads(fa=945.0, fr_y=3268.0, m_z=300.0), 900.0)
+    assert res.converged
+    l10, l10r = life.iso281_life(res), life.reference_rating_life(res)
+    assert l10 > 0 and l10r > 0
+    rows = json.loads(json.dumps(ar.row_results(res)))
+    assert len(rows) == 2 and all(len(r["balls"]) == hub.rows[k].bearing.ball_count for k, r in enumerate(rows))
+
+    def forbidden(*args, **kwargs):
+        raise AssertionError("to_dict recomputed a result")
+
+    for mod, name in ((kn, "ring_assemble"), (ar, "_row_forces"), (ar, "row_results"), (ar, "row_summaries"),
+                      (life, "iso281_life"), (life, "reference_rating_life")):
+        monkeypatch.setattr(mod, name, forbidden)
+    d = json.loads(json.dumps(res.to_dict()))
+    assert d["basic_rating_life_million_revolutions"] == l10
+    assert d["reference_rating_life_million_revolutions"] == l10r
+    assert d["rows"] == rows

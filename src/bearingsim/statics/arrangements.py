@@ -403,7 +403,20 @@ def row_results(result) -> list[dict]:
     moments about the row plane; fa positive along +x), ``axial_load_N`` (positive when the row is
     compressed in its own direction), ``displacement`` (axial, y, z at the row plane, tilts),
     ``loaded_balls``, ``lifted_off`` (True when no ball of the row carries load), and ``balls``.
+    The row figures are those :func:`~bearingsim.statics.jones_harris.solve` stored on the result
+    (``result.rows``); this adds each row's ball table.
     """
+    from .jones_harris import ball_dicts
+
+    rows = result.rows if getattr(result, "rows", None) is not None else row_summaries(result)
+    b = result.balls
+    return [{**d, "balls": ball_dicts(b, np.nonzero(b["row"] == d["row"])[0])} for d in rows]
+
+
+def row_summaries(result) -> list[dict]:
+    """The figures of :func:`row_results` without the per-row ball tables (the report step of
+    :func:`~bearingsim.statics.jones_harris.solve`): the row loads are ``result.row_forces``, summed in the
+    solve from its own ball forces (re-computed with one kernel pass per row only for a result without them)."""
     system = result.bearing
     if isinstance(system, BearingSystem):
         rows = system.rows
@@ -412,17 +425,18 @@ def row_results(result) -> list[dict]:
         rows = (Row(system),)
         x0 = 0.0
     q = np.asarray(result.displacement, dtype=float)
-    forces = _row_forces(system, q, result.speed, result)
+    forces = result.row_forces if getattr(result, "row_forces", None) is not None \
+        else _row_forces(system, q, result.speed, result)
     out = []
     b = result.balls
+    rowof, qi, pi, po = b["row"], b["inner_load_N"], b["inner_max_pressure_Pa"], b["outer_max_pressure_Pa"]
     for k, (row, f) in enumerate(zip(rows, forces)):
         xk = row.position - x0  # row plane from the kernel origin (the load point)
-        sel = b["row"] == k
-        balls = [{key: (int(v[j]) if key in ("row", "inner_control") else float(v[j])) for key, v in b.items()}
-                 for j in np.nonzero(sel)[0]]
+        sel = rowof == k
         # at speed the outer contacts stay loaded by the centrifugal force: a row lifts off when no
         # ball touches the inner raceway
-        nloaded = int(np.sum(b["inner_load_N"][sel] > 0))
+        nloaded = int(np.count_nonzero(qi[sel] > 0))
+        has_balls = bool(sel.any())
         out.append({
             "row": k,
             "bearing": row.bearing.name,
@@ -437,9 +451,8 @@ def row_results(result) -> list[dict]:
                              "gamma_y_rad": float(q[3]), "gamma_z_rad": float(q[4])},
             "loaded_balls": nloaded,
             "lifted_off": nloaded == 0,
-            "max_inner_pressure_Pa": float(np.max(b["inner_max_pressure_Pa"][sel])) if sel.any() else 0.0,
-            "max_outer_pressure_Pa": float(np.max(b["outer_max_pressure_Pa"][sel])) if sel.any() else 0.0,
-            "balls": balls,
+            "max_inner_pressure_Pa": float(pi[sel].max()) if has_balls else 0.0,
+            "max_outer_pressure_Pa": float(po[sel].max()) if has_balls else 0.0,
         })
     return out
 

@@ -140,7 +140,9 @@ class StaticResult:
     basic_rating_life: float | None = None
     #: ISO/TS 16281 reference rating life L10r [10⁶ rev] (:func:`bearingsim.life.reference_rating_life`)
     reference_rating_life: float | None = None
-    #: per-row results of a bearing system (:func:`bearingsim.statics.arrangements.row_results`), else None
+    #: per-row figures of a bearing system (:func:`bearingsim.statics.arrangements.row_summaries`: loads,
+    #: displacements at the row plane, loaded balls, peak pressures; :func:`~.arrangements.row_results` and
+    #: :meth:`to_dict` add each row's ball table), else None
     rows: list | None = field(repr=False, default=None)
 
     @property
@@ -167,10 +169,7 @@ class StaticResult:
 
     def to_dict(self) -> dict:
         """JSON-ready dictionary in SI units (the ``static --json`` schema)."""
-        b = self.balls
-        balls = []
-        for j in range(len(b["azimuth_rad"])):
-            balls.append({k: (int(v[j]) if k in ("row", "inner_control") else float(v[j])) for k, v in b.items()})
+        balls = ball_dicts(self.balls)
         out = {
             "bearing": getattr(self.bearing, "name", str(self.bearing)),
             "converged": bool(self.converged),
@@ -196,7 +195,8 @@ class StaticResult:
         out["basic_rating_life_million_revolutions"] = self.basic_rating_life
         out["reference_rating_life_million_revolutions"] = self.reference_rating_life
         if self.rows is not None:
-            out["rows"] = self.rows
+            rowof = self.balls["row"]
+            out["rows"] = [{**d, "balls": [balls[j] for j in np.nonzero(rowof == d["row"])[0]]} for d in self.rows]
         return _json_safe(out)
 
     @property
@@ -212,6 +212,15 @@ class StaticResult:
         if not loaded.any():
             return float(np.mean(w)) if len(w) else 0.0
         return float(np.mean(w[loaded]))
+
+
+def ball_dicts(balls: dict, index=None) -> list[dict]:
+    """The ball table ``balls`` (one array per quantity) as one dict per ball (JSON-ready floats and ints),
+    for all balls or those at the positions ``index``."""
+    if index is None:
+        index = range(len(balls["azimuth_rad"]))
+    return [{k: (int(v[j]) if k in ("row", "inner_control") else float(v[j])) for k, v in balls.items()}
+            for j in index]
 
 
 def _json_safe(v):
@@ -521,9 +530,9 @@ def _report(res: StaticResult) -> None:
     res.basic_rating_life = iso281_life(res)
     res.reference_rating_life = reference_rating_life(res)
     if hasattr(res.bearing, "rows"):
-        from .arrangements import row_results
+        from .arrangements import row_summaries
 
-        res.rows = row_results(res)
+        res.rows = row_summaries(res)
 
 
 def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.ndarray, omega: float) -> dict:
