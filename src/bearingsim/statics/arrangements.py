@@ -209,7 +209,7 @@ class BearingSystem:
         res = solve(self, Loads(), 0.0)
         if not res.converged:
             return np.full(len(self.rows), np.nan)
-        return self.row_axial_loads(res.displacement)
+        return np.array([rl[0] * r.orientation for rl, r in zip(res.row_forces, self.rows)])
 
     def _check_preload_pressure(self):
         if not any(r.axial_offset > 0 for r in self.rows):
@@ -277,7 +277,8 @@ def offset_for_preload(bearing_rows, force: float) -> float:
         if not res.converged:
             raise InputError("preload", f"no equilibrium at rest with an offset of {e * 1e6:.4g} µm",
                              "check the row geometry and the preload")
-        fa = sys_.row_axial_loads(res.displacement)
+        # the row loads the solve summed from its own balls (row_axial_loads at res.displacement, no re-run)
+        fa = [rl[0] * r.orientation for rl, r in zip(res.row_forces, sys_.rows)]
         return float(sum(f for f, r in zip(fa, bearing_rows) if r.orientation > 0))
 
     # bracket: from contact at the clearance upwards, doubling from the single-row thrust deflection at
