@@ -430,14 +430,17 @@ def row_summaries(result) -> list[dict]:
         else _row_forces(system, q, result.speed, result)
     out = []
     b = result.balls
-    rowof, qi, pi, po = b["row"], b["inner_load_N"], b["inner_max_pressure_Pa"], b["outer_max_pressure_Pa"]
-    for k, (row, f) in enumerate(zip(rows, forces)):
+    rowof, pi, po = b["row"], b["inner_max_pressure_Pa"], b["outer_max_pressure_Pa"]
+    # at speed the outer contacts stay loaded by the centrifugal force: a row lifts off when no ball touches
+    # the inner raceway
+    nball = np.bincount(rowof, minlength=len(rows)).tolist()
+    nload = np.bincount(rowof[b["inner_load_N"] > 0], minlength=len(rows)).tolist()
+    q = q.tolist()  # Python floats (the same doubles: the arithmetic below gives the same bits, faster)
+    for k, (row, f) in enumerate(zip(rows, np.asarray(forces, dtype=float).tolist())):
         xk = row.position - x0  # row plane from the kernel origin (the load point)
-        sel = rowof == k
-        # at speed the outer contacts stay loaded by the centrifugal force: a row lifts off when no
-        # ball touches the inner raceway
-        nloaded = int(np.count_nonzero(qi[sel] > 0))
-        has_balls = bool(sel.any())
+        has_balls = nball[k] > 0
+        sel = rowof == k if has_balls else None
+        nloaded = nload[k]
         out.append({
             "row": k,
             "bearing": row.bearing.name,
