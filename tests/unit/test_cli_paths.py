@@ -227,3 +227,13 @@ def test_writing_maps_only_errors_about_the_output(tmp_path):
     with pytest.raises(FileNotFoundError):
         with writing("--out", out):
             raise FileNotFoundError(errno.ENOENT, "No such file or directory", str(tmp_path / "case.toml"))
+
+
+def test_bad_bearing_is_refused_before_any_output_folder_is_made(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text('name = "x"\n', encoding="utf-8")
+    out = tmp_path / "new" / "sub" / "m.nc"
+    r = subprocess.run(["bearingsim", "map", str(bad), "--fr", "100:200:2", "--out", str(out)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1 and "ball_diameter" in r.stderr, r.stderr
+    assert not (tmp_path / "new").exists(), "a refused map must not leave folders behind"

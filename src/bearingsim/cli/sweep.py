@@ -64,6 +64,9 @@ def map_cmd(
     def opt(v):
         return 0.0 if v is None else v
 
+    from ..io import load_bearing
+
+    load_bearing(bearing)  # a bad bearing file is refused before any output folder is created
     # both outputs checked (folders created) before the map is computed
     if out is not None:
         out = output_file(out, "--out", renamed=True)
