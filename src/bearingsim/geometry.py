@@ -38,6 +38,7 @@ bore, outside_diameter    ≥ 0 (0 = unknown); bore < d_m−D, the rings must ho
                           OD > d_m+D
 width                     ≥ 0 (0 = unknown), ≥ D if given  the rings enclose the balls
 dynamic_load_rating C     ≥ 0 (0 = unknown), finite       a rating is a positive force
+limiting_speed            ≥ 0 (0 = unknown), finite       a speed rating is positive (file: with its unit, rpm)
 Young's modulus E         1 GPa – 1000 GPa                polymers (~2 GPa) to tungsten carbide (~600 GPa)
 Poisson's ratio ν         0 ≤ ν < 0.5                     isotropic engineering solids
 density ρ                 500 – 25 000 kg/m³              polymers to tungsten carbide (15 600 kg/m³)
@@ -69,7 +70,8 @@ LIMITS = {
 }
 
 _FLOAT_FIELDS = ("ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity", "contact_angle",
-                 "diametral_clearance", "bore", "outside_diameter", "width", "dynamic_load_rating")
+                 "diametral_clearance", "bore", "outside_diameter", "width", "dynamic_load_rating",
+                 "limiting_speed")
 
 
 def _real(value, name: str) -> float:
@@ -99,6 +101,8 @@ class BallBearing:
     ball_material, ring_material : Material
     bore, outside_diameter, width : float  [m]  boundary dimensions (0 when unknown)
     dynamic_load_rating : float  [N]  basic dynamic load rating C (0 when unknown)
+    limiting_speed : float  [rad/s]  the manufacturer's limiting (mechanical) speed (0 when unknown): results above
+        it carry a warning (:mod:`bearingsim.limits`)
     notes : dict  source of every number
     """
 
@@ -117,6 +121,7 @@ class BallBearing:
     outside_diameter: float = 0.0
     width: float = 0.0
     dynamic_load_rating: float = 0.0
+    limiting_speed: float = 0.0
     notes: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):
@@ -163,7 +168,7 @@ class BallBearing:
             raise InputError("contact_angle", f"must lie in [0, 89) deg, got {math.degrees(self.contact_angle)!r} deg",
                              'e.g. "15 deg" for a spindle bearing')
         for fname, what in (("bore", "a bore"), ("outside_diameter", "an outside diameter"), ("width", "a width"),
-                            ("dynamic_load_rating", "a load rating")):
+                            ("dynamic_load_rating", "a load rating"), ("limiting_speed", "a limiting speed")):
             v = getattr(self, fname)
             if not (math.isfinite(v) and v >= 0):
                 raise InputError(fname, f"must be positive (or 0 when unknown), got {v!r}",

@@ -68,7 +68,7 @@ def limiting_speed(bearing) -> float:
     v = getattr(bearing, "limiting_speed", 0.0) or 0.0
     rows = getattr(bearing, "rows", None)
     if not v and rows:
-        vals = [getattr(r, "limiting_speed", 0.0) or 0.0 for r in rows]
+        vals = [getattr(getattr(r, "bearing", r), "limiting_speed", 0.0) or 0.0 for r in rows]
         vals = [x for x in vals if x > 0]
         v = min(vals) if vals else 0.0
     try:

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 
 from bearingsim import limits
+from bearingsim.errors import InputError
 from bearingsim.statics import jones_harris as jh
 from bearingsim.sweep import map_grid
 
@@ -104,3 +105,30 @@ def test_cli_static_prints_and_writes_the_warnings():
     txt = subprocess.run(["bearingsim", "static", "skf-7011-cdga-hc", "--fa", "1e9 N"], capture_output=True,
                          text=True, timeout=300)
     assert "warning:" in txt.stdout and "4.2 GPa" in txt.stdout
+
+
+def test_limiting_speed_from_the_bearing_file_warns_in_rows_and_sets(tmp_path):
+    """`limiting_speed` in a bearing file (a unit required) feeds the speed warning, also through a DB set."""
+    from bearingsim.io import load_bearing
+    from bearingsim.statics import jones_harris as jh
+
+    row = tmp_path / "row.toml"
+    row.write_text('name = "r"\ntype = "angular_contact"\nball_diameter = "10.319 mm"\nball_count = 21\n'
+                   'pitch_diameter = "72.5 mm"\ninner_conformity = 0.52\nouter_conformity = 0.53\n'
+                   'contact_angle = "15 deg"\nball_material = "bearing_steel"\nring_material = "bearing_steel"\n'
+                   'limiting_speed = "8000 rpm"\n', encoding="utf-8")
+    b = load_bearing(row)
+    assert b.limiting_speed == pytest.approx(8000 * math.pi / 30, rel=1e-12)
+    fast = jh.solve(b, jh.Loads(fa=2000.0), 9000 * math.pi / 30)
+    slow = jh.solve(b, jh.Loads(fa=2000.0), 7000 * math.pi / 30)
+    assert fast.converged and any("limiting speed" in w for w in fast.warnings), fast.warnings
+    assert not any("limiting speed" in w for w in slow.warnings)
+    pair = tmp_path / "pair.toml"
+    pair.write_text(f'name = "p"\ntype = "bearing_set"\narrangement = "DB"\nrow = "{row.as_posix()}"\n'
+                    'row_spacing = "18 mm"\npreload = "500 N"\n', encoding="utf-8")
+    res = jh.solve(load_bearing(pair), jh.Loads(fa=500.0), 9000 * math.pi / 30)
+    assert any("limiting speed" in w for w in res.warnings), res.warnings
+    bare = row.read_text(encoding="utf-8").replace('"8000 rpm"', "8000")
+    row.write_text(bare, encoding="utf-8")
+    with pytest.raises(InputError, match="limiting_speed"):
+        load_bearing(row)

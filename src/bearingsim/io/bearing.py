@@ -25,7 +25,7 @@ _BEARING_KEYS = {
     "name", "type", "ball_diameter", "ball_count", "pitch_diameter", "inner_groove_radius",
     "outer_groove_radius", "inner_conformity", "outer_conformity", "contact_angle",
     "diametral_clearance", "ball_material", "ring_material", "bore", "outside_diameter", "width",
-    "dynamic_load_rating", "description", "sources",
+    "dynamic_load_rating", "limiting_speed", "description", "sources",
 }
 
 
@@ -193,7 +193,8 @@ def _bearing_from_dict(data: dict) -> BallBearing:
         ball_material=_material(data["ball_material"], "ball_material"),
         ring_material=_material(data["ring_material"], "ring_material"),
         diametral_clearance=pd, bore=opt("bore", "length"), outside_diameter=opt("outside_diameter", "length"),
-        width=opt("width", "length"), dynamic_load_rating=opt("dynamic_load_rating", "force"), notes=notes,
+        width=opt("width", "length"), dynamic_load_rating=opt("dynamic_load_rating", "force"),
+        limiting_speed=opt("limiting_speed", "speed"), notes=notes,
     )
 
 
