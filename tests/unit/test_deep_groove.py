@@ -46,12 +46,12 @@ def deep_groove(name, pd_um, fi=0.52, fo=0.53, z=None):
                               "ball_material": "bearing_steel", "ring_material": "bearing_steel"})
 
 
-def planar_radial(b, fr, omega=0.0, angle=0.0):
-    """δr [m] of the planar rigid-ring problem above for a load at ``angle`` from ball 0 (independent of the
-    kernels: numpy + brentq)."""
+def ball_load_of_gap(b, omega=0.0):
+    """Q_i [N] of one ball as a function of its radial gap closure δ [m] in the planar problem: inner and outer
+    Hertz contacts in series, Q_o = Q_i + F_c with the centrifugal force F_c = ½ m d_m ω_m² and ω_m = ½(1 − D/d_m)ω
+    (Harris & Kotzalas 2007 vol. 2 ch. 3; contact angle 0); δ = (Q_i/K_i)^⅔ + (Q_o/K_o)^⅔."""
     ki, ko, kn_ = b.contact_constants
-    z, d, dm, pd = b.ball_count, b.ball_diameter, b.pitch_diameter, b.diametral_clearance
-    psi = 2 * math.pi * np.arange(z) / z - angle
+    d, dm = b.ball_diameter, b.pitch_diameter
     wm = 0.5 * (1 - d / dm) * omega
     fc = 0.5 * b.ball_mass * dm * wm**2
     d0 = (fc / ko) ** (2 / 3)
@@ -62,8 +62,17 @@ def planar_radial(b, fr, omega=0.0, angle=0.0):
         if fc == 0:
             return kn_ * gap**1.5
         g = lambda q: (q / ki) ** (2 / 3) + ((q + fc) / ko) ** (2 / 3) - gap  # noqa: E731
-        hi = kn_ * gap**1.5 * 2 + 1.0
-        return brentq(g, 0.0, hi, xtol=1e-300, rtol=1e-15)
+        return brentq(g, 0.0, kn_ * gap**1.5 * 2 + 1.0, xtol=1e-300, rtol=1e-15)
+
+    return q_ball
+
+
+def planar_radial(b, fr, omega=0.0, angle=0.0):
+    """δr [m] of the planar rigid-ring problem above for a load at ``angle`` from ball 0 (independent of the
+    kernels: numpy + brentq)."""
+    z, pd = b.ball_count, b.diametral_clearance
+    psi = 2 * math.pi * np.arange(z) / z - angle
+    q_ball = ball_load_of_gap(b, omega)
 
     def total(dr):
         return sum(q_ball(dr * c - pd / 2) * c for c in np.cos(psi)) - fr
@@ -78,21 +87,10 @@ def planar_radial_2d(b, fy, fz, omega=0.0):
     """(δy, δz) [m] of the planar rigid-ring problem for a load in any radial direction: the two balances
     Σ Q_j (cos ψ_j, sin ψ_j) = (F_y, F_z) (a load between two balls moves the ring slightly off its own
     direction), solved by Newton with a finite-difference Jacobian from the 1-D solution along the load."""
-    ki, ko, kn_ = b.contact_constants
-    z, d, dm, pd = b.ball_count, b.ball_diameter, b.pitch_diameter, b.diametral_clearance
+    z, pd = b.ball_count, b.diametral_clearance
     psi = 2 * math.pi * np.arange(z) / z
     cs = np.column_stack([np.cos(psi), np.sin(psi)])
-    wm = 0.5 * (1 - d / dm) * omega
-    fc = 0.5 * b.ball_mass * dm * wm**2
-    d0 = (fc / ko) ** (2 / 3)
-
-    def q_ball(gap):
-        if gap <= d0:
-            return 0.0
-        if fc == 0:
-            return kn_ * gap**1.5
-        g = lambda q: (q / ki) ** (2 / 3) + ((q + fc) / ko) ** (2 / 3) - gap  # noqa: E731
-        return brentq(g, 0.0, kn_ * gap**1.5 * 2 + 1.0, xtol=1e-300, rtol=1e-15)
+    q_ball = ball_load_of_gap(b, omega)
 
     def resid(u):
         q = np.array([q_ball(g) for g in cs @ u - pd / 2])
