@@ -85,3 +85,21 @@ def write_toml(tmp_path):
         return p
 
     return _write
+
+
+@pytest.fixture(scope="session")
+def hub():
+    """The double-row hub unit of Sakaguchi & Shibutani [S1] (catalogue)."""
+    from bearingsim.io import load_bearing
+
+    return load_bearing("hub-seed001")
+
+
+@pytest.fixture(scope="session")
+def hub_study(hub):
+    """The hub unit's quasi-static tilt–moment study at 13 moments, −600 … 600 N·m (studies/hub_static.py)."""
+    import numpy as np
+
+    from bearingsim.studies import hub_static as hs
+
+    return hs.run_study(hub, np.linspace(-600, 600, 13))

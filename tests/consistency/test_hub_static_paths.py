@@ -6,35 +6,23 @@ compliance from implicit differentiation must equal the slope of the curve (a co
 """
 
 import numpy as np
-import pytest
 
-from bearingsim.io import load_bearing
 from bearingsim.studies import hub_static as hs
 
 
-@pytest.fixture(scope="module")
-def hub():
-    return load_bearing("hub-seed001")
-
-
-@pytest.fixture(scope="module")
-def study(hub):
-    return hs.run_study(hub, np.linspace(-600, 600, 13))
-
-
-def test_table2_load_ranges_are_reproduced(study):
-    np.testing.assert_allclose([study.fa[0], study.fa[-1]], [-1890.0, 1890.0], rtol=1e-12,
+def test_table2_load_ranges_are_reproduced(hub_study):
+    np.testing.assert_allclose([hub_study.fa[0], hub_study.fa[-1]], [-1890.0, 1890.0], rtol=1e-12,
                                err_msg="seed 001 Table 2: axial load -1,890 ... 1,890 N")
-    np.testing.assert_allclose([study.fr[0], study.fr[-1]], [1820.0, 3750.0], rtol=1e-12,
+    np.testing.assert_allclose([hub_study.fr[0], hub_study.fr[-1]], [1820.0, 3750.0], rtol=1e-12,
                                err_msg="seed 001 Table 2: radial load 1,820 ... 3,750 N")
-    np.testing.assert_allclose(study.bearing.load_point, 0.0104, rtol=1e-12,
+    np.testing.assert_allclose(hub_study.bearing.load_point, 0.0104, rtol=1e-12,
                                err_msg="seed 001 Table 2: load acting point 10.4 mm")
-    assert study.converged.all()
+    assert hub_study.converged.all()
 
 
-def test_all_points_converge_at_vehicle_speeds(hub, study):
+def test_all_points_converge_at_vehicle_speeds(hub, hub_study):
     for v in (10.0, 50.0):
-        r = hs.run_study(hub, study.moment, speed=hs.vehicle_speed_to_shaft(v))
+        r = hs.run_study(hub, hub_study.moment, speed=hs.vehicle_speed_to_shaft(v))
         assert r.converged.all()
 
 

@@ -10,43 +10,31 @@ is checked against a closed form built from the thrust model (independent of the
 import math
 
 import numpy as np
-import pytest
 
-from bearingsim.io import load_bearing
 from bearingsim.statics import jones_harris as jh
 from bearingsim.statics.axial import solve_thrust
 from bearingsim.studies import hub_static as hs
 
 
-@pytest.fixture(scope="module")
-def hub():
-    return load_bearing("hub-seed001")
-
-
-@pytest.fixture(scope="module")
-def study(hub):
-    return hs.run_study(hub, np.linspace(-600, 600, 13))
-
-
-def test_tilt_inside_fig6_range_and_monotonic(study):
-    deg = np.degrees(study.tilt)
+def test_tilt_inside_fig6_range_and_monotonic(hub_study):
+    deg = np.degrees(hub_study.tilt)
     assert np.all(np.diff(deg) > 0)
     # seed 001 Fig. 6: inclining angle axis -0.10 ... 0.10 deg for moments -0.8 ... 0.8 kN m
     assert 0.02 < abs(deg[0]) < 0.10, "seed 001 Fig. 6 tilt range at -0.6 kN m"
     assert 0.02 < abs(deg[-1]) < 0.10, "seed 001 Fig. 6 tilt range at +0.6 kN m"
-    assert not study.lifted_off.any()
+    assert not hub_study.lifted_off.any()
 
 
-def test_moment_stiffness_independent_of_vehicle_speed(hub, study):
+def test_moment_stiffness_independent_of_vehicle_speed(hub, hub_study):
     for v in (10.0, 50.0, 100.0):
-        r = hs.run_study(hub, study.moment, speed=hs.vehicle_speed_to_shaft(v))
+        r = hs.run_study(hub, hub_study.moment, speed=hs.vehicle_speed_to_shaft(v))
         ok = r.ring_converged
         assert ok.all()
         slope_v = np.polyfit(r.moment[ok], r.tilt[ok], 1)[0]
-        slope_0 = np.polyfit(study.moment[ok], study.tilt[ok], 1)[0]
+        slope_0 = np.polyfit(hub_study.moment[ok], hub_study.tilt[ok], 1)[0]
         np.testing.assert_allclose(slope_v, slope_0, rtol=0.01,
                                    err_msg=f"seed 001 section 4: compliance at {v} km/h equals the non-rotating one")
-        np.testing.assert_allclose(r.tilt[ok], study.tilt[ok], rtol=0.01, atol=1e-3 * np.abs(study.tilt).max())
+        np.testing.assert_allclose(r.tilt[ok], hub_study.tilt[ok], rtol=0.01, atol=1e-3 * np.abs(hub_study.tilt).max())
 
 
 def test_moment_stiffness_at_rest_closed_form(hub):
