@@ -1,0 +1,429 @@
+"""Friction torque and heat of a ball bearing at an operating point: two models.
+
+1. **Palmgren** (Palmgren 1959, *Ball and Roller Bearing Engineering*, 3rd ed., as given by
+   Harris & Kotzalas 2007, *Rolling Bearing Analysis* 5th ed.) — the classical empirical model:
+
+   * load term (Harris & Kotzalas eqs. for M_l, table of z, y):
+     ``M_l = f1 · P1 · d_m``,  ``f1 = z (P0/C0)^y`` with z, y per bearing type
+     (deep groove: z = 0.0004–0.0006 (mid value 0.0005 used), y = 0.55; angular contact:
+     z = 0.001, y = 0.33); P1 per type: deep groove ``P1 = max(3 Fa − 0.1 Fr, Fr)``,
+     angular contact ``P1 = max(0.9 Fa cot α − 0.1 Fr, Fr)``; P0 the static equivalent load of
+     ISO 76 (deep groove X0 = 0.6, Y0 = 0.5; angular contact X0 = 0.5, Y0 from the ISO 76 table
+     by α), C0 the static load rating;
+   * viscous term: ``M_v = 1e-7 f0 (ν n)^(2/3) d_m³`` [N·mm, ν in mm²/s, n in rpm, d_m in mm]
+     for ν n ≥ 2000, else ``M_v = 160e-7 f0 d_m³``; f0 per bearing type and lubrication
+     method (table :data:`PALMGREN_F0`).
+
+   Palmgren's model is a catalogue-accuracy estimate; Harris & Kotzalas present it for
+   bearings at moderate speed; at high speed (jet lubrication, d_m n > 10⁶) it was fitted to
+   few data.
+2. **Physics-based** — our own contact models at Jones' kinematics (the ball speeds of the
+   quasi-static solution, :func:`bearingsim.statics.jones_harris.solve`):
+
+   * per loaded contact, the sliced-contact kernel (:func:`bearingsim.contact.slices.contact_traction`,
+     [S1] eqs. 1–5, called through :func:`bearingsim.lubrication.contact_at_jones_kinematics`) gives
+     the power lost; run once with and once without the rolling viscous resistance (Zhou & Hoeprich
+     1991 eq. 17) the difference is the **EHL rolling** loss, the rest is traction;
+   * the traction power splits exactly into **spin** and **sliding**: with F_j the slice forces on
+     the ball and v_j = s₀ + ω_rel × d_j the sliding velocities (ω_rel = ω_ball − ω_race, d_j from
+     the contact centre), P_traction = −Σ F_j·v_j = −F·s₀ − ω_rel·M_c, M_c = Σ d_j × F_j; the spin
+     part is −(ω_rel·n)(n·M_c) (n·M_c equals the kernel's moment about the ball centre along n,
+     the centre lying on n); the remainder — sliding at the centre (zero under Jones' raceway
+     control) plus the curvature (Heathcote) sliding across the ellipse — is **sliding**;
+   * **drag** of the balls in the oil–air mixture, only when its oil volume fraction is known
+     (``oil_volume_fraction``, or ``oil_flow`` through Parker's correlation
+     :func:`parker_oil_fraction`): F = ½ c_d ρ_e (π D²/4) v², v = |ω_m| d_m/2 (Harris & Kotzalas
+     2007 vol. 2, fluid drag on a ball orbiting in a stationary oil–air mist), c_d of a sphere by
+     Schiller & Naumann (1933) for Re < 1000 and 0.44 above (Newton regime, Clift, Grace & Weber
+     1978 table 5.2); ρ_e, μ_e the volume-weighted mixture of oil and air;
+   * the torque on the rotating ring is the power over its speed, M = P/|ω| (the energy balance of
+     a steady state with the other ring held), per source and in total.
+
+Everything SI inside ([N], [m], [N·m], [W], [rad/s], [K], [m²/s]); :func:`friction_summary` returns
+a JSON-ready dict in SI.  Not modelled: cage–ball and cage–land friction, seals, oil churning in a
+bath (only the ball drag), temperature rise of the contacts above the inlet temperature apart from
+the kernel's own thermal corrections.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .errors import InputError
+
+#: Palmgren's f0 by bearing type and lubrication method (Harris & Kotzalas 2007, after Palmgren 1959):
+#: (low, high) of the tabulated range; the mean is used.  "oil_jet" is the column "oil bath, vertical
+#: shaft, or oil jet".  Paired / double-row angular contact sets use twice the single-row values (the
+#: table's double-row column), which is what summing two single rows gives.
+PALMGREN_F0 = {
+    "deep_groove": {"grease": (0.7, 2.0), "oil_mist": (1.0, 1.0), "oil_bath": (2.0, 2.0), "oil_jet": (4.0, 4.0)},
+    "angular_contact": {"grease": (2.0, 2.0), "oil_mist": (1.7, 1.7), "oil_bath": (3.3, 3.3),
+                        "oil_jet": (6.6, 6.6)},
+}
+#: Palmgren's f1 = z (P0/C0)^y: (z_low, z_high, y) per bearing type (Harris & Kotzalas 2007, after Palmgren 1959)
+PALMGREN_F1 = {"deep_groove": (0.0004, 0.0006, 0.55), "angular_contact": (0.001, 0.001, 0.33)}
+#: ISO 76:2006 table 1, single-row angular contact ball bearings: (α [deg], Y0); X0 = 0.5
+ISO76_Y0 = ((15.0, 0.46), (20.0, 0.42), (25.0, 0.38), (30.0, 0.33), (35.0, 0.29), (40.0, 0.26), (45.0, 0.22))
+#: ISO 76:2006: contact stress at the most heavily loaded contact that defines C0 of ball bearings [Pa]
+ISO76_STRESS = 4.2e9
+METHODS = tuple(PALMGREN_F0["deep_groove"])
+MODELS = ("both", "palmgren", "physical")
+
+_R_AIR = 287.05  # specific gas constant of dry air [J/(kg K)]
+_P_ATM = 101325.0  # [Pa]
+
+
+# ------------------------------------------------------------------------------------------ Palmgren
+
+
+def _row_bearings(bearing) -> list:
+    """Single-row geometries of a bearing (the rows protocol of :mod:`bearingsim.geometry`; a plain
+    BallBearing without it is one row)."""
+    rows = getattr(bearing, "rows", None)
+    if rows:
+        return [getattr(r, "bearing", r) for r in rows]
+    return [bearing]
+
+
+def static_equivalent_load(fr: float, fa: float, kind: str, contact_angle: float) -> float:
+    """ISO 76:2006 static equivalent load P0 = max(X0 Fr + Y0 Fa, Fr) of a single-row radial ball bearing [N].
+
+    Deep groove X0 = 0.6, Y0 = 0.5; angular contact X0 = 0.5, Y0 interpolated linearly in the ISO 76
+    table by the nominal contact angle [rad] (clamped to 15°–45°)."""
+    fr, fa = abs(float(fr)), abs(float(fa))
+    if kind == "deep_groove":
+        x0, y0 = 0.6, 0.5
+    else:
+        x0 = 0.5
+        y0 = float(np.interp(math.degrees(contact_angle), [a for a, _ in ISO76_Y0], [y for _, y in ISO76_Y0]))
+    return max(x0 * fr + y0 * fa, fr)
+
+
+def static_load_rating_estimate(bearing) -> float:
+    """C0 [N] of one row from the ISO 76 definition when the bearing file gives none: the radial load
+    that puts 4200 MPa at the centre of the most heavily loaded inner contact, C0 = Z Q_max cos α / 5
+    (Stribeck's 5, ISO 76's assumption), Q_max at inner conformity 0.52 (ISO 76's groove) and the
+    bearing's E′.  For a 6205 (Z = 9, D = 7.938 mm, d_m = 38.5 mm, steel) this gives 7.76 kN against the
+    catalogue 7.8 kN.  An estimate: flagged in :func:`palmgren_torque`'s output."""
+    from .contact import hertz
+
+    alpha = bearing.contact_angle if bearing.kind == "angular_contact" else 0.0
+    rx, ry = hertz.raceway_radii(bearing.ball_diameter, bearing.pitch_diameter, 0.52, alpha, True)
+    p1 = hertz.point_contact_exact(1.0, rx, ry, bearing.effective_modulus).max_pressure
+    q = (ISO76_STRESS / p1) ** 3
+    return bearing.ball_count * q * math.cos(alpha) / 5.0
+
+
+def palmgren_torque(bearing, fr: float, fa: float, speed: float, nu: float | None = None,
+                    method: str = "oil_bath") -> dict:
+    """Palmgren's friction torque of one row (module docstring, item 1).
+
+    Parameters
+    ----------
+    bearing : BallBearing (one row)
+    fr, fa : float  [N]  radial and axial load carried by the row
+    speed : float  [rad/s]  speed of the rotating ring relative to the other
+    nu : float | None  [m²/s]  kinematic viscosity at the operating temperature (None: no viscous term)
+    method : lubrication method, one of :data:`METHODS`
+
+    Returns a dict: ``load_N_m``, ``viscous_N_m`` (None without ν), and the factors used
+    (f1, P1 [N], P0 [N], C0 [N], whether C0 was estimated, f0, ν n [mm²/s·rpm]).
+    """
+    if method not in METHODS:
+        raise InputError("lubrication_method", f"unknown method {method!r}", f"use one of {', '.join(METHODS)}")
+    kind = bearing.kind
+    alpha = bearing.contact_angle if kind == "angular_contact" else 0.0
+    fr, fa = abs(float(fr)), abs(float(fa))
+    c0 = float(getattr(bearing, "static_load_rating", 0.0) or 0.0)
+    estimated = not c0 > 0
+    if estimated:
+        c0 = static_load_rating_estimate(bearing)
+    p0 = static_equivalent_load(fr, fa, kind, alpha)
+    z_lo, z_hi, y = PALMGREN_F1[kind]
+    f1 = 0.5 * (z_lo + z_hi) * (p0 / c0) ** y
+    if kind == "deep_groove":
+        p1 = max(3.0 * fa - 0.1 * fr, fr)
+    else:
+        p1 = max(0.9 * fa / math.tan(alpha) - 0.1 * fr, fr) if alpha > 0 else max(3.0 * fa - 0.1 * fr, fr)
+    dm = bearing.pitch_diameter
+    out = {"load_N_m": f1 * p1 * dm, "viscous_N_m": None, "f1": f1, "P1_N": p1, "P0_N": p0,
+           "C0_N": c0, "C0_estimated": estimated}
+    if nu is not None:
+        lo, hi = PALMGREN_F0[kind][method]
+        f0 = 0.5 * (lo + hi)
+        n_rpm = abs(speed) * 30.0 / math.pi
+        nun = nu * 1e6 * n_rpm
+        dm_mm = dm * 1e3
+        if n_rpm == 0.0:
+            mv = 0.0
+        elif nun >= 2000.0:
+            mv = 1e-7 * f0 * nun ** (2.0 / 3.0) * dm_mm**3 * 1e-3
+        else:
+            mv = 160e-7 * f0 * dm_mm**3 * 1e-3
+        out.update(viscous_N_m=mv, f0=f0, f0_range=[lo, hi], nu_n_mm2_s_rpm=nun)
+    return out
+
+
+# ------------------------------------------------------------------------------------------ drag
+
+
+def parker_oil_fraction(oil_flow: float, speed: float, pitch_diameter: float) -> float:
+    """Volume fraction of oil in the oil–air mixture of a jet-lubricated bearing cavity [-].
+
+    Parker (1984, NASA TP-2275) correlation as usually quoted: X [%] = 10^5.095 w^0.37 / (n d_m^1.7)
+    with the oil flow w [cm³/min], the shaft speed n [rpm] and d_m [mm].  Inputs SI: oil_flow [m³/s],
+    speed [rad/s], pitch_diameter [m].  The constant could not be checked against the report itself
+    (docs/friction.md)."""
+    if not (math.isfinite(oil_flow) and oil_flow > 0):
+        raise InputError("oil_flow", f"must be positive, got {oil_flow!r}", 'e.g. "760 cm^3/min"')
+    n = abs(speed) * 30.0 / math.pi
+    if n == 0.0:
+        return 1.0
+    w = oil_flow * 1e6 * 60.0
+    x = 10.0**5.095 * w**0.37 / (n * (pitch_diameter * 1e3) ** 1.7)
+    return min(1.0, x / 100.0)
+
+
+def sphere_drag_coefficient(re: float) -> float:
+    """Drag coefficient of a sphere [-]: Schiller & Naumann (1933) 24/Re (1 + 0.15 Re^0.687) for Re < 1000,
+    0.44 above (Newton regime; Clift, Grace & Weber 1978, table 5.2)."""
+    if re <= 0.0:
+        return 0.0
+    if re < 1000.0:
+        return 24.0 / re * (1.0 + 0.15 * re**0.687)
+    return 0.44
+
+
+def ball_drag_power(ball_diameter: float, pitch_diameter: float, orbital_speed: float, oil_fraction: float,
+                    oil_density: float, oil_viscosity: float, temperature: float) -> float:
+    """Power [W] lost by one ball orbiting at ``orbital_speed`` [rad/s] in a stationary oil–air mixture
+    (module docstring, item 2): F v with F = ½ c_d ρ_e (π D²/4) v², v = |ω_m| d_m/2.
+
+    oil_fraction [-] volume fraction of oil; oil_density [kg/m³], oil_viscosity [Pa·s] at
+    ``temperature`` [K]; air as an ideal gas at 1 atm, viscosity by Sutherland's law."""
+    v = abs(orbital_speed) * 0.5 * pitch_diameter
+    rho_air = _P_ATM / (_R_AIR * temperature)
+    mu_air = 1.716e-5 * (temperature / 273.15) ** 1.5 * (273.15 + 110.4) / (temperature + 110.4)
+    rho = oil_fraction * oil_density + (1.0 - oil_fraction) * rho_air
+    mu = oil_fraction * oil_viscosity + (1.0 - oil_fraction) * mu_air
+    re = rho * v * ball_diameter / mu
+    cd = sphere_drag_coefficient(re)
+    return 0.5 * cd * rho * (0.25 * math.pi * ball_diameter**2) * v**3
+
+
+# ------------------------------------------------------------------------------------------ physics
+
+
+def contact_losses(result, lubricant, temperature: float, roughness: float = 0.1e-6, n_slices: int = 10,
+                   traction_model: str = "mixed", starvation_factor: float = 1.0) -> dict:
+    """Power lost [W] in all loaded ball–race contacts at Jones' kinematics, split into EHL rolling,
+    spin and sliding (module docstring, item 2).  Returns {"rolling_W", "spin_W", "sliding_W"}."""
+    from .contact import hertz
+    from .contact import slices as S
+    from .lubricants import get_lubricant
+    from .lubrication import contact_at_jones_kinematics
+
+    lub_obj = get_lubricant(lubricant)
+    lub_obj.check_temperature(temperature)
+    rows = _row_bearings(result.bearing)
+    balls = result.balls
+    omega = float(result.speed)
+    packs: dict = {}
+    tot = {"rolling_W": 0.0, "spin_W": 0.0, "sliding_W": 0.0}
+    for j in range(len(balls["azimuth_rad"])):
+        rb = rows[int(balls["row"][j])]
+        d, dm = rb.ball_diameter, rb.pitch_diameter
+        e_eff = rb.effective_modulus
+        ai, ao = float(balls["inner_contact_angle_rad"][j]), float(balls["outer_contact_angle_rad"][j])
+        wm = float(balls["orbital_speed_rad_s"][j])
+        wr = float(balls["spin_speed_rad_s"][j])
+        beta = float(balls["pitch_angle_rad"][j])
+        for inner in (True, False):
+            q = float(balls["inner_load_N" if inner else "outer_load_N"][j])
+            if not q > 0:
+                continue
+            alpha = ai if inner else ao
+            f = rb.inner_conformity if inner else rb.outer_conformity
+            rx, ry = hertz.raceway_radii(d, dm, f, alpha, inner)
+            hz = hertz.point_contact_exact(q, rx, ry, e_eff)
+            key = (id(rb), inner, round(alpha, 9))
+            if key not in packs:
+                packs[key] = tuple(S.pack_lubrication_parameters(
+                    lub_obj, temperature, e_eff, rx, ry, roughness, model=traction_model,
+                    starvation_factor=starvation_factor, rolling_resistance=rr) for rr in (True, False))
+            lub_rr, lub_t = packs[key]
+            r_dev = S.deformed_surface_radius(d, f * d)
+            k_all, _, _ = contact_at_jones_kinematics(lub_rr, q, hz.a, hz.b, r_dev, d, dm, ai, ao, omega, wm, wr,
+                                                      beta, inner, n_slices)
+            k_t, _, _ = contact_at_jones_kinematics(lub_t, q, hz.a, hz.b, r_dev, d, dm, ai, ao, omega, wm, wr,
+                                                    beta, inner, n_slices)
+            # spin: relative angular velocity of ball and race along the normal (race -> ball)
+            s, c = math.sin(alpha), math.cos(alpha)
+            n = np.array([s, c, 0.0]) if inner else np.array([-s, -c, 0.0])
+            w_ball = wr * np.array([math.cos(beta), -math.sin(beta), 0.0])
+            w_race = np.array([(omega - wm) if inner else -wm, 0.0, 0.0])
+            p_spin = -float((w_ball - w_race) @ n) * float(k_t[3:6] @ n)
+            p_t = float(k_t[9])
+            tot["rolling_W"] += float(k_all[9]) - p_t
+            tot["spin_W"] += p_spin
+            tot["sliding_W"] += p_t - p_spin
+    return tot
+
+
+def drag_loss(result, lubricant, temperature: float, oil_volume_fraction: float | None = None,
+              oil_flow: float | None = None) -> tuple[float, float | None]:
+    """(drag power [W], oil volume fraction used [-] or None) of all balls (module docstring, item 2).
+    Zero and None when neither the fraction nor the oil flow [m³/s] is given."""
+    from .lubricants import get_lubricant
+
+    if oil_volume_fraction is None and oil_flow is None:
+        return 0.0, None
+    lub_obj = get_lubricant(lubricant)
+    rows = _row_bearings(result.bearing)
+    balls = result.balls
+    rho, eta = lub_obj.density(temperature), lub_obj.dynamic_viscosity(temperature)
+    total = 0.0
+    used = None
+    for j in range(len(balls["azimuth_rad"])):
+        rb = rows[int(balls["row"][j])]
+        if oil_volume_fraction is not None:
+            x = float(oil_volume_fraction)
+            if not (math.isfinite(x) and 0.0 <= x <= 1.0):
+                raise InputError("oil_volume_fraction", f"must lie in [0, 1], got {x!r}", "e.g. 0.001")
+        else:
+            x = parker_oil_fraction(float(oil_flow), float(result.speed), rb.pitch_diameter)
+        used = x
+        wm = float(balls["orbital_speed_rad_s"][j])
+        if not math.isfinite(wm):
+            continue
+        total += ball_drag_power(rb.ball_diameter, rb.pitch_diameter, wm, x, rho, eta, temperature)
+    return total, used
+
+
+# ------------------------------------------------------------------------------------------ summary
+
+
+def _row_loads(result) -> list[tuple[float, float]]:
+    """(Fr, Fa) [N] carried by each row: from the solve's row forces when stored, else the external loads."""
+    rf = getattr(result, "row_forces", None)
+    if rf is not None and len(rf):
+        return [(float(math.hypot(r[1], r[2])), float(abs(r[0]))) for r in np.asarray(rf)]
+    ld = result.loads
+    return [(float(math.hypot(ld.fr_y, ld.fr_z)), float(abs(ld.fa)))]
+
+
+def friction_summary(result, lubricant=None, temperature: float | None = None, *, model: str = "both",
+                     lubrication_method: str = "oil_bath", roughness: float = 0.1e-6, n_slices: int = 10,
+                     traction_model: str = "mixed", oil_volume_fraction: float | None = None,
+                     oil_flow: float | None = None) -> dict:
+    """Friction torque [N·m] and power loss [W] of a solved bearing, per source (all SI, JSON-ready).
+
+    Parameters
+    ----------
+    result : StaticResult from :func:`bearingsim.statics.jones_harris.solve`
+    lubricant : library name, TOML path or Lubricant; None: only Palmgren's load term (with a note)
+    temperature : float  [K]  oil (inlet) temperature; required with a lubricant
+    model : "both" | "palmgren" | "physical"
+    lubrication_method : Palmgren's f0 column, one of :data:`METHODS`
+    roughness : float  [m]  composite rms roughness (physical model)
+    n_slices, traction_model : of the sliced-contact kernel (physical model)
+    oil_volume_fraction : float [-] oil in the oil–air mixture (ball drag); or
+    oil_flow : float  [m³/s]  jet oil flow, giving the fraction by :func:`parker_oil_fraction`
+
+    Returns a dict with ``friction_torque_N_m`` and ``power_loss_W`` (Palmgren's total for "both" and
+    "palmgren", the physical total for "physical"), ``headline_model``, Palmgren's
+    ``palmgren_load_N_m``, ``palmgren_viscous_N_m``, ``palmgren_torque_N_m``, ``palmgren_power_W``,
+    the physical ``rolling_N_m``, ``spin_N_m``, ``sliding_N_m``, ``drag_N_m``, ``physical_torque_N_m``,
+    ``physical_power_W`` and the same per source in W (``rolling_W`` …), the factors used
+    (``palmgren_rows``) and ``notes``.  Parts not computed are None.
+    """
+    if model not in MODELS:
+        raise InputError("model", f"unknown friction model {model!r}", f"use one of {', '.join(MODELS)}")
+    if lubrication_method not in METHODS:
+        raise InputError("lubrication_method", f"unknown method {lubrication_method!r}",
+                         f"use one of {', '.join(METHODS)}")
+    omega = abs(float(result.speed))
+    notes: list[str] = []
+    lub_obj = None
+    if lubricant is not None:
+        from .lubricants import get_lubricant
+
+        if temperature is None:
+            raise InputError("temperature", "a friction estimate with a lubricant needs its temperature",
+                             'e.g. "60 degC"')
+        lub_obj = get_lubricant(lubricant)
+        lub_obj.check_temperature(temperature)
+    out: dict = {"model": model, "speed_rad_s": float(result.speed), "converged": bool(result.converged),
+                 "lubricant": None if lub_obj is None else lub_obj.name,
+                 "temperature_K": None if temperature is None else float(temperature),
+                 "lubrication_method": lubrication_method}
+    for k in ("palmgren_load_N_m", "palmgren_viscous_N_m", "palmgren_torque_N_m", "palmgren_power_W",
+              "rolling_N_m", "spin_N_m", "sliding_N_m", "drag_N_m", "physical_torque_N_m", "physical_power_W",
+              "rolling_W", "spin_W", "sliding_W", "drag_W", "oil_volume_fraction"):
+        out[k] = None
+    if not result.converged:
+        notes.append("the static solution did not converge: the friction figures rest on a non-equilibrium state")
+
+    if model in ("both", "palmgren"):
+        nu = None if lub_obj is None else lub_obj.kinematic_viscosity(temperature)
+        rows_out = []
+        ml = mv = 0.0
+        for rb, (fr, fa) in zip(_row_bearings(result.bearing), _row_loads(result)):
+            p = palmgren_torque(rb, fr, fa, omega, nu, lubrication_method)
+            rows_out.append(p)
+            ml += p["load_N_m"]
+            mv += p["viscous_N_m"] or 0.0
+            if p["C0_estimated"] and not any(getattr(rb, 'name', 'row') in n_ for n_ in notes):
+                notes.append(f"C0 of {getattr(rb, 'name', 'row')} estimated from the ISO 76 definition "
+                             f"({p['C0_N']:.0f} N): the file gives none")
+        out["palmgren_rows"] = rows_out
+        out["palmgren_load_N_m"] = ml
+        if lub_obj is None:
+            notes.append("no lubricant given: only Palmgren's load-dependent torque (no viscous term, no "
+                         "physics-based model)")
+            out["palmgren_torque_N_m"] = ml
+        else:
+            out["palmgren_viscous_N_m"] = mv
+            out["palmgren_torque_N_m"] = ml + mv
+        out["palmgren_power_W"] = out["palmgren_torque_N_m"] * omega
+
+    if model in ("both", "physical") and lub_obj is not None:
+        if omega == 0.0:
+            notes.append("no rotation: the physics-based losses are zero")
+            c = {"rolling_W": 0.0, "spin_W": 0.0, "sliding_W": 0.0}
+            drag, x = 0.0, None
+        else:
+            c = contact_losses(result, lub_obj, temperature, roughness, n_slices, traction_model)
+            drag, x = drag_loss(result, lub_obj, temperature, oil_volume_fraction, oil_flow)
+        if x is None:
+            notes.append("ball drag not computed: give the oil volume fraction of the oil-air mixture or the "
+                         "jet oil flow")
+        out.update(c)
+        out["drag_W"] = drag if x is not None else None
+        out["oil_volume_fraction"] = x
+        total = c["rolling_W"] + c["spin_W"] + c["sliding_W"] + drag
+        out["physical_power_W"] = total
+        for src in ("rolling", "spin", "sliding", "drag"):
+            w = out[f"{src}_W"]
+            out[f"{src}_N_m"] = None if w is None else (w / omega if omega > 0 else 0.0)
+        out["physical_torque_N_m"] = total / omega if omega > 0 else 0.0
+    elif model == "physical":
+        notes.append("the physics-based model needs a lubricant and its temperature")
+
+    if model == "physical":
+        out["headline_model"] = "physical"
+        out["friction_torque_N_m"] = out["physical_torque_N_m"]
+        out["power_loss_W"] = out["physical_power_W"]
+    else:
+        out["headline_model"] = "palmgren"
+        out["friction_torque_N_m"] = out["palmgren_torque_N_m"]
+        out["power_loss_W"] = out["palmgren_power_W"]
+    out["notes"] = notes
+    return out
+
+
+__all__ = ["friction_summary", "palmgren_torque", "static_equivalent_load", "static_load_rating_estimate",
+           "contact_losses", "drag_loss", "ball_drag_power", "sphere_drag_coefficient", "parker_oil_fraction",
+           "PALMGREN_F0", "PALMGREN_F1", "METHODS", "MODELS"]
