@@ -377,7 +377,16 @@ def _check_address(address: str) -> None:
 
 
 def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout: float, poll: float = 1.0):
-    """Solve ``blocks`` on the cluster of ``client``, calling ``done(block, result)`` as they finish.
+    """Solve ``blocks`` on the cluster of ``client``, calling ``done(block, result)`` as they finish
+    (:func:`run_tasks_on_cluster` with :func:`solve_block`)."""
+    run_tasks_on_cluster(client, solve_block, [(bearing, axes, b, control) for b in blocks], blocks, done,
+                         worker_timeout, poll)
+
+
+def run_tasks_on_cluster(client, fn, args: list, keys: list, done, worker_timeout: float, poll: float = 1.0,
+                         what: str = "blocks"):
+    """Run ``fn(*args[i])`` for every i on the cluster of ``client``, calling ``done(keys[i], result)`` as
+    they finish (the map's blocks; the hub study's cells).  ``what`` names the tasks in error messages.
 
     Everything goes through ``client`` itself (never the process's default client: a client connected
     to an address by :func:`_connect` is not the default, and ``distributed.as_completed`` without a
@@ -396,8 +405,8 @@ def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout
     import queue
     import time
 
-    futures = client.map(solve_block, [bearing] * len(blocks), [axes] * len(blocks), blocks,
-                         [control] * len(blocks), pure=False)
+    blocks = keys
+    futures = client.map(fn, *zip(*args), pure=False)
     remaining = {f.key: (f, b) for f, b in zip(futures, blocks)}
     finished_q: queue.SimpleQueue = queue.SimpleQueue()
     for f in futures:
@@ -429,7 +438,7 @@ def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout
                 continue
             if client.status not in ("running", "connecting"):
                 raise MapError(f"lost the connection to the Dask scheduler (client {client.status}); "
-                               f"{len(remaining)} of {len(blocks)} blocks unfinished")
+                               f"{len(remaining)} of {len(blocks)} {what} unfinished")
             try:
                 nworkers = len(client.nthreads())
             except Exception as exc:  # noqa: BLE001
@@ -440,7 +449,7 @@ def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout
                 alone_since = time.monotonic()
             elif time.monotonic() - alone_since > worker_timeout:
                 raise MapError(f"the Dask cluster has had no worker for {worker_timeout:g} s; "
-                               f"{len(remaining)} of {len(blocks)} blocks unfinished (start workers with "
+                               f"{len(remaining)} of {len(blocks)} {what} unfinished (start workers with "
                                "dask worker ADDRESS, or raise --worker-timeout)")
     except BaseException:
         if remaining:
@@ -449,6 +458,36 @@ def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout
             except Exception:  # noqa: BLE001 - the cluster may be gone already
                 pass
         raise
+
+
+def run_tasks_locally(fn, args: list, keys: list, done, nworkers: int, what: str = "blocks",
+                      job: str = "the map") -> None:
+    """Run ``fn(*args[i])`` for every i, calling ``done(keys[i], result)`` as they finish: in this process when
+    ``nworkers`` is 1 or there is one task, else in a pool of ``nworkers`` spawned processes (a process that
+    dies is a :class:`MapError` naming ``job`` and how many ``what`` were left)."""
+    if nworkers == 1 or len(args) == 1:
+        for k, a in zip(keys, args):
+            done(k, fn(*a))
+        return
+    import multiprocessing as mp
+    from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures import as_completed as cf_completed
+    from concurrent.futures.process import BrokenProcessPool
+
+    ctx = mp.get_context("spawn")
+
+    with ProcessPoolExecutor(max_workers=min(nworkers, len(args)), mp_context=ctx) as ex:
+        futs = {ex.submit(fn, *a): k for k, a in zip(keys, args)}
+        try:
+            for f in cf_completed(list(futs)):
+                done(futs.pop(f), f.result())  # pop: the result is released once written
+        except BrokenProcessPool as exc:
+            raise MapError(f"a worker process of {job} died ({exc}); {len(futs)} of {len(args)} "
+                           f"{what} unfinished (out of memory? try fewer --workers)") from None
+        except BaseException:
+            for f in futs:
+                f.cancel()
+            raise
 
 
 def _close(client, quiet) -> None:
@@ -589,29 +628,8 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
 
         if client is not None:
             _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout)
-        elif nworkers == 1 or len(blocks) == 1:
-            for b in blocks:
-                done(b, solve_block(bearing, axes, b, control))
         else:
-            import multiprocessing as mp
-            from concurrent.futures import ProcessPoolExecutor
-            from concurrent.futures import as_completed as cf_completed
-            from concurrent.futures.process import BrokenProcessPool
-
-            ctx = mp.get_context("spawn")
-
-            with ProcessPoolExecutor(max_workers=min(nworkers, len(blocks)), mp_context=ctx) as ex:
-                futs = {ex.submit(solve_block, bearing, axes, b, control): b for b in blocks}
-                try:
-                    for f in cf_completed(list(futs)):
-                        done(futs.pop(f), f.result())  # pop: the result is released once written
-                except BrokenProcessPool as exc:
-                    raise MapError(f"a worker process of the map died ({exc}); {len(futs)} of {len(blocks)} "
-                                   "blocks unfinished (out of memory? try fewer --workers)") from None
-                except BaseException:
-                    for f in futs:
-                        f.cancel()
-                    raise
+            run_tasks_locally(solve_block, [(bearing, axes, b, control) for b in blocks], blocks, done, nworkers)
         if bar is not None:
             bar.stop()
             bar = None
