@@ -38,6 +38,9 @@ bore, outside_diameter    ≥ 0 (0 = unknown); bore < d_m−D, the rings must ho
                           OD > d_m+D
 width                     ≥ 0 (0 = unknown), ≥ D if given  the rings enclose the balls
 dynamic_load_rating C     ≥ 0 (0 = unknown), finite       a rating is a positive force
+static_load_rating C₀     ≥ 0 (0 = unknown), finite       ISO 76 basic static load rating, a positive force
+geometry_factor_f0 f₀     0 (unknown) or 5 – 30           ISO 76 factor (radial ball bearings ≈ 12–17)
+fatigue_load_limit P_u    ≥ 0 (0 = unknown), ≤ C₀ if both  ISO 281 fatigue load limit; below the static rating
 limiting_speed            ≥ 0 (0 = unknown), finite       a speed rating is positive (file: with its unit, rpm)
 Young's modulus E         1 GPa – 1000 GPa                polymers (~2 GPa) to tungsten carbide (~600 GPa)
 Poisson's ratio ν         0 ≤ ν < 0.5                     isotropic engineering solids
@@ -71,7 +74,7 @@ LIMITS = {
 
 _FLOAT_FIELDS = ("ball_diameter", "pitch_diameter", "inner_conformity", "outer_conformity", "contact_angle",
                  "diametral_clearance", "bore", "outside_diameter", "width", "dynamic_load_rating",
-                 "limiting_speed")
+                 "limiting_speed", "static_load_rating", "geometry_factor_f0", "fatigue_load_limit")
 
 
 def _real(value, name: str) -> float:
@@ -103,7 +106,11 @@ class BallBearing:
     dynamic_load_rating : float  [N]  basic dynamic load rating C (0 when unknown)
     limiting_speed : float  [rad/s]  the manufacturer's limiting (mechanical) speed (0 when unknown): results above
         it carry a warning (:mod:`bearingsim.limits`)
-    notes : dict  source of every number
+    static_load_rating : float  [N]  basic static load rating C₀ (ISO 76:2006; 0 when unknown)
+    geometry_factor_f0 : float  [-]  factor f₀ of ISO 76:2006 table 1, used by ISO 281 for f₀F_a/C₀ (0 when unknown)
+    fatigue_load_limit : float  [N]  fatigue load limit P_u (ISO 281:2007 §9.3; 0 when unknown)
+    notes : dict  source of every number (the ``[sources]`` table of a file, field → text; a text starting with
+        ``ESTIMATE`` or ``ASSUMED`` marks that field as estimated: :attr:`sources`, :attr:`estimated`)
     """
 
     name: str
@@ -122,6 +129,9 @@ class BallBearing:
     width: float = 0.0
     dynamic_load_rating: float = 0.0
     limiting_speed: float = 0.0
+    static_load_rating: float = 0.0
+    geometry_factor_f0: float = 0.0
+    fatigue_load_limit: float = 0.0
     notes: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):
@@ -168,11 +178,20 @@ class BallBearing:
             raise InputError("contact_angle", f"must lie in [0, 89) deg, got {math.degrees(self.contact_angle)!r} deg",
                              'e.g. "15 deg" for a spindle bearing')
         for fname, what in (("bore", "a bore"), ("outside_diameter", "an outside diameter"), ("width", "a width"),
-                            ("dynamic_load_rating", "a load rating"), ("limiting_speed", "a limiting speed")):
+                            ("dynamic_load_rating", "a load rating"), ("limiting_speed", "a limiting speed"),
+                            ("static_load_rating", "a static load rating"),
+                            ("fatigue_load_limit", "a fatigue load limit")):
             v = getattr(self, fname)
             if not (math.isfinite(v) and v >= 0):
                 raise InputError(fname, f"must be positive (or 0 when unknown), got {v!r}",
                                  f"give {what} > 0 with its unit, or leave it out")
+        f0 = self.geometry_factor_f0
+        if not (math.isfinite(f0) and (f0 == 0.0 or 5.0 <= f0 <= 30.0)):
+            raise InputError("geometry_factor_f0", f"{f0!r} is not an ISO 76 factor f0 (radial ball bearings: "
+                             "about 12–17)", "give the catalogue's f0, e.g. geometry_factor_f0 = 14, or leave it out")
+        if 0 < self.static_load_rating < self.fatigue_load_limit:
+            raise InputError("fatigue_load_limit", f"{self.fatigue_load_limit:.4g} N exceeds the static load rating "
+                             f"{self.static_load_rating:.4g} N", "check both values and their units (kN vs N)")
         if self.bore > 0 and self.bore >= self.pitch_diameter - d:
             raise InputError("bore", "the bore is larger than the inner raceway (pitch_diameter − ball_diameter)",
                              "check bore, pitch diameter and ball diameter")
@@ -219,6 +238,19 @@ class BallBearing:
                                  "use bearingsim.materials.get_material(name) or Material(...)")
         if not isinstance(self.notes, dict):
             raise InputError("notes", f"expected a dict, got {type(self.notes).__name__}", "e.g. notes={}")
+
+    # ---- sources -----------------------------------------------------------
+    @property
+    def sources(self) -> dict:
+        """Source of each documented field, field → text (the file's ``[sources]`` table; ``description``
+        excluded)."""
+        return {k: v for k, v in self.notes.items() if k != "description" and isinstance(v, str)}
+
+    @property
+    def estimated(self) -> tuple:
+        """Names of the fields whose values are estimates or assumptions (source text starting with
+        ``ESTIMATE`` or ``ASSUMED``), in file order."""
+        return tuple(k for k, v in self.sources.items() if v.lstrip().upper().startswith(("ESTIMATE", "ASSUMED")))
 
     # ---- derived geometry -------------------------------------------------
     @property

@@ -26,6 +26,7 @@ _BEARING_KEYS = {
     "outer_groove_radius", "inner_conformity", "outer_conformity", "contact_angle",
     "diametral_clearance", "ball_material", "ring_material", "bore", "outside_diameter", "width",
     "dynamic_load_rating", "limiting_speed", "description", "sources",
+    "static_load_rating", "geometry_factor_f0", "fatigue_load_limit",
 }
 
 
@@ -183,6 +184,9 @@ def _bearing_from_dict(data: dict) -> BallBearing:
     def opt(key, dim):
         return parse_quantity(data[key], dim, key) if key in data else 0.0
 
+    f0 = data.get("geometry_factor_f0", 0.0)
+    if isinstance(f0, bool) or not isinstance(f0, (int, float)):
+        raise InputError("geometry_factor_f0", f"expected a number, got {f0!r}", "e.g. geometry_factor_f0 = 14")
     src = data.get("sources", {})
     notes = dict(src) if isinstance(src, dict) else {"sources": str(src)}
     if "description" in data:
@@ -194,7 +198,8 @@ def _bearing_from_dict(data: dict) -> BallBearing:
         ring_material=_material(data["ring_material"], "ring_material"),
         diametral_clearance=pd, bore=opt("bore", "length"), outside_diameter=opt("outside_diameter", "length"),
         width=opt("width", "length"), dynamic_load_rating=opt("dynamic_load_rating", "force"),
-        limiting_speed=opt("limiting_speed", "speed"), notes=notes,
+        limiting_speed=opt("limiting_speed", "speed"), static_load_rating=opt("static_load_rating", "force"),
+        geometry_factor_f0=float(f0), fatigue_load_limit=opt("fatigue_load_limit", "force"), notes=notes,
     )
 
 
