@@ -36,12 +36,8 @@ DROPPED = ("K[x,y]", "K[x,z]", "K[x,gamma_y]", "K[x,gamma_z]", "K[y,gamma_y]", "
 def _preloaded(bearing) -> bool:
     """True when the bearing carries load without external load: a radial interference
     (diametral_clearance < 0) of a row, or a set's preload (positive axial offsets)."""
-    rows = getattr(bearing, "rows", None)
-    if rows is None:
-        return getattr(bearing, "diametral_clearance", 0.0) < 0.0
     return (getattr(bearing, "preload", 0.0) > 0.0
-            or any(getattr(r, "axial_offset", 0.0) > 0.0 or getattr(r.bearing, "diametral_clearance", 0.0) < 0.0
-                   for r in rows))
+            or any(r.axial_offset > 0.0 or r.bearing.diametral_clearance < 0.0 for r in bearing.rows))
 
 
 def _check_arguments(bearing, speeds, loads, control):
@@ -51,7 +47,7 @@ def _check_arguments(bearing, speeds, loads, control):
 
     if isinstance(bearing, str | Path):
         bearing = load_bearing(bearing)
-    if not (hasattr(bearing, "row_parameters") or hasattr(bearing, "rows_parameters")):
+    if not hasattr(bearing, "row_vectors"):  # the rows protocol (bearingsim.geometry)
         raise InputError("bearing", f"expected a BallBearing, a BearingSystem, a catalogue name or a TOML path, "
                          f"got {type(bearing).__name__}", "e.g. bearingsim.io.load_bearing('skf-7011-cdga-hc')")
     if isinstance(speeds, str | bytes) or speeds is None:

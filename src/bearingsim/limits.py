@@ -66,9 +66,8 @@ def cf_attributes() -> dict:
 def limiting_speed(bearing) -> float:
     """The bearing's limiting speed [rad/s], 0 when it gives none (a bearing set: the smallest of its rows)."""
     v = getattr(bearing, "limiting_speed", 0.0) or 0.0
-    rows = getattr(bearing, "rows", None)
-    if not v and rows:
-        vals = [getattr(getattr(r, "bearing", r), "limiting_speed", 0.0) or 0.0 for r in rows]
+    if not v:
+        vals = [r.bearing.limiting_speed for r in bearing.rows]
         vals = [x for x in vals if x > 0]
         v = min(vals) if vals else 0.0
     try:

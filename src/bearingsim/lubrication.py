@@ -16,7 +16,6 @@ Orchestration only (models live in :mod:`bearingsim.contact.ehl`,
 
 from __future__ import annotations
 
-import dataclasses
 import math
 
 import numpy as np
@@ -25,27 +24,6 @@ from .contact import ehl, hertz
 from .contact import slices as S
 from .errors import InputError
 from .lubricants import get_lubricant
-
-
-def _effective_modulus(bearing) -> float:
-    e = getattr(bearing, "effective_modulus", None)
-    if isinstance(e, (int, float)):
-        return float(e)
-    # bearing systems: look for a component bearing one level down
-    if dataclasses.is_dataclass(bearing):
-        for f in dataclasses.fields(bearing):
-            v = getattr(bearing, f.name)
-            items = v if isinstance(v, (list, tuple)) else [v]
-            for it in items:
-                cand = getattr(it, "effective_modulus", None)
-                if isinstance(cand, (int, float)):
-                    return float(cand)
-                inner = getattr(it, "bearing", None)
-                cand = getattr(inner, "effective_modulus", None)
-                if isinstance(cand, (int, float)):
-                    return float(cand)
-    raise InputError("bearing", "cannot find the effective modulus of the ball/ring materials",
-                     "pass a BallBearing or a system made of them")
 
 
 def _contact_geometry(d, alpha, inner):
@@ -115,10 +93,7 @@ def lubrication_report(result, lubricant, temperature: float, roughness: float =
         raise InputError("roughness", f"must be finite and >= 0, got {roughness!r}", 'e.g. "0.1 um"')
     if not isinstance(n_slices, int) or n_slices < 1:
         raise InputError("n_slices", f"must be an integer >= 1, got {n_slices!r}", "e.g. 10")
-    from .statics import layout as rl
-
-    rows = result.rows_params
-    e_eff = _effective_modulus(result.bearing)
+    row_bearings = [r.bearing for r in result.bearing.rows]  # the rows protocol (bearingsim.geometry)
     balls = result.balls
     omega = float(result.speed)  # signed, as the ball speeds of ball_table
     out_balls = []
@@ -127,9 +102,9 @@ def lubrication_report(result, lubricant, temperature: float, roughness: float =
     beta_eta = lub_obj.viscosity_temperature_coefficient(temperature) * eta0
     for j in range(len(balls["azimuth_rad"])):
         r = int(balls["row"][j])
-        par = rows[r]
-        d, dm = par[rl.P_D], par[rl.P_DM]
-        f_i, f_o = par[rl.P_RI] / d + 0.5, par[rl.P_RO] / d + 0.5
+        rb = row_bearings[r]
+        d, dm, f_i, f_o = rb.ball_diameter, rb.pitch_diameter, rb.inner_conformity, rb.outer_conformity
+        e_eff = rb.effective_modulus
         ai, ao = float(balls["inner_contact_angle_rad"][j]), float(balls["outer_contact_angle_rad"][j])
         entry = {"index": j, "row": r, "azimuth_rad": float(balls["azimuth_rad"][j])}
         loaded = False

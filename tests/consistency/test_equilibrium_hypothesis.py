@@ -70,7 +70,7 @@ def test_converged_results_are_equilibria_and_paths_agree(bearings, name, contro
                        mz * cap * dm * 10**lm] for fa, la, ry, rz, lr, my, mz, lm, _ in path])
     speeds = np.array([0.0 if rest else p[-1] * wlim for p, rest in zip(path, at_rest)])
     batch = jh.solve_many(b, loads, speeds, control)
-    rows = jh.rows_of(b)
+    rows = b.row_vectors()
     for i in range(len(path)):
         single = jh.solve(b, jh.Loads(*loads[i]), float(speeds[i]), control)
         sc = load_scale(loads[i], dm)
@@ -90,7 +90,7 @@ def test_recomputation_detects_a_non_equilibrium(bearings):
     b = bearings["7011"]
     r = jh.solve(b, jh.Loads(fa=3000.0, fr_y=500.0), 1000.0, "outer")
     assert r.converged
-    rows = jh.rows_of(b)
+    rows = b.row_vectors()
     la = r.loads.as_array()
     rv, ok = ring_residual(rows, la, 1000.0, "outer", r.displacement)
     assert ok and rv <= jh.TOL_VERIFY * 3000.0

@@ -87,7 +87,7 @@ def test_symmetric_stiffness_at_rest_and_finite_difference(db):
     k = res.stiffness
     np.testing.assert_allclose(k, k.T, rtol=1e-7, atol=1e-9 * np.max(np.abs(k)))
     # central difference of the ring load at the solution
-    rows = db.rows_parameters()
+    rows = db.row_vectors()
     from bearingsim.statics import _kernels as kn
     zmax = int(rows[:, kn.P_Z].max())
 
@@ -130,7 +130,7 @@ def test_toml_rows_form_equals_arrangement_form(db):
         {"bearing": "skf-7011-cdga-hc", "position": "9 mm", "orientation": -1, "axial_offset": f"{e * 1e3!r} mm"},
     ]}
     s = bearing_from_dict(data)
-    np.testing.assert_allclose(s.rows_parameters(), db.rows_parameters(), rtol=1e-12)
+    np.testing.assert_allclose(s.row_vectors(), db.row_vectors(), rtol=1e-12)
     s2 = bearing_from_dict({"name": "y", "rows": data["rows"][:1] + data["rows"][1:], "preload": "300 N"})
     np.testing.assert_allclose(s2.rows[0].axial_offset, e, rtol=1e-9)
 

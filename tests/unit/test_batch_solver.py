@@ -49,7 +49,7 @@ def _ring_residual(rows, q, loads, omega):
 def test_ball_tangent_warm_start_same_equilibrium(ncol):
     """solve_ring from the same start with xb of 2 (position) or 8 (position + dX/dA) columns."""
     b = load_bearing("skf-7011-cdga-hc")
-    rows = np.ascontiguousarray(jh.rows_of(b))
+    rows = np.ascontiguousarray(b.row_vectors())
     z = int(rows[0, kn.P_Z])
     loads = np.array([2000.0, 800.0, -300.0, 10.0, -5.0])
     omega = 9000 * np.pi / 30
@@ -71,7 +71,7 @@ def test_hub_low_speed_batch_points_are_equilibria():
     row are held only by the centrifugal force; each returned point must be an equilibrium when all
     balls are re-solved from scratch (residual ≤ 1e-9 of the load scale)."""
     hub = load_bearing("hub-seed001")
-    rows = np.ascontiguousarray(jh.rows_of(hub))
+    rows = np.ascontiguousarray(hub.row_vectors())
     m = np.linspace(200, 400, 9)
     loads = np.column_stack([1890 * m / 600, 2785 + 965 * m / 600, 0 * m, 0 * m, m])
     for omega in (17.5, 26.2):
@@ -107,7 +107,7 @@ def test_batch_reports_points_that_fail_the_independent_check_as_status_5():
     from bearingsim.statics._batch import NSUMMARY, solve_batch
 
     b = load_bearing("skf-7011-cdga-hc")
-    rows = jh.rows_of(b)
+    rows = b.row_vectors()
     loads = np.array([[1000.0, 0, 0, 0, 0], [3000.0, 200.0, 0, 0, 0]])
     omega = np.array([0.0, 1000.0])
     n = len(loads)

@@ -164,7 +164,7 @@ def test_old_start_inside_the_clearance_converges_through_the_damped_step():
     """The former start (one ball loaded: the axial and γz rows proportional, γy row empty) gave a singular
     Jacobian; the kernel now takes a damped step instead of raising and reaches the same equilibrium."""
     b = deep_groove("6205", 15)
-    rows = jh.rows_of(b)
+    rows = b.row_vectors()
     q = np.array([0.0, 7.5e-6 + 1e-6, 0.0, 0.0, 0.0])
     lam = np.zeros((1, 9), dtype=np.int64)
     xb = np.zeros((1, 9, 2))
@@ -185,7 +185,7 @@ def test_start_with_no_ball_loaded_is_not_an_exception():
     """A start in the middle of the clearance (no ball loaded, zero Jacobian): the kernel returns status 2;
     ``solve`` then tries its other starts and converges."""
     b = deep_groove("6205", 30)
-    rows = jh.rows_of(b)
+    rows = b.row_vectors()
     q = np.zeros(5)
     st_, *_ = kn.solve_ring(rows, np.array([0, 3000.0, 0, 0, 0]), 0.0, 0, q, np.zeros((1, 9), dtype=np.int64),
                             np.zeros((1, 9, 2)), np.zeros((5, 5)), np.zeros((1, 9, 12)), 1e-12, 1e-10, 60, 100, 3000.0)

@@ -88,7 +88,7 @@ def test_row_formulas_once_kernels_and_dynamics_agree_bitwise():
     from bearingsim.statics import _kernels as kn
 
     system = load_bearing("hub-seed001")
-    rows = system.rows_parameters()
+    rows = system.row_vectors()
     rng = np.random.default_rng(12)
     for par in rows:
         for w2 in [0.0, *(rng.uniform(0.0, 1e7, 5))]:

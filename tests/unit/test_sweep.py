@@ -222,7 +222,7 @@ def test_solve_ring_started_at_a_status3_equilibrium_still_reports_status3():
     loads, om = _random_points(3, 60)
     out = run_batch(b, loads, om, reorder=True)
     i = int(np.flatnonzero(out["status"] == 3)[0])
-    rows = np.ascontiguousarray(jh.rows_of(b))
+    rows = np.ascontiguousarray(b.row_vectors())
     z = int(rows[0, kn.P_Z])
     q = np.array(jh.initial_guess(b, jh.Loads(*loads[i])), dtype=float)
     lam = np.zeros((1, z), dtype=np.int64)

@@ -38,7 +38,7 @@ def cage_modes_cmd(
     from ..units import parse_quantity
 
     b = load_bearing(bearing)
-    row = b.rows[0].bearing if hasattr(b, "rows") else b
+    row = b.rows[0].bearing
     over = {}
     for opt, val, key in (("--width", width, "axial_width"), ("--thickness", thickness, "radial_thickness"),
                           ("--pocket-diameter", pocket, "pocket_diameter")):

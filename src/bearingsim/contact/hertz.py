@@ -238,12 +238,15 @@ def raceway_radii(ball_diameter: float, pitch_diameter: float, conformity: float
     return rx, ry
 
 
-def series_constant(k_inner: float, k_outer: float) -> float:
+@njit(cache=True, error_model="numpy")
+def series_constant(k_inner, k_outer):
     """Ball's combined load–deflection constant K_n [N/m^1.5] of two contacts in series.
 
-    K_n = [(1/K_i)^(2/3) + (1/K_o)^(2/3)]^(−3/2)  (Harris & Kotzalas 2007 vol. 1 eq. 7.4).
+    K_n = [(1/K_i)^(2/3) + (1/K_o)^(2/3)]^(−3/2)  (Harris & Kotzalas 2007 vol. 1 eq. 7.4); compiled, so that
+    the ring kernels of :mod:`bearingsim.statics._kernels` and Python callers share one spelling (a zero
+    constant gives K_n = 0, not an exception).
     """
-    return ((1.0 / k_inner) ** (2.0 / 3.0) + (1.0 / k_outer) ** (2.0 / 3.0)) ** -1.5
+    return (k_inner ** (-2.0 / 3.0) + k_outer ** (-2.0 / 3.0)) ** (-1.5)
 
 
 @njit(cache=True)

@@ -27,6 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..contact.slices import deformed_surface_radius
 from ..errors import InputError
 from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import layout as ly
@@ -115,8 +116,13 @@ def pocket_geometry(ball_diameter: float, shape: str = "sphere", opening_deg: fl
 
 
 def row_extras(bearing, rows: np.ndarray) -> np.ndarray:
-    """Per-row contact constants (ellipse size, conformal radius, groove-centre circles)."""
-    bearings = bearing_rows(bearing, rows.shape[0])
+    """Per-row contact constants (ellipse size, conformal radius, groove-centre circles) float[nrow, NROWX]
+    (layout :mod:`.layout`), from the rows of the bearing (the rows protocol, :mod:`bearingsim.geometry`) and
+    their kernel vectors ``rows`` (the groove-centre positions of :mod:`bearingsim.statics.layout`)."""
+    bearings = [r.bearing for r in bearing.rows]
+    if len(bearings) != rows.shape[0]:
+        raise InputError("bearing", f"{len(bearings)} rows but {rows.shape[0]} kernel vectors",
+                         "build the kernel vectors with bearing.row_vectors()")
     rx = np.zeros((rows.shape[0], ly.NROWX))
     for r, b in enumerate(bearings):
         par = rows[r]
@@ -128,40 +134,17 @@ def row_extras(bearing, rows: np.ndarray) -> np.ndarray:
         rx[r, ly.X_CAO] = co.a
         rx[r, ly.X_CBO] = co.b
         fi, fo = b.inner_conformity, b.outer_conformity
-        rx[r, ly.X_RDI] = 2 * fi * d / (2 * fi + 1)
-        rx[r, ly.X_RDO] = 2 * fo * d / (2 * fo + 1)
-        s = par[kn.P_SIGN]
-        rx[r, ly.X_XGI] = par[kn.P_XROW] + s * (par[kn.P_XIC] + par[kn.P_AXOFF])
-        rx[r, ly.X_XGO] = par[kn.P_XROW] + s * (par[kn.P_XIC] - par[kn.P_DX0])
-        rx[r, ly.X_RGO] = par[kn.P_RIC] - par[kn.P_DR0]
+        rx[r, ly.X_RDI] = deformed_surface_radius(d, fi * d)
+        rx[r, ly.X_RDO] = deformed_surface_radius(d, fo * d)
+        rx[r, ly.X_XGI] = kn.inner_groove_centre_axial(par)
+        rx[r, ly.X_XGO] = kn.outer_groove_centre_axial(par)
+        rx[r, ly.X_RGO] = kn.outer_groove_centre_radius(par)
         rx[r, ly.X_EPI] = b.effective_modulus
         rx[r, ly.X_EPO] = b.effective_modulus
         rxi, ryi = b.raceway_radii(True)
         rxo, ryo = b.raceway_radii(False)
         rx[r, ly.X_RXI], rx[r, ly.X_RYI], rx[r, ly.X_RXO], rx[r, ly.X_RYO] = rxi, ryi, rxo, ryo
     return rx
-
-
-def bearing_rows(bearing, nrow: int) -> list:
-    """The single-row :class:`BallBearing` of every row of a bearing or bearing system."""
-    for attr in ("row_bearings", "bearings"):
-        v = getattr(bearing, attr, None)
-        if v is not None:
-            v = v() if callable(v) else v
-            v = list(v)
-            if len(v) == nrow:
-                return v
-    rows_attr = getattr(bearing, "rows", None)
-    if rows_attr is not None and not callable(rows_attr):
-        out = []
-        for r in rows_attr:
-            out.append(getattr(r, "bearing", r))
-        if len(out) == nrow and all(hasattr(o, "contact") for o in out):
-            return out
-    if hasattr(bearing, "contact"):
-        return [bearing] * nrow
-    raise InputError("bearing", "cannot find the single-row bearings of this arrangement",
-                     "give a BallBearing or an arrangement exposing its rows")
 
 
 def cage_contact_constant(ball_diameter: float, ball_material, cage_modulus: float | None = None,
@@ -193,7 +176,7 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
                 cage_stiffness: float | None = None, v_ref: float = 1e-3, pocket_shape: str = "sphere",
                 lubricant=None, temperature: float = 333.15, lubrication: dict | None = None,
                 cage_modes: int = 0, cage_ring: dict | None = None, modal_damping: float | None = None) -> Model:
-    """Build the kernel arrays of a bearing (single row or an arrangement with ``rows_parameters``).
+    """Build the kernel arrays of a bearing (the rows protocol of :mod:`bearingsim.geometry`: one row, a set or a unit).
 
     Parameters (SI): ring_mass [kg]; ring_inertia (transverse, polar) [kg m²] (default:
     a thin ring of the inner-race radius); gravity [m/s²]; damping_alpha Hunt–Crossley α
@@ -207,18 +190,16 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
     cage (0: rigid), with ``cage_ring`` overrides of the assumed ring [SI] and ``modal_damping`` ζ
     (:func:`.cage.attach_elastic_cages`).
     """
-    from ..statics.jones_harris import rows_of
-
     if traction not in ly.TRACTION_MODELS:
         raise InputError("traction", f"unknown traction model {traction!r}", "use none, coulomb or slices")
     if guidance not in ly.GUIDANCE:
         raise InputError("cage.guidance", f"unknown guidance {guidance!r}", "use balls, outer-land or inner-land")
     if not ring_mass > 0:
         raise InputError("inner_ring.mass", f"must be positive, got {ring_mass!r} kg", 'e.g. "3 kg"')
-    rows = np.ascontiguousarray(rows_of(bearing), dtype=float)
+    rows = np.ascontiguousarray(bearing.row_vectors(), dtype=float)
     nrow = rows.shape[0]
     rowx = row_extras(bearing, rows)
-    brs = bearing_rows(bearing, nrow)
+    brs = [r.bearing for r in bearing.rows]
     ball_row, ball_psi = [], []
     for r in range(nrow):
         z = int(rows[r, kn.P_Z])

@@ -115,7 +115,7 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
     if not isinstance(data.get("loads", {}), dict):
         raise InputError("loads", f"expected a [loads] table, got {data['loads']!r}"[:160],
                          'write [loads] with fa = "3000 N" etc. (fa, fr, fz, my, mz)')
-    sys_lp = getattr(bearing, "load_point", 0.0) if hasattr(bearing, "rows_parameters") else 0.0
+    sys_lp = bearing.load_point
     load_point = 0.0
     if "load_point" in data:
         load_point = parse_quantity(data["load_point"], "length", "load_point") - sys_lp

@@ -355,14 +355,13 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
         TOL_VERIFY,
         Loads,
         initial_guess,
-        rows_of,
     )
 
     loads = np.ascontiguousarray(np.asarray(loads, dtype=float).reshape(-1, 5))
     n = loads.shape[0]
     speeds = np.broadcast_to(np.asarray(omega, dtype=float), (n,)).copy()
     omega = np.ascontiguousarray(np.abs(speeds))
-    rows = np.ascontiguousarray(rows_of(bearing))
+    rows = np.ascontiguousarray(bearing.row_vectors())
     perm = None
     if reorder and n > 1:
         perm = order_points(loads, omega)

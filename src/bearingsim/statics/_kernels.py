@@ -55,6 +55,7 @@ import numpy as np
 from numba import njit
 
 # ---- row parameter layout and raceway control: the public contract of bearingsim.statics.layout ----------
+from ..contact.hertz import series_constant
 from . import layout as _layout
 from .layout import (  # noqa: F401  (re-exported: the kernels read them as compile-time constants)
     CONTROL_AUTO,
@@ -800,12 +801,6 @@ def contact_past_groove_edge(rows, ballout):
             if (bo[2] > 0.0 and not (bo[9] > 0.0)) or (bo[3] > 0.0 and not (bo[11] > 0.0)):
                 return True
     return False
-
-
-@njit(cache=True, error_model="numpy")
-def series_constant(ki, ko):
-    """K_n = [(1/K_i)^(2/3) + (1/K_o)^(2/3)]^(−3/2) [N/m^1.5] (Harris & Kotzalas 2007 vol. 1 eq. 7.4)."""
-    return (ki ** (-2.0 / 3.0) + ko ** (-2.0 / 3.0)) ** (-1.5)
 
 
 @njit(cache=True, error_model="numpy")

@@ -36,7 +36,7 @@ from scipy.optimize import brentq
 
 from ..contact import hertz
 from ..errors import InputError
-from ..geometry import BallBearing
+from ..geometry import BallBearing, Row, row_vectors
 from . import _kernels as kn
 
 ARRANGEMENTS = {
@@ -48,38 +48,6 @@ ARRANGEMENTS = {
 #: maximum contact pressure [Pa] above which a preload is rejected as unrealistic.  ISO 76
 #: limits the static pressure of ball bearings to 4.2 GPa; 5 GPa is well beyond any preload.
 MAX_PRELOAD_PRESSURE = 5.0e9
-
-
-@dataclass(frozen=True)
-class Row:
-    """One row of a bearing system.
-
-    Parameters
-    ----------
-    bearing : BallBearing  the single-row geometry
-    position : float  [m]  axial position of the row plane from the system centre
-    orientation : float  +1 or −1 (−1 mirrors the contact angle)
-    axial_offset : float  [m]  preload offset e of the inner groove centres (local axial direction)
-    first_ball_azimuth : float  [rad]
-    """
-
-    bearing: BallBearing
-    position: float = 0.0
-    orientation: float = 1.0
-    axial_offset: float = 0.0
-    first_ball_azimuth: float = 0.0
-
-    def __post_init__(self):
-        if not isinstance(self.bearing, BallBearing):
-            raise InputError("rows.bearing", f"expected a single-row bearing, got {type(self.bearing).__name__}",
-                             "give a catalogue name or a single-row TOML file for every row")
-        if self.orientation not in (1.0, -1.0, 1, -1):
-            raise InputError("rows.orientation", f"must be +1 or -1, got {self.orientation!r}",
-                             "+1: contact angle as defined, -1: mirrored")
-        for name in ("position", "axial_offset", "first_ball_azimuth"):
-            v = getattr(self, name)
-            if not math.isfinite(v):
-                raise InputError(f"rows.{name}", f"must be finite, got {v!r}", "give a finite value")
 
 
 @dataclass(frozen=True)
@@ -153,15 +121,15 @@ class BearingSystem:
         }
 
     # ---- kernel interface ----------------------------------------------------------------
-    def rows_parameters(self) -> np.ndarray:
-        """Kernel row parameters (nrow, NPAR); the kernel origin is the load point."""
-        return np.array([r.bearing.row_parameters(r.position - self.load_point, float(r.orientation),
-                                                  r.axial_offset, r.first_ball_azimuth) for r in self.rows])
+    def row_vectors(self) -> np.ndarray:
+        """Kernel parameter vectors float[nrow, NPAR] (the rows protocol, :mod:`bearingsim.geometry`); the
+        kernel origin is the load point."""
+        return row_vectors(self)
 
     @cached_property
     def _k0(self) -> np.ndarray:
         """Stiffness at rest without external load (5×5) [SI]."""
-        rows = self.rows_parameters()
+        rows = self.row_vectors()
         zmax = int(rows[:, kn.P_Z].max())
         q = np.zeros(5)
         res = np.zeros(5)
@@ -219,7 +187,7 @@ class BearingSystem:
             if r.axial_offset <= 0:
                 continue
             b = r.bearing
-            par = b.row_parameters(0.0, 1.0, r.axial_offset)
+            par = dataclasses.replace(r, position=0.0, orientation=1.0, first_ball_azimuth=0.0).vector()
             a1, a2 = par[kn.P_DX0] + par[kn.P_AXOFF], par[kn.P_DR0]
             dn = math.hypot(a1, a2) - (par[kn.P_RI] + par[kn.P_RO])
             if dn <= 0:
@@ -237,7 +205,7 @@ class BearingSystem:
 def _row_forces(system, q, speed=0.0, result=None):
     """Per row: the load the row carries (Fa, Fy, Fz, My, Mz) about the kernel origin [N, N·m]
     (minus the sum of its ball forces on the inner ring), from one kernel pass over the row's balls at q."""
-    rows = system.rows_parameters() if hasattr(system, "rows_parameters") else system.row_parameters()[None, :]
+    rows = system.row_vectors()
     out = []
     for k in range(rows.shape[0]):
         par = rows[k:k + 1]
@@ -327,7 +295,7 @@ _preload_offset = offset_for_preload
 
 def _offset_limits(b: BallBearing) -> tuple[float, float]:
     """(offset at first contact, offset reaching MAX_PRELOAD_PRESSURE) of one row at q = 0 [m]."""
-    par = b.row_parameters()
+    par = b.row_vectors()[0]
     rsum = par[kn.P_RI] + par[kn.P_RO]
     dx0, dr0 = par[kn.P_DX0], par[kn.P_DR0]
     _, _, kn_ = b.contact_constants
@@ -419,12 +387,7 @@ def row_summaries(result) -> list[dict]:
     :func:`~bearingsim.statics.jones_harris.solve`): the row loads are ``result.row_forces``, summed in the
     solve from its own ball forces (re-computed with one kernel pass per row only for a result without them)."""
     system = result.bearing
-    if isinstance(system, BearingSystem):
-        rows = system.rows
-        x0 = system.load_point
-    else:
-        rows = (Row(system),)
-        x0 = 0.0
+    rows, x0 = system.rows, system.load_point
     q = np.asarray(result.displacement, dtype=float)
     forces = result.row_forces if getattr(result, "row_forces", None) is not None \
         else _row_forces(system, q, result.speed, result)

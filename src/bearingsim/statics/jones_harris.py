@@ -22,6 +22,7 @@ from numba import njit
 
 from ..contact import hertz
 from ..errors import InputError, InputTypeError
+from ..geometry import BallBearing
 from . import _kernels as kn
 from .axial import solve_thrust
 from .layout import STATUS  # the one table of status codes (jones_harris.STATUS stays importable)
@@ -263,13 +264,6 @@ def internal_clearance(bearing) -> dict:
             "axial_play_m": float(play)}
 
 
-def rows_of(bearing) -> np.ndarray:
-    """Kernel row parameters of a bearing or bearing system."""
-    if hasattr(bearing, "rows_parameters"):
-        return bearing.rows_parameters()
-    return bearing.row_parameters()[None, :]
-
-
 def initial_guess(bearing, loads: Loads) -> np.ndarray:
     """A start for the ring Newton: the thrust-model axial deflection under an equivalent load."""
     if hasattr(bearing, "initial_guess"):
@@ -293,7 +287,7 @@ def initial_guess(bearing, loads: Loads) -> np.ndarray:
             # clearance loads a single ball (or none, when the load points between balls), whose axial and
             # tilt rows are proportional: a singular Jacobian.
             q1 = q0.copy()
-            if kn.planar_radial_start(bearing.row_parameters()[None, :], loads.as_array(), q1):
+            if kn.planar_radial_start(bearing.row_vectors(), loads.as_array(), q1):
                 return q1
         # deep groove: take up the clearance in the load direction
         c = 0.5 * bearing.diametral_clearance
@@ -316,7 +310,7 @@ def _moment_tilt(bearing, loads: Loads) -> np.ndarray:
     # tilt the inner ring until the ball farthest from the tilt axis has taken up the
     # axial play A sin α₀ plus the Hertz approach of a ball carrying 2M/(Z r) (r the groove-centre
     # radius); from the centred position inside the clearance no ball is loaded and the Jacobian is zero
-    par = bearing.row_parameters()
+    par = bearing.row_vectors()[0]
     big_a = bearing.total_curvature_distance
     ric = par[kn.P_RIC]
     z = bearing.ball_count
@@ -336,7 +330,7 @@ def _deep_groove_starts(bearing, loads: Loads) -> list:
         return []
     la = loads.as_array()
     radial = np.zeros(5)
-    kn.planar_radial_start(bearing.row_parameters()[None, :], la, radial)
+    kn.planar_radial_start(bearing.row_vectors(), la, radial)
     axial = np.zeros(5)
     if loads.fa != 0:
         big_a = bearing.total_curvature_distance
@@ -377,7 +371,7 @@ def _check_initial(initial) -> np.ndarray:
 
 
 def _check_bearing(bearing):
-    if not (hasattr(bearing, "rows_parameters") or hasattr(bearing, "row_parameters")):
+    if not hasattr(bearing, "row_vectors"):
         raise InputTypeError("bearing", f"expected a BallBearing or bearing system, got {type(bearing).__name__}",
                              "load one with bearingsim.io.load_bearing")
 
@@ -460,7 +454,7 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
 
     Parameters
     ----------
-    bearing : BallBearing or a bearing system with ``rows_parameters()``
+    bearing : BallBearing or BearingSystem (the rows protocol, :mod:`bearingsim.geometry`)
     loads : Loads  [N, N·m]
     speed : float  [rad/s]  inner-ring speed (outer ring fixed); the sign gives the sense of rotation of
         the balls and cage (the equilibrium depends on |speed| only)
@@ -483,7 +477,7 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
                              "e.g. Loads(fa=1000.0, fr_y=500.0) [N, N·m]")
     _check_control(control)
     speed = _number(speed, "speed")
-    rows = rows_of(bearing)
+    rows = bearing.row_vectors()
     check_speed(speed, float(rows[0, kn.P_DM]))
     q = _check_initial(initial) if initial is not None else np.array(initial_guess(bearing, loads), dtype=float)
     la = loads.as_array()
@@ -529,7 +523,7 @@ def _report(res: StaticResult) -> None:
 
     res.basic_rating_life = iso281_life(res)
     res.reference_rating_life = reference_rating_life(res)
-    if hasattr(res.bearing, "rows"):
+    if not isinstance(res.bearing, BallBearing):  # a set or a unit: the per-row results
         from .arrangements import row_summaries
 
         res.rows = row_summaries(res)
@@ -634,7 +628,7 @@ def solve_many(bearing, loads: np.ndarray, speeds: np.ndarray, control: str = "o
     if not (np.isfinite(loads).all() and np.isfinite(speeds).all()):
         raise InputError("loads", "non-finite load or speed", "give finite values")
     if speeds.size:
-        check_speed(float(np.max(np.abs(speeds))), float(rows_of(bearing)[0, kn.P_DM]), "speeds")
+        check_speed(float(np.max(np.abs(speeds))), float(bearing.row_vectors()[0, kn.P_DM]), "speeds")
     out = run_batch(bearing, loads, speeds, control)
     return BatchResult(out["q"], out["k"], out["converged"], out["iterations"], out["residual"], out["status"],
                        out["warning_flags"])

@@ -167,7 +167,7 @@ def run_study(bearing=None, moments=None, speed: float = 0.0, control: str = "ou
     disp = np.zeros((n, 5))
     comp = np.zeros(n)
     kt = np.zeros(n)
-    rowfa = np.zeros((n, len(getattr(bearing, "rows", (0,)))))
+    rowfa = np.zeros((n, len(bearing.rows)))
     lift = np.zeros_like(rowfa, dtype=bool)
     conv = np.zeros(n, dtype=bool)
     ring = np.zeros(n, dtype=bool)
