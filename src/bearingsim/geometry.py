@@ -49,6 +49,23 @@ density ρ                 500 – 25 000 kg/m³              polymers to tungst
 
 (E, ν, ρ are checked by :class:`~bearingsim.materials.Material`, with the bounds in
 :data:`bearingsim.materials.LIMITS`.)
+
+The rows protocol
+-----------------
+Every bearing the solvers take — a :class:`BallBearing` (one row) and a
+:class:`~bearingsim.statics.arrangements.BearingSystem` (a set or a double-row unit) — answers the same
+three questions, and nothing downstream asks a bearing anything else about its rows:
+
+* ``bearing.rows`` — a tuple of :class:`Row`: the single-row geometry of every row with its axial
+  position, orientation, preload offset and first-ball azimuth (a :class:`BallBearing` is one
+  :class:`Row` at the origin);
+* ``bearing.load_point`` [m] — the axial position where the external loads act (0 for one row);
+* ``bearing.row_vectors()`` — the kernel parameter vectors of the rows, float[nrow, NPAR] in the layout
+  of :mod:`bearingsim.statics.layout`, kernel origin at the load point (:func:`row_vectors`, written
+  once, from ``rows`` and ``load_point``).
+
+Per-row physics (materials, conformities, Hertz constants, ratings) is read from ``row.bearing``; it is
+never recovered from the kernel vectors.
 """
 
 from __future__ import annotations
@@ -85,6 +102,50 @@ def _real(value, name: str) -> float:
     if not math.isfinite(value):
         raise InputError(name, f"must be finite, got {value!r}", "give a finite float")
     return float(value)
+
+
+@dataclass(frozen=True)
+class Row:
+    """One row of balls of a bearing (the rows protocol, module docstring).
+
+    Parameters
+    ----------
+    bearing : BallBearing  the single-row geometry
+    position : float  [m]  axial position of the row plane from the bearing's centre
+    orientation : float  +1 or −1 (−1 mirrors the contact angle)
+    axial_offset : float  [m]  preload offset e of the inner groove centres (local axial direction)
+    first_ball_azimuth : float  [rad]
+    """
+
+    bearing: "BallBearing"
+    position: float = 0.0
+    orientation: float = 1.0
+    axial_offset: float = 0.0
+    first_ball_azimuth: float = 0.0
+
+    def __post_init__(self):
+        if not isinstance(self.bearing, BallBearing):
+            raise InputError("rows.bearing", f"expected a single-row bearing, got {type(self.bearing).__name__}",
+                             "give a catalogue name or a single-row TOML file for every row")
+        if self.orientation not in (1.0, -1.0, 1, -1):
+            raise InputError("rows.orientation", f"must be +1 or -1, got {self.orientation!r}",
+                             "+1: contact angle as defined, -1: mirrored")
+        for name in ("position", "axial_offset", "first_ball_azimuth"):
+            v = getattr(self, name)
+            if not math.isfinite(v):
+                raise InputError(f"rows.{name}", f"must be finite, got {v!r}", "give a finite value")
+
+    def vector(self, load_point: float = 0.0) -> np.ndarray:
+        """Kernel parameter vector of this row (layout :mod:`bearingsim.statics.layout`), origin at
+        ``load_point`` [m]."""
+        return self.bearing.row_parameters(self.position - load_point, float(self.orientation), self.axial_offset,
+                                           self.first_ball_azimuth)
+
+
+def row_vectors(bearing) -> np.ndarray:
+    """Kernel parameter vectors float[nrow, NPAR] of any bearing of the rows protocol (module docstring)."""
+    lp = bearing.load_point
+    return np.array([r.vector(lp) for r in bearing.rows])
 
 
 @dataclass(frozen=True)
@@ -311,6 +372,19 @@ class BallBearing:
         ki = self.contact(1.0, True).stiffness_constant
         ko = self.contact(1.0, False).stiffness_constant
         return ki, ko, hertz.series_constant(ki, ko)
+
+    # ---- the rows protocol (module docstring) ------------------------------------------------
+    #: axial position where the loads act [m]: one row is loaded in its own plane
+    load_point = 0.0
+
+    @cached_property
+    def rows(self) -> tuple:
+        """One :class:`Row` at the origin."""
+        return (Row(self),)
+
+    def row_vectors(self) -> np.ndarray:
+        """Kernel parameter vectors float[1, NPAR] (:func:`row_vectors`)."""
+        return row_vectors(self)
 
     def row_parameters(self, x_row: float = 0.0, sign: float = 1.0, axial_offset: float = 0.0,
                        first_ball_azimuth: float = 0.0) -> np.ndarray:

@@ -72,7 +72,7 @@ def load_bearing(spec: str | Path):
     Returns a :class:`~bearingsim.geometry.BallBearing` (or, for arrangement files, the
     :class:`~bearingsim.statics.arrangements.BearingSystem` read by :mod:`bearingsim.io.arrangement`).
     """
-    if isinstance(spec, BallBearing) or hasattr(spec, "rows_parameters"):
+    if hasattr(spec, "row_vectors"):  # the rows protocol (bearingsim.geometry)
         return spec  # already a bearing (or bearing system)
     data = resolve_bearing_data(spec)
     return bearing_from_dict(data)
