@@ -46,10 +46,18 @@ def lubrication(
     roughness: str = typer.Option("0.1 um", "--roughness", help='Composite rms roughness, e.g. "0.05 um"'),
     slices: int = typer.Option(10, "--slices", help="Slices of each contact ellipse"),
     model: str = typer.Option("mixed", "--model", help="Traction model: mixed, fluid or boundary"),
+    lubrication_method: str = typer.Option("oil_bath", "--lubrication-method",
+                                           help="Palmgren's f0 column: grease, oil_mist, oil_bath or oil_jet"),
+    oil_flow: str = typer.Option(None, "--oil-flow",
+                                 help='Jet oil flow for the ball drag (Parker 1984 oil fraction), e.g. "760 cm^3/min"'),
+    oil_fraction: float = typer.Option(None, "--oil-fraction",
+                                       help="Oil volume fraction of the oil-air mixture for the ball drag, e.g. 0.001"),
     as_json: JsonOpt = False,
 ):
-    """Film thickness, Λ, regime, traction and power loss of every loaded contact (Jones kinematics)."""
+    """Film thickness, Λ, regime, traction and power loss of every loaded contact (Jones kinematics), and the
+    bearing's friction torque and heat (Palmgren and physics-based, bearingsim.friction)."""
     from ..errors import InputError
+    from ..friction import METHODS, friction_summary
     from ..io import load_bearing
     from ..lubrication import lubrication_report
     from ..statics.jones_harris import solve
@@ -67,14 +75,78 @@ def lubrication(
         raise InputError("--roughness", "must be >= 0", 'e.g. "0.05 um"')
     if slices < 1:
         raise InputError("--slices", f"must be >= 1, got {slices}", "e.g. 10")
+    flow = _parse_flow(oil_flow) if oil_flow is not None else None
+    if oil_fraction is not None and not (math.isfinite(oil_fraction) and 0.0 <= oil_fraction <= 1.0):
+        raise InputError("--oil-fraction", f"must lie in [0, 1], got {oil_fraction!r}", "e.g. 0.001")
+    if lubrication_method not in METHODS:
+        raise InputError("--lubrication-method", f"unknown method {lubrication_method!r}",
+                         f"use one of {', '.join(METHODS)}")
     res = solve(b, loads, omega, control)
     rep = lubrication_report(res, lubricant, t, sigma, n_slices=slices, model=model)
+    rep["friction"] = friction_summary(res, lubricant, t, lubrication_method=lubrication_method, roughness=sigma,
+                                       n_slices=slices, traction_model=model, oil_flow=flow,
+                                       oil_volume_fraction=oil_fraction)
     if as_json:
         typer.echo(json.dumps(rep))
     else:
         _print_report(rep, getattr(b, "name", bearing))
     if not res.converged:
         raise typer.Exit(1)
+
+
+def _parse_flow(text: str) -> float:
+    """A volume flow with its unit ("760 cm^3/min", "1.2 l/min") as m³/s (pint for the unit only)."""
+    import re
+
+    from ..errors import InputError
+    from ..units import registry
+
+    m = re.fullmatch(r"\s*([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*(\S.*?)\s*", str(text))
+    fix = 'e.g. --oil-flow "760 cm^3/min"'
+    if not m:
+        raise InputError("--oil-flow", f"expected a number with a volume-flow unit, got {text!r}", fix)
+    from pint.errors import PintError
+
+    try:
+        unit = registry().Unit(m.group(2))
+    except (PintError, ValueError, TypeError, AttributeError, SyntaxError):
+        raise InputError("--oil-flow", f"unknown unit {m.group(2)!r}", fix) from None
+    if unit.dimensionality != registry().Unit("m^3/s").dimensionality:
+        raise InputError("--oil-flow", f"{m.group(2)!r} is not a volume flow", fix)
+    value = float((float(m.group(1)) * unit).to("m^3/s").magnitude)
+    if not (math.isfinite(value) and value > 0):
+        raise InputError("--oil-flow", f"must be positive, got {text!r}", fix)
+    return value
+
+
+def _print_friction(con, f: dict) -> None:
+    """Friction torque and heat per source (trade units: mN·m, W)."""
+    from rich.table import Table
+
+    t = Table(title=f"friction torque and heat (rotating ring, {f['lubrication_method']} for Palmgren's f0)")
+    for c in ("model", "source", "M mN·m", "P W"):
+        t.add_column(c, justify="right")
+
+    def row(model, src, key):
+        m = f.get(f"{key}_N_m")
+        if m is None:
+            return
+        p = f.get(f"{key}_W")  # the physical sources carry their power; Palmgren's is M |ω|
+        if p is None:
+            p = m * abs(f["speed_rad_s"])
+        t.add_row(model, src, f"{m * 1e3:.2f}", f"{p:.2f}")
+
+    row("Palmgren", "load M_l", "palmgren_load")
+    row("Palmgren", "viscous M_v", "palmgren_viscous")
+    row("Palmgren", "total", "palmgren_torque")
+    for src in ("rolling", "spin", "sliding", "drag"):
+        row("physical", src, src)
+    row("physical", "total", "physical_torque")
+    con.print(t)
+    con.print(f"friction torque {f['friction_torque_N_m'] * 1e3:.2f} mN·m, heat {f['power_loss_W']:.1f} W "
+              f"({f['headline_model']})")
+    for n in f["notes"]:
+        con.print(f"[yellow]note:[/] {n}")
 
 
 def _print_report(rep: dict, name: str) -> None:
@@ -104,6 +176,8 @@ def _print_report(rep: dict, name: str) -> None:
                       f"{e['power_loss_W']:.3f}")
     con.print(t)
     con.print(f"total power loss {rep['total_power_loss_W']:.2f} W")
+    if rep.get("friction"):
+        _print_friction(con, rep["friction"])
 
 
 def lubricants(as_json: JsonOpt = False):
