@@ -37,6 +37,7 @@ import numpy as np
 from .errors import BearingSimError, InputError
 from .io import netcdf as nc
 from .statics.layout import STATUS_LONG_NAME, status_cf_attributes
+from .units import display_unit
 
 #: grid axes in storage order (outermost first), with their dimension for units.py and SI unit
 AXES = (("preload", "force", "N"), ("fa", "force", "N"), ("fr", "force", "N"), ("fr_z", "force", "N"),
@@ -267,7 +268,10 @@ def _schema(dims: list, shape: tuple, axes: dict) -> tuple[dict, list]:
     """Dimensions and variables of a map (:class:`bearingsim.io.netcdf.Variable`): the grid axes (a
     dimension each when gridded, else a scalar coordinate), the ``dof`` labels and :data:`_VARS`."""
     dimensions = dict(zip(dims, shape)) | {"dof": 5, "dof2": 5}
-    variables = [nc.Variable(name, (name,) if name in dims else (), u) for name, _, u in AXES]
+    # a speed axis is stored in rad/s (SI) and tells readers the unit people use (rpm)
+    variables = [nc.Variable(name, (name,) if name in dims else (), u,
+                             attrs={"units_display": display_unit(u)[0]} if u == "rad/s" else {})
+                 for name, _, u in AXES]
     variables += [nc.Variable("dof", ("dof",), dtype=str), nc.Variable("dof2", ("dof2",), dtype=str)]
     chunk = tuple(1 for _ in dims[:-2]) + tuple(shape[-2:])
     for name, (_, extra, dt, u, long) in _VARS.items():
@@ -664,7 +668,9 @@ def warm_up(bearing="skf-7011-cdga-hc") -> bool:
 
 
 def plot_map(ds, path: str | Path, var: str = "stiffness", i: int = 0, j: int = 0):
-    """Write a stiffness map K[i, j] over the (first two) grid dimensions to ``path`` (matplotlib)."""
+    """Write a stiffness map K[i, j] over the (first two) grid dimensions to ``path`` (matplotlib), axes and
+    colour bar in the units people read (:func:`bearingsim.units.display_unit`: rpm, N, N/µm, N·m/mrad …),
+    one unit per panel (the unit of the component K[i, j])."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -674,21 +680,26 @@ def plot_map(ds, path: str | Path, var: str = "stiffness", i: int = 0, j: int = 
     grid_dims = [d for d in k.dims]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     label = f"K[{DOF[i]},{DOF[j]}]" if var == "stiffness" else var
+    units = nc.component_units(ds[var].attrs, (5, 5)) if var == "stiffness" else ds[var].attrs.get("units", "")
+    unit, f_v = display_unit(units[i][j] if isinstance(units, list) else units)  # K[i, j]: its own unit
+
+    def axis(name):
+        u, f = display_unit(ds[name].attrs.get("units", ""))
+        return ds[name].values * f, f"{name} [{u}]"
+
     if len(grid_dims) >= 2:
         extra = {d: 0 for d in grid_dims[:-2]}
         kk = k.isel(**extra) if extra else k
-        y, x = grid_dims[-2], grid_dims[-1]
-        m = ax.pcolormesh(ds[x].values, ds[y].values, kk.values, shading="auto")
-        units = nc.component_units(ds[var].attrs, (5, 5)) if var == "stiffness" else ds[var].attrs.get("units", "")
-        unit = units[i][j] if isinstance(units, list) else units  # K[i, j]: its own unit (units_by_component)
+        (xv, xl), (yv, yl) = axis(grid_dims[-1]), axis(grid_dims[-2])
+        m = ax.pcolormesh(xv, yv, kk.values * f_v, shading="auto")
         fig.colorbar(m, ax=ax, label=f"{label} [{unit}]")
-        ax.set_xlabel(f"{x} [{ds[x].attrs.get('units', '')}]")
-        ax.set_ylabel(f"{y} [{ds[y].attrs.get('units', '')}]")
+        ax.set_xlabel(xl)
+        ax.set_ylabel(yl)
     elif len(grid_dims) == 1:
-        x = grid_dims[0]
-        ax.plot(ds[x].values, k.values, "o-")
-        ax.set_xlabel(f"{x} [{ds[x].attrs.get('units', '')}]")
-        ax.set_ylabel(label)
+        xv, xl = axis(grid_dims[0])
+        ax.plot(xv, k.values * f_v, "o-")
+        ax.set_xlabel(xl)
+        ax.set_ylabel(f"{label} [{unit}]")
     ax.set_title(f"{ds.attrs.get('bearing', '')}: {label}")
     fig.tight_layout()
     fig.savefig(path, dpi=120)

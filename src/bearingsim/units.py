@@ -396,6 +396,31 @@ def _dimensionality(unit) -> str:
     return d if d != "dimensionless" else "none (a pure number or an angle)"
 
 
+#: the unit of the trade for each SI unit string of our files and results (UDUNITS spelling, as in
+#: :mod:`bearingsim.io.netcdf`), with the factor: shown value = factor × SI value.  Speeds in rpm, stiffness
+#: in N/µm and N·m/mrad (cross terms N/mrad, N·m/µm), displacements in µm and mrad, pressures in MPa.
+DISPLAY_UNITS: dict[str, tuple[str, float]] = {
+    "rad/s": ("rpm", 30.0 / math.pi),
+    "N/m": ("N/µm", 1e-6),
+    "N/rad": ("N/mrad", 1e-3),
+    "N m/m": ("N·m/µm", 1e-6),
+    "N m/rad": ("N·m/mrad", 1e-3),
+    "m": ("µm", 1e6),
+    "rad": ("mrad", 1e3),
+    "Pa": ("MPa", 1e-6),
+    "N m": ("N·m", 1.0),
+    "N": ("N", 1.0),
+    "s": ("s", 1.0),
+    "K": ("K", 1.0),
+}
+
+
+def display_unit(si_unit: str) -> tuple[str, float]:
+    """(unit people read, factor) for an SI unit string of our outputs (:data:`DISPLAY_UNITS`); an unknown
+    unit is shown as it is (factor 1)."""
+    return DISPLAY_UNITS.get(str(si_unit).strip(), (str(si_unit), 1.0))
+
+
 def format_quantity(value: float, dimension: str, unit: str | None = None) -> str:
     """``value`` [SI] written in ``unit`` (default: the dimension's default unit) so that
     :func:`parse_quantity` reads it back: ``format_quantity(0.0111, "length", "mm") == "11.1 mm"``."""

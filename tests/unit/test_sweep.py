@@ -400,3 +400,41 @@ def test_killed_local_pool_worker_is_one_line_and_leaves_no_file(tmp_path):
     lines = err.decode().strip().splitlines()
     assert p.returncode == 1 and len(lines) == 1 and "worker process of the map died" in lines[0], err.decode()
     assert list(tmp_path.iterdir()) == []
+
+
+def test_map_plot_and_file_speak_the_units_of_the_trade(tmp_path):
+    """Issue 15 item 5: the map's plot axes in rpm and N, the colour bar in N/µm (the unit of K[x, x]); the file
+    keeps SI (rad/s) and names the display unit of the speed coordinate."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from bearingsim.units import display_unit
+
+    ds = sweep.map_grid("skf-7011-cdga-hc", fa=np.array([500.0, 1000.0, 2000.0]), speed=np.array([0.0, 500.0, 1000.0]),
+                        out=tmp_path / "m.nc", workers=1)
+    assert ds["speed"].attrs["units"] == "rad/s" and ds["speed"].attrs["units_display"] == "rpm"
+    captured = {}
+    real_savefig = plt.Figure.savefig
+
+    def spy(fig, *a, **k):
+        ax = fig.axes[0]
+        captured["x"], captured["y"] = ax.get_xlabel(), ax.get_ylabel()
+        captured["cbar"] = fig.axes[1].get_ylabel()
+        captured["xlim"] = ax.get_xlim()
+        captured["clim"] = ax.collections[0].get_clim()
+        return real_savefig(fig, *a, **k)
+
+    plt.Figure.savefig = spy
+    try:
+        sweep.plot_map(ds, tmp_path / "k.png")
+    finally:
+        plt.Figure.savefig = real_savefig
+    assert captured["x"] == "speed [rpm]" and captured["y"] == "fa [N]"
+    assert captured["cbar"] == "K[x,x] [N/µm]"
+    # 1000 rad/s = 9549 rpm: the axis spans the grid in rpm (pcolormesh extends half a cell beyond)
+    assert 9549.0 < captured["xlim"][1] < 1.3 * 9549.3
+    k = ds["stiffness"].isel(dof=0, dof2=0).values
+    np.testing.assert_allclose(captured["clim"], (k.min() * 1e-6, k.max() * 1e-6), rtol=1e-12)
+    assert display_unit("N m/rad") == ("N·m/mrad", 1e-3) and display_unit("furlong") == ("furlong", 1.0)
