@@ -141,6 +141,9 @@ class StaticResult:
     basic_rating_life: float | None = None
     #: ISO/TS 16281 reference rating life L10r [10⁶ rev] (:func:`bearingsim.life.reference_rating_life`)
     reference_rating_life: float | None = None
+    #: ISO 281 / ISO 76 / ISO/TS 16281 figures (:func:`bearingsim.life.rating_summary`: ratings, equivalent
+    #: loads, lives in 10⁶ rev and hours, static safety factors, estimate flags and notes), JSON-ready
+    rating: dict | None = field(repr=False, default=None)
     #: per-row figures of a bearing system (:func:`bearingsim.statics.arrangements.row_summaries`: loads,
     #: displacements at the row plane, loaded balls, peak pressures; :func:`~.arrangements.row_results` and
     #: :meth:`to_dict` add each row's ball table), else None
@@ -195,6 +198,8 @@ class StaticResult:
         }
         out["basic_rating_life_million_revolutions"] = self.basic_rating_life
         out["reference_rating_life_million_revolutions"] = self.reference_rating_life
+        if self.rating is not None:
+            out.update(self.rating)
         if self.rows is not None:
             rowof = self.balls["row"]
             out["rows"] = [{**d, "balls": [balls[j] for j in np.nonzero(rowof == d["row"])[0]]} for d in self.rows]
@@ -517,12 +522,12 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
 
 
 def _report(res: StaticResult) -> None:
-    """The report step of :func:`solve`: the lives and (for a bearing system) the per-row results, computed
-    once from the solution so that :meth:`StaticResult.to_dict` only serialises."""
-    from ..life import iso281_life, reference_rating_life
+    """The report step of :func:`solve`: the lives and static safety (:func:`bearingsim.life.apply_rating`, without
+    lubricant: the CLI adds one) and (for a bearing system) the per-row results, computed once from the solution
+    so that :meth:`StaticResult.to_dict` only serialises."""
+    from ..life import apply_rating
 
-    res.basic_rating_life = iso281_life(res)
-    res.reference_rating_life = reference_rating_life(res)
+    apply_rating(res)
     if not isinstance(res.bearing, BallBearing):  # a set or a unit: the per-row results
         from .arrangements import row_summaries
 
