@@ -22,6 +22,9 @@ Example (``examples/spindle-7011.toml``)::
     chunk = 200                         # samples per netCDF chunk (memory bound)
     checkpoint_every = "30 s"           # wall-clock time between checkpoints (or an integer: every N chunks)
     control = "outer"                   # raceway control of the quasi-static start
+    start = "consistent"                # ring (and ball centre) velocities = d/dt of the quasi-static solution
+                                        # at t = 0 (default); "rest": quasi-static positions at rest
+    ramp_in = "5 ms"                    # optional: blend the load variation in by a C² smoothstep (loads.py)
 
     [loads]                             # fa, fr (= Fr_y), fz (= Fr_z), my, mz: constant, sine, table, or a list (sum)
     fa = "3000 N"
@@ -62,6 +65,8 @@ from dataclasses import dataclass, field
 from ..errors import InputError
 from .loads import LoadHistory, SpeedHistory
 
+#: initial-state options (Case.start)
+START_MODES = ("consistent", "rest")
 #: most output samples of one run (duration / output_interval): 10⁷ samples of a 21-ball bearing are
 #: tens of GB of netCDF; more is a unit slip ("1e300 s"), not a simulation
 MAX_SAMPLES = 10**7
@@ -95,6 +100,9 @@ class Case:
     checkpoint_every: int = 1  #: chunks between checkpoints
     checkpoint_interval: float | None = None  #: wall-clock seconds between checkpoints (None: run.CHECKPOINT_SECONDS)
     integrator: str = "auto"  #: "auto", "dopri5", "ros2w" or "ros34w" (see docs/dynamics.md)
+    #: "consistent": start with the velocities of the quasi-static solution (model.quasi_static_rates);
+    #: "rest": quasi-static positions at rest (the former start; kicks the ring's modes under varying loads)
+    start: str = "consistent"
     source: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
@@ -130,6 +138,8 @@ class Case:
         if self.checkpoint_interval is not None and not (0 < self.checkpoint_interval < math.inf):
             raise InputError("checkpoint_every", f"must be a positive time, got {self.checkpoint_interval!r} s",
                              'e.g. "30 s"')
+        if self.start not in START_MODES:
+            raise InputError("start", f"unknown start {self.start!r}", "use consistent or rest")
         if not self.ring_mass > 0:
             raise InputError("inner_ring.mass", "must be positive", 'e.g. "2 kg"')
 

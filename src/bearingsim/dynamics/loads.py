@@ -13,7 +13,19 @@ constant or a linear ramp Ω₀ → Ω₁ over t_ramp (:func:`speed_ramp`, also 
 Packed layout (float64)::
 
     spec[0:5]                  start index of each channel's block
+    spec[5]                    ramp-in length T_r [s] (0: none; :func:`ramp_weight`)
     block: offset, n_s, (A, f [Hz], φ [rad]) × n_s, n_t, t_1 … t_nt [s], F_1 … F_nt
+
+Ramp-in (``ramp_in = "5 ms"`` in a case file): the *variation* of every channel is blended in by the
+C² smoothstep S(x) = 10x³ − 15x⁴ + 6x⁵ (S(0) = 0, S(1) = 1, S′ = S″ = 0 at both ends),
+
+    F_r(t) = F(0) + S(t/T_r) (F(t) − F(0))   for 0 ≤ t < T_r,   F(t) afterwards.
+
+The loads at t = 0 are unchanged (the quasi-static start is that of F(0)), and dF_r/dt = d²F_r/dt² = 0
+at t = 0, so a start at rest in the quasi-static position of F(0) is consistent with the loads (no step
+in the force rate to excite the ring's modes).  Offsets and preloads are not ramped: multiplying the
+whole load by S would start an angular-contact row unloaded (no equilibrium) and ramp the axial
+preload, which kicks the axial mode instead.
 
 TOML forms (units at the edge, :mod:`bearingsim.units`)::
 
@@ -40,6 +52,25 @@ DIMS = ("force", "force", "force", "moment", "moment")
 
 
 # ---- numba kernels -----------------------------------------------------------------------
+@njit(cache=True)
+def smoothstep(x):
+    """C² smoothstep S(x) = 10x³ − 15x⁴ + 6x⁵ on [0, 1] (0 below, 1 above) [-]: the quintic with S′ = S″ = 0
+    at both ends (the lowest-degree polynomial with those six conditions)."""
+    if x <= 0.0:
+        return 0.0
+    if x >= 1.0:
+        return 1.0
+    return x * x * x * (10.0 + x * (-15.0 + 6.0 * x))
+
+
+@njit(cache=True)
+def ramp_weight(t, tr):
+    """Weight S(t/T_r) of the load variation during the ramp-in (module docstring); 1 without a ramp."""
+    if tr <= 0.0:
+        return 1.0
+    return smoothstep(t / tr)
+
+
 @njit(cache=True)
 def speed_ramp(t, w0, w1, tr):
     """Shaft speed Ω(t) [rad/s]: constant w0 (tr = 0), or a linear ramp from w0 to w1 over tr [s]."""
@@ -92,9 +123,16 @@ def load_channel(t, spec, start):
 
 @njit(cache=True)
 def loads_at(t, spec, out):
-    """(Fa, Fr_y, Fr_z, M_y, M_z) at time t [N, N·m] from the packed specification."""
+    """(Fa, Fr_y, Fr_z, M_y, M_z) at time t [N, N·m] from the packed specification (with the ramp-in of
+    spec[5]: F(0) + S(t/T_r)(F(t) − F(0)) while t < T_r)."""
+    tr = spec[5]
+    w = ramp_weight(t, tr)
     for k in range(5):
-        out[k] = load_channel(t, spec, int(spec[k]))
+        v = load_channel(t, spec, int(spec[k]))
+        if w < 1.0:
+            v0 = load_channel(0.0, spec, int(spec[k]))
+            v = v0 + w * (v - v0)
+        out[k] = v
 
 
 def _channel_block(ch: dict) -> list:
@@ -112,21 +150,30 @@ def _channel_block(ch: dict) -> list:
     return blk
 
 
-def pack_loads(channels) -> np.ndarray:
+def pack_loads(channels, ramp_in: float = 0.0) -> np.ndarray:
     """Pack five load channels for :func:`loads_at`.
 
     ``channels``: five dicts with keys offset [N or N·m], sines (list of (amplitude,
-    frequency [Hz], phase [rad])), table (tuple of time [s] and value arrays, or None).
+    frequency [Hz], phase [rad])), table (tuple of time [s] and value arrays, or None);
+    ``ramp_in``: length of the C² ramp-in of the load variation [s] (0: none; module docstring).
     """
+    ramp_in = _check_ramp(ramp_in)
     blocks = [_channel_block(ch) for ch in channels]
-    out = [0.0] * 5
-    pos = 5
+    out = [0.0] * 5 + [ramp_in]
+    pos = 6
     for k, blk in enumerate(blocks):
         out[k] = float(pos)
         pos += len(blk)
     for blk in blocks:
         out += blk
     return np.array(out, dtype=float)
+
+
+def _check_ramp(ramp_in) -> float:
+    if isinstance(ramp_in, bool) or not isinstance(ramp_in, (int, float)) or not (0.0 <= ramp_in < math.inf):
+        raise InputError("ramp_in", f"must be a finite time ≥ 0, got {ramp_in!r}",
+                         'e.g. ramp_in = "5 ms" (several periods of the slowest ring mode), or omit it')
+    return float(ramp_in)
 
 
 def constant_loads(fa=0.0, fr_y=0.0, fr_z=0.0, m_y=0.0, m_z=0.0) -> np.ndarray:
@@ -191,10 +238,12 @@ class LoadHistory:
     """The five channels (Fa, Fr_y, Fr_z, M_y, M_z) of the inner-ring load."""
 
     channels: tuple = field(default_factory=lambda: tuple(LoadChannel() for _ in range(5)))
+    ramp_in: float = 0.0  #: length of the C² ramp-in of the load variation [s] (module docstring)
 
     def __post_init__(self):
         if len(self.channels) != 5:
             raise InputError("loads", "needs five channels (fa, fr, fz, my, mz)", "")
+        _check_ramp(self.ramp_in)
 
     def at(self, t: float) -> np.ndarray:
         """(Fa, Fr_y, Fr_z, M_y, M_z) at time t [N, N·m] (the numba kernel :func:`loads_at`)."""
@@ -204,7 +253,26 @@ class LoadHistory:
 
     def packed(self) -> np.ndarray:
         """The packed specification of the five channels (:func:`pack_loads`)."""
-        return pack_loads([c.as_dict() for c in self.channels])
+        return pack_loads([c.as_dict() for c in self.channels], self.ramp_in)
+
+    def rate(self, t: float, h: float | None = None) -> np.ndarray:
+        """dF/dt at t [N/s, N·m/s] by the central difference (F(t + h) − F(t − h)) / 2h of :meth:`at`
+        (h default: 10⁻⁴ of the shortest sine period or ramp, at most 10 µs)."""
+        if h is None:
+            h = self.rate_step()
+        return (self.at(t + h) - self.at(t - h)) / (2.0 * h)
+
+    def rate_step(self) -> float:
+        """Time step [s] for :meth:`rate`: 10⁻⁴ of the shortest time scale of the history (sine period,
+        ramp-in), at most 10 µs; the central difference's relative error is then ≈ (2π·10⁻⁴)²/6 ≈ 7·10⁻⁸."""
+        scales = [1e-1]
+        for c in self.channels:
+            scales += [1.0 / f for _, f, _ in c.sines if f > 0]
+            if c.table is not None:
+                scales += list(np.diff(c.table[0]))
+        if self.ramp_in > 0:
+            scales.append(self.ramp_in)
+        return min(1e-5, 1e-4 * min(scales))
 
     @cached_property
     def _packed(self) -> np.ndarray:

@@ -297,8 +297,13 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
     return model
 
 
-def initial_state(model: Model, static=None, speed: float | None = None) -> np.ndarray:
+def initial_state(model: Model, static=None, speed: float | None = None, rates: np.ndarray | None = None) -> np.ndarray:
     """State vector near steady state from a quasi-static solution.
+
+    ``rates`` (optional, float[n_state], from :func:`quasi_static_rates`): the time derivative of the
+    quasi-static positions (inner ring q, ball centres) at t = 0; it is added to the velocities, so that the
+    start moves with the quasi-static solution of time-varying loads (a clean start, docs/dynamics.md).
+    Without it the ring starts at rest (and the balls with their orbital velocity only).
 
     ``static`` is a :class:`bearingsim.statics.jones_harris.StaticResult` of the same
     bearing: ring displacement q, per-ball centres (x1_m, x2_m from the outer groove
@@ -352,7 +357,67 @@ def initial_state(model: Model, static=None, speed: float | None = None) -> np.n
         if static is not None:
             wm = float(np.mean(static.balls["orbital_speed_rad_s"][b0:b0 + z])) * (1.0 if omega >= 0 else -1.0)
         y[o + 9] = wm
+    if rates is not None:
+        rates = np.asarray(rates, dtype=float)
+        if rates.shape != y.shape or not np.all(np.isfinite(rates)):
+            raise InputError("rates", f"need {y.shape[0]} finite values, got shape {rates.shape}",
+                             "pass the result of quasi_static_rates(model, ...)")
+        y[ly.R_QD:ly.R_QD + 5] += rates[0:5]
+        for k in range(model.n_balls):
+            o = ly.N_RING + ly.N_BALL * k
+            y[o + ly.B_VEL:o + ly.B_VEL + 3] += rates[o + ly.B_POS:o + ly.B_POS + 3]
     return y
+
+
+def _static_loads(loads, t: float, load_point: float):
+    """:class:`bearingsim.statics.jones_harris.Loads` of a load history at t, the moments moved from the load
+    point (axial position ``load_point`` [m]) to the origin of the bearing's kernel rows (as in
+    :func:`bearingsim.dynamics.run.build`)."""
+    from ..statics import jones_harris as jh
+
+    f = loads.at(t)
+    return jh.Loads(fa=f[0], fr_y=f[1], fr_z=f[2], m_y=f[3] - load_point * f[2], m_z=f[4] + load_point * f[1])
+
+
+def quasi_static_rates(model: Model, bearing, loads, static, speed: float, load_point: float = 0.0,
+                       control: str = "outer", t0: float = 0.0, h: float | None = None) -> np.ndarray:
+    """d/dt of the quasi-static positions at t0 (inner ring q, ball centres), float[n_state] [m/s, rad/s].
+
+    The quasi-static solution q_s(t) of the loads F(t) (Jones–Harris statics, ``static`` = q_s(t0)) moves
+    with the loads; a start at q_s(t0) at rest is not on that trajectory: with q = q_s + e the ring's
+    equation M ë + K e = −M q̈_s starts with e = 0, ė = −q̇_s and rings with amplitude |q̇_s|/ω_n in every
+    mode ω_n (the kick of issue 13).  Starting with q̇ = q̇_s(t0) removes it to first order (what remains is
+    forced by q̈_s, amplitude |q̈_s|/ω_n², smaller by ω_load/ω_n).  To first order q̇_s = K⁻¹ dF/dt with K the
+    static stiffness; here it is the central difference of two converged solves,
+    q̇_s ≈ (q_s(t0 + h) − q_s(t0 − h)) / 2h with h = ``loads.rate_step()`` (O(h²) error; the solves start
+    from q_s(t0), tolerance far below the change of q over h), which also gives the balls' centre velocities
+    in the groove (their positions x1, x2 follow the contact angles).  Ball spins and the cage are left at
+    their quasi-static values at t0.  Returns zeros when the loads do not change at t0 (e.g. a ramp-in).
+    """
+    from ..statics import jones_harris as jh
+
+    if h is None:
+        h = loads.rate_step()
+    if not (h > 0 and math.isfinite(h)):
+        raise InputError("h", f"must be a positive time step, got {h!r} s", "omit it (default from the loads)")
+    rates = np.zeros(model.n_state)
+    if not np.any(loads.rate(t0, h)):
+        return rates
+    w = abs(speed)
+    states = []
+    for tt in (t0 - h, t0 + h):
+        res = jh.solve(bearing, _static_loads(loads, tt, load_point), w, control=control,
+                       initial=np.asarray(static.displacement, dtype=float))
+        if not res.converged:
+            raise InputError("loads", f"no quasi-static equilibrium at t = {tt:.6g} s ({res.status}) for the "
+                             "consistent start", 'set start = "rest" or give loads the bearing can carry')
+        states.append(initial_state(model, res, speed))
+    dy = (states[1] - states[0]) / (2.0 * h)
+    rates[0:5] = dy[0:5]
+    for k in range(model.n_balls):
+        o = ly.N_RING + ly.N_BALL * k
+        rates[o:o + 3] = dy[o:o + 3]
+    return rates
 
 
 def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-3,

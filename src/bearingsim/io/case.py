@@ -7,6 +7,7 @@ dataclass and its checks); this module only reads: units are parsed here, once, 
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 
 from ..dynamics.case import Case
@@ -18,7 +19,7 @@ from .files import read_toml
 
 _KEYS = {"bearing", "lubricant", "temperature", "speed", "duration", "output_interval", "traction", "n_slices",
          "tolerance", "contact_damping", "gravity", "load_point", "chunk", "control", "loads", "inner_ring", "cage",
-         "lubrication", "name", "description", "checkpoint_every", "integrator"}
+         "lubrication", "name", "description", "checkpoint_every", "integrator", "start", "ramp_in"}
 
 #: elastic-cage ring data in [cage] (bearingsim.cage_modes.CageRing fields) and their dimensions
 _CAGE_RING = {"axial_width": "length", "radial_thickness": "length", "pocket_diameter": "length",
@@ -125,11 +126,21 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
     for k, v in (("tolerance", tol), ("contact_damping", damping)):
         if isinstance(v, bool) or not isinstance(v, (int, float)):
             raise InputError(k, f"expected a number, got {v!r}", "e.g. 1e-6")
+    start = data.get("start", "consistent")
+    if not isinstance(start, str):
+        raise InputError("start", f"expected a name, got {start!r}"[:160], 'use start = "consistent" or "rest"')
+    loads = parse_loads(data.get("loads"))
+    if "ramp_in" in data:
+        ramp = parse_quantity(data["ramp_in"], "time", "ramp_in")
+        if not (math.isfinite(ramp) and ramp >= 0):
+            raise InputError("ramp_in", f"must be a finite time ≥ 0, got {data['ramp_in']!r}"[:160],
+                             'e.g. ramp_in = "5 ms"')
+        loads = replace(loads, ramp_in=ramp)
     every = data.get("checkpoint_every", 1)  # chunks, or a wall-clock time such as "30 s"
     interval = None
     if isinstance(every, str):
         interval, every = parse_quantity(every, "time", "checkpoint_every"), 1
-    return Case(bearing=bearing, loads=parse_loads(data.get("loads")), speed=parse_speed(data["speed"]),
+    return Case(bearing=bearing, loads=loads, speed=parse_speed(data["speed"]),
                 duration=parse_quantity(data["duration"], "time", "duration"),
                 output_interval=parse_quantity(data["output_interval"], "time", "output_interval"),
                 lubricant=lub, temperature=temperature, traction=traction, n_slices=data.get("n_slices", 8),
@@ -137,7 +148,7 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
                 ring_mass=ring_mass, ring_inertia=inertia, cage=cage, lubrication=data.get("lubrication", {}),
                 chunk=data.get("chunk", 200), control=data.get("control", "outer"),
                 checkpoint_every=every, checkpoint_interval=interval, integrator=data.get("integrator", "auto"),
-                source=data)
+                start=start, source=data)
 
 
 def load_case(path) -> Case:
