@@ -1,0 +1,58 @@
+"""The ``report`` command: one operating point of a bearing as an HTML page with its figures
+(:func:`bearingsim.report.bearing.bearing_report`)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from . import options
+from .console import announce_compilation, make_console
+from .options import BearingArg, ControlOpt, FaOpt, FrOpt, FzOpt, MomentOpt, MyOpt, SpeedOpt
+
+
+def report(
+    bearing: BearingArg,
+    out: options.out_option("Folder for report.html and its figures (created if missing)") = Path("report"),
+    fa: FaOpt = None,
+    fr: FrOpt = None,
+    fz: FzOpt = None,
+    moment: MomentOpt = None,
+    my: MyOpt = None,
+    speed: SpeedOpt = None,
+    lubricant: Optional[str] = typer.Option(None, "--lubricant",
+                                            help="Library name or TOML: adds friction torque and heat"),
+    temperature: str = typer.Option("60 degC", "--temperature", help='Operating temperature, e.g. "60 degC"'),
+    map_file: Optional[Path] = typer.Option(None, "--map", help="A map file (bearingsim map --out) for the "
+                                                                "stiffness-vs-speed figure"),
+    control: ControlOpt = "outer",
+):
+    """Write an HTML report (inputs and sources, results in engineering units, lives, safety, friction, plots)."""
+    from ..io import check_path
+    from ..report.bearing import bearing_report
+    from ..units import parse_quantity
+    from .output import output_folder
+
+    b_loads = options.parse_loads(fa, fr, fz, moment, my)
+    omega = options.parse_speed(speed)
+    t = parse_quantity(temperature, "temperature", "--temperature") if lubricant is not None else None
+    if map_file is not None:
+        check_path(map_file, "--map")
+    from ..io import load_bearing
+
+    b = load_bearing(bearing)  # read (and refused) before the output folder is created
+    announce_compilation()
+    folder = output_folder(out)
+    page = bearing_report(b, b_loads, omega, out_dir=folder, lubricant=lubricant, temperature=t, control=control,
+                          map_file=map_file)
+    make_console().print(f"report written: {page}")
+
+
+def register(app: typer.Typer) -> None:
+    """Add ``report`` to the bearingsim CLI."""
+    app.command("report")(report)
+
+
+__all__ = ["register", "report"]
