@@ -10,8 +10,8 @@ Thin: parse, call the API, print.  The package:
   first-run compilation note;
 * one module per command group, module-level command functions registered here: :mod:`.static` (catalog, static,
   reproduce spindle-axial-stiffness), :mod:`.sweep` (map, export ross, reproduce hub-static), :mod:`.dynamics`
-  (simulate, reproduce hub-hysteresis), :mod:`.lubrication` (lubrication, lubricants, traction-curve),
-  :mod:`.cage` (cage-modes).
+  (simulate), :mod:`.hysteresis` (reproduce hub-hysteresis), :mod:`.lubrication` (lubrication, lubricants,
+  traction-curve), :mod:`.cage` (cage-modes).
 
 Importing this package loads typer only: the numerical libraries are imported inside the commands, so that
 ``bearingsim --version``, ``--help`` and usage errors stay fast.  No module of the package imports from here.
@@ -23,7 +23,7 @@ import sys
 
 import typer
 
-from . import cage, dynamics, lubrication, static, sweep
+from . import cage, dynamics, hysteresis, lubrication, report, static, sweep
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="bearingsim: ball bearing statics, stiffness, lubrication and dynamics.")
@@ -53,6 +53,8 @@ cage.register(app)
 lubrication.register(app)
 sweep.register(app, reproduce_app)
 dynamics.register(app, reproduce_app)
+hysteresis.register(app, reproduce_app)
+report.register(app)
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -1,5 +1,5 @@
-"""Commands of the dynamic engine: ``bearingsim simulate CASE.toml --out run.nc [--resume]`` and
-``bearingsim reproduce hub-hysteresis CASE.toml`` ([S1] Figs. 7–9).  Registered on the app by :func:`register`.
+"""Commands of the dynamic engine: ``bearingsim simulate CASE.toml --out run.nc [--resume]``
+(``reproduce hub-hysteresis`` is in :mod:`.hysteresis`).  Registered on the app by :func:`register`.
 """
 
 from __future__ import annotations
@@ -15,17 +15,6 @@ from .options import out_option
 
 CaseArg = Annotated[Path, typer.Argument(help="case TOML file (see examples/spindle-7011.toml)")]
 SimulateOut = out_option("output netCDF file (streamed in chunks)", "-o")
-HysteresisOut = out_option("folder for the runs, CSV and loop plot")
-
-
-def _numbers(text: str, field: str) -> list[float]:
-    from ..errors import InputError
-
-    try:
-        vals = [float(x) for x in text.split(",") if x.strip()]
-    except ValueError:
-        raise InputError(field, f"cannot read {text!r}", "give comma-separated numbers, e.g. 10,50,100") from None
-    return vals
 
 
 def simulate(case: CaseArg,
@@ -89,34 +78,10 @@ def simulate(case: CaseArg,
                           f"{ss['cage_peak_stress_max'] / 1e6:.3g} MPa")
 
 
-def reproduce_hub_hysteresis(
-    case: Path = typer.Argument(..., help="hub case TOML (e.g. examples/hub-moment-50hz.toml)"),
-    speeds: str = typer.Option("100", "--speeds", help="vehicle speeds [km/h], comma-separated (seed: 10,50,100)"),
-    frequencies: str = typer.Option("50", "--frequencies", help="load frequencies [Hz] (seed: 1,10,50)"),
-    cycles: int = typer.Option(3, "--cycles", help="load cycles per run (the first is a start-up)"),
-    out: HysteresisOut = Path("out"),
-):
-    """Hub-bearing hysteresis (Sakaguchi & Shibutani [S1], Figs. 7–9): tilt–moment hysteresis W_H at 0.3 kN·m
-    per speed and load frequency (long runs)."""
-    from ..studies.hub_dynamic import run_study
-    from .output import output_folder, write_study, writing
-
-    con = make_console()
-    out = output_folder(out, "--out")
-    announce_compilation()
-    with writing("--out", out):
-        study = run_study(case, _numbers(speeds, "--speeds"), _numbers(frequencies, "--frequencies"), cycles,
-                          out_dir=out, progress=True, console=make_console(stderr=True))
-    study.print_table(con)
-    csv, png = write_study(study, out, "hub_hysteresis.csv", "hub_hysteresis_loops.png")
-    con.print(f"wrote {csv} and {png}")
-
-
 def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None:
-    """Add ``simulate`` (and, with ``reproduce_app``, ``reproduce hub-hysteresis``) to the typer app."""
+    """Add ``simulate`` to the typer app (``reproduce_app`` is accepted and unused: ``reproduce hub-hysteresis``
+    is registered by :mod:`.hysteresis`)."""
     app.command("simulate")(simulate)
-    if reproduce_app is not None:
-        reproduce_app.command("hub-hysteresis")(reproduce_hub_hysteresis)
 
 
-__all__ = ["register", "reproduce_hub_hysteresis", "simulate"]
+__all__ = ["register", "simulate"]
