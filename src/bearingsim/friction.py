@@ -53,7 +53,8 @@ import numpy as np
 
 from .errors import InputError
 
-#: Palmgren's f0 by bearing type and lubrication method (Harris & Kotzalas 2007, after Palmgren 1959):
+#: Palmgren's f0 by bearing type and lubrication method (Harris & Kotzalas 2007, after Palmgren 1959; values as
+#: recalled from the book's table, not re-checked against it in this session — docs/friction.md):
 #: (low, high) of the tabulated range; the mean is used.  "oil_jet" is the column "oil bath, vertical
 #: shaft, or oil jet".  Paired / double-row angular contact sets use twice the single-row values (the
 #: table's double-row column), which is what summing two single rows gives.
@@ -62,9 +63,10 @@ PALMGREN_F0 = {
     "angular_contact": {"grease": (2.0, 2.0), "oil_mist": (1.7, 1.7), "oil_bath": (3.3, 3.3),
                         "oil_jet": (6.6, 6.6)},
 }
-#: Palmgren's f1 = z (P0/C0)^y: (z_low, z_high, y) per bearing type (Harris & Kotzalas 2007, after Palmgren 1959)
+#: Palmgren's f1 = z (P0/C0)^y: (z_low, z_high, y) per bearing type (Harris & Kotzalas 2007, after Palmgren 1959;
+#: as recalled, not re-checked in this session)
 PALMGREN_F1 = {"deep_groove": (0.0004, 0.0006, 0.55), "angular_contact": (0.001, 0.001, 0.33)}
-#: ISO 76:2006 table 1, single-row angular contact ball bearings: (α [deg], Y0); X0 = 0.5
+#: ISO 76:2006 table 1, single-row angular contact ball bearings: (α [deg], Y0); X0 = 0.5 (as recalled)
 ISO76_Y0 = ((15.0, 0.46), (20.0, 0.42), (25.0, 0.38), (30.0, 0.33), (35.0, 0.29), (40.0, 0.26), (45.0, 0.22))
 #: ISO 76:2006: contact stress at the most heavily loaded contact that defines C0 of ball bearings [Pa]
 ISO76_STRESS = 4.2e9
