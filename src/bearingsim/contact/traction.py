@@ -60,6 +60,19 @@ Models (one function each, numba kernels + Python wrappers that check input):
   after eq. 5: N e = P_x R_e = P_x,1 R_1 = P_x,2 R_2 = 2 F_r0 R_e), acting through that
   body's centre of curvature, in the rolling direction.
 
+* Small-slip slope (creep; :func:`creep_slope`): at s → 0 the tangential force of a rolling contact is
+  linear in the slide–roll ratio, F = K s, through two compliances in series ([J&T 1977] fit the linear
+  region of their measured curves only after the solids' compliance is removed, and note it is comparable
+  with the film's):
+    - the film: the elastic limit of the Maxwell film above, τ̄ = G_f s ℓ/(2h) over the contact area πab
+      (ℓ = 2 × the semi-axis in the rolling direction), K_f = G_f ℓ π a b/(2h);
+    - the solids: Kalker's linear theory of rolling contact (Kalker 1967, thesis, Delft; Kalker 1990,
+      *Three-dimensional elastic bodies in rolling contact*, Kluwer, §3): F = G c² C₁₁ ξ with c² = a b, G the
+      combined shear modulus 2/G = 1/G₁ + 1/G₂ and C₁₁(a/b, ν) the longitudinal creep coefficient of his
+      table (:data:`KALKER_C11`; a the semi-axis in the rolling direction, b across it — in a ball bearing a
+      is the Hertz *minor* semi-axis), K_s = G a b C₁₁;
+    1/K = 1/K_f + 1/K_s, dμ/ds = K/Q.  Either compliance → 0 recovers the other.
+
 Units: stresses and pressures [Pa], speeds [m/s], lengths [m], temperatures [K] (°C only
 inside Dyson's formula), viscosity [Pa·s].
 """
@@ -181,6 +194,122 @@ def rolling_resistance_ir(eta0, u, w_line, length):
     return MARTIN_ROLLING * length * math.sqrt(eta0 * u * w_line)
 
 
+# --------------------------------------------------------------------------- creep (small slip)
+#: Kalker's longitudinal creep coefficient C₁₁ (Kalker 1967 thesis, table of the linear theory; reproduced in
+#: Kalker 1990, Table 3.1 and in vehicle-dynamics texts).  Rows: the ellipse's semi-axis ratio g, first
+#: a/b = 0.1 … 1 (a along the rolling direction shorter: ball bearings), then b/a = 0.9 … 0.1; columns ν = 0,
+#: 0.25, 0.5.  The limit a/b → 0 is π²/(4(1 − ν)) (Kalker; the strip of Carter's 2-D theory).
+KALKER_NU = (0.0, 0.25, 0.5)
+KALKER_C11_A_OVER_B = {  # a/b: (ν = 0, 0.25, 0.5)
+    0.1: (2.51, 3.31, 4.85), 0.2: (2.59, 3.37, 4.81), 0.3: (2.68, 3.44, 4.80), 0.4: (2.78, 3.53, 4.82),
+    0.5: (2.88, 3.62, 4.83), 0.6: (2.98, 3.72, 4.91), 0.7: (3.09, 3.81, 4.97), 0.8: (3.19, 3.91, 5.05),
+    0.9: (3.29, 4.01, 5.12), 1.0: (3.40, 4.12, 5.20)}
+KALKER_C11_B_OVER_A = {  # b/a: (ν = 0, 0.25, 0.5)
+    0.9: (3.51, 4.22, 5.30), 0.8: (3.65, 4.36, 5.42), 0.7: (3.82, 4.54, 5.58), 0.6: (4.06, 4.78, 5.80),
+    0.5: (4.37, 5.10, 6.11), 0.4: (4.84, 5.57, 6.57), 0.3: (5.57, 6.34, 7.34), 0.2: (6.96, 7.78, 8.82),
+    0.1: (10.7, 11.7, 12.9)}
+
+
+def _c11_grid() -> tuple[np.ndarray, np.ndarray]:
+    """(x, C₁₁[x, ν]) on x = log(a/b): the a/b → 0 limit, the a/b rows and the b/a rows of the table."""
+    xs = [math.log(0.01)]
+    vals = [[math.pi**2 / (4.0 * (1.0 - nu)) for nu in KALKER_NU]]  # a/b → 0 (reached within 1 % at 0.1)
+    for g in sorted(KALKER_C11_A_OVER_B):
+        xs.append(math.log(g))
+        vals.append(list(KALKER_C11_A_OVER_B[g]))
+    for g in sorted(KALKER_C11_B_OVER_A, reverse=True):
+        xs.append(math.log(1.0 / g))
+        vals.append(list(KALKER_C11_B_OVER_A[g]))
+    return np.array(xs), np.array(vals)
+
+
+def kalker_c11(a_roll: float, b_lat: float, poisson: float) -> float:
+    """Kalker's longitudinal creep coefficient C₁₁ [-] of an elliptic contact with semi-axis ``a_roll`` [m] in
+    the rolling direction and ``b_lat`` [m] across it, Poisson ratio ν ∈ [0, 0.5].
+
+    Linear interpolation of :data:`KALKER_C11_A_OVER_B` / :data:`KALKER_C11_B_OVER_A` in log(a/b) and in ν
+    (between table rows the coefficient varies by < 4 %, so the interpolation error is well below that);
+    below a/b = 0.1 towards the strip limit π²/(4(1 − ν)) (taken at a/b = 0.01).  Valid 0.01 ≤ a/b ≤ 10.
+    """
+    for name, v in (("a_roll", a_roll), ("b_lat", b_lat)):
+        if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            raise InputError(name, f"must be a positive length, got {v!r}", "give the contact semi-axis in m")
+    if not (isinstance(poisson, (int, float)) and 0.0 <= poisson <= 0.5):
+        raise InputError("poisson", f"must lie in [0, 0.5], got {poisson!r}", "e.g. 0.3 for steel")
+    x = math.log(a_roll / b_lat)
+    xs, vals = _c11_grid()
+    if not (xs[0] - 1e-12 <= x <= xs[-1] + 1e-12):
+        raise InputError("a_roll/b_lat", f"ratio {a_roll / b_lat:.3g} outside Kalker's table (0.01 … 10)",
+                         "Kalker tabulates 0.1 ≤ a/b ≤ 10 (here extended to the strip limit at a/b = 0.01)")
+    col = np.array([np.interp(x, xs, vals[:, j]) for j in range(3)])
+    return float(np.interp(poisson, KALKER_NU, col))
+
+
+def solid_creep_stiffness(a_roll: float, b_lat: float, shear_modulus: float, poisson: float) -> float:
+    """K_s = G a b C₁₁ [N per unit slide–roll ratio]: Kalker's linear longitudinal creep force of the elastic
+    solids, F = G a b C₁₁ s (Kalker 1990 eq. 3.5 form, c² = ab); G [Pa] the combined shear modulus."""
+    if not (math.isfinite(shear_modulus) and shear_modulus > 0):
+        raise InputError("shear_modulus", f"must be positive, got {shear_modulus!r}", "e.g. 79e9 Pa for steel")
+    return shear_modulus * a_roll * b_lat * kalker_c11(a_roll, b_lat, poisson)
+
+
+def film_creep_stiffness(a_roll: float, b_lat: float, film_modulus: float, film_thickness: float) -> float:
+    """K_f = G_f ℓ π a b /(2 h) [N per unit slide–roll ratio], ℓ = 2 a_roll: the small-slip limit of the
+    elastic–plastic film of :func:`elastic_plastic_mean_stress` (τ̄ = τ_e/2, τ_e = G_f s ℓ/h) over the Hertz
+    area πab (Johnson & Tevaarwerk 1977, elastic regime of their Maxwell model).  ``film_modulus`` = inf: a
+    rigid film (infinite stiffness)."""
+    if not (film_modulus > 0):
+        raise InputError("film_modulus", f"must be positive, got {film_modulus!r}", "e.g. 0.3e9 Pa, or inf")
+    if math.isinf(film_modulus):
+        return math.inf
+    if not (math.isfinite(film_thickness) and film_thickness > 0):
+        raise InputError("film_thickness", f"must be a positive length, got {film_thickness!r}",
+                         "give the central film thickness in m (bearingsim.contact.ehl.film_thickness)")
+    return film_modulus * 2.0 * a_roll * math.pi * a_roll * b_lat / (2.0 * film_thickness)
+
+
+def series_stiffness(k_film: float, k_solid: float) -> float:
+    """1/K = 1/K_f + 1/K_s [N per unit slip] (either may be inf: a rigid element)."""
+    if not (k_film > 0 and k_solid > 0):
+        raise InputError("creep stiffness", f"must be positive, got {k_film!r}, {k_solid!r}", "")
+    if math.isinf(k_film):
+        return k_solid
+    if math.isinf(k_solid):
+        return k_film
+    return 1.0 / (1.0 / k_film + 1.0 / k_solid)
+
+
+def creep_slope(load: float, a_roll: float, b_lat: float, shear_modulus: float, poisson: float,
+                film_modulus: float = math.inf, film_thickness: float | None = None,
+                solids: bool = True) -> float:
+    """dμ/ds at s → 0 [1/slip] of a lubricated (or dry, film_modulus = inf) elliptic rolling contact.
+
+    ``load`` Q [N]; ``a_roll``, ``b_lat`` the Hertz semi-axes along and across the rolling direction [m]
+    (ball bearing: a_roll = the minor semi-axis b of :class:`~bearingsim.contact.hertz.HertzContact`);
+    ``shear_modulus`` G of the solids [Pa] (2/G = 1/G₁ + 1/G₂), ``poisson`` ν; ``film_modulus`` G_f [Pa] (the
+    film's elastic shear modulus; inf: no film compliance), ``film_thickness`` h [m]; ``solids=False`` drops
+    the solids' compliance (the film alone, as the traction kernel has it).  Returns K/Q with
+    1/K = 1/K_f + 1/K_s (module docstring: Kalker for the solids, Johnson & Tevaarwerk for the film).
+    """
+    if not (math.isfinite(load) and load > 0):
+        raise InputError("load", f"must be positive, got {load!r}", "give the contact load in N")
+    k_f = film_creep_stiffness(a_roll, b_lat, film_modulus, film_thickness if film_thickness is not None else 0.0) \
+        if not math.isinf(film_modulus) else math.inf
+    k_s = solid_creep_stiffness(a_roll, b_lat, shear_modulus, poisson) if solids else math.inf
+    if math.isinf(k_f) and math.isinf(k_s):
+        raise InputError("creep_slope", "both compliances are zero (rigid film and solids)",
+                         "give a film modulus and thickness, or keep solids=True")
+    return series_stiffness(k_f, k_s) / load
+
+
+def dyson_shear_modulus(pressure: float, temperature: float) -> float:
+    """G_∞ = 1.2 p/(2.52 + 0.024 t) − 10⁸ [Pa] (Dyson's formula as in Zhou & Hoeprich 1991 eq. 37; p [Pa],
+    t [°C] = temperature [K] − 273.15): the limiting elastic shear modulus the traction kernel uses for the film
+    (its τ_L = 0.25 G_∞).  Floored at 0."""
+    t = temperature - 273.15
+    return max(0.0, 1.2 * pressure / (2.52 + 0.024 * t) - 1e8)
+
+
 # --------------------------------------------------------------------------- Python API
 
 
@@ -269,4 +398,6 @@ def rolling_resistance(regime_name: str, eta0: float, alpha: float, e_eff: float
 __all__ = ["four_parameter", "fit_four_parameter", "traction_curve", "mixed_weight", "mixed_coefficient",
            "roelands_viscosity", "limiting_shear_stress", "fluid_shear_stress", "elastic_plastic_mean_stress",
            "rolling_resistance_zh",
-           "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING"]
+           "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING", "KALKER_C11_A_OVER_B", "KALKER_C11_B_OVER_A",
+           "kalker_c11", "solid_creep_stiffness", "film_creep_stiffness", "series_stiffness", "creep_slope",
+           "dyson_shear_modulus"]
