@@ -291,12 +291,13 @@ CONTAMINATION = {
 }
 
 
-def reliability_factor(reliability: float) -> float:
-    """a1 [-] for a reliability [%] of ISO 281:2007 table 12 (90 % … 99.95 %; other values refused)."""
+def reliability_factor(reliability: float, field: str = "reliability") -> float:
+    """a1 [-] for a reliability [%] of ISO 281:2007 table 12 (90 % … 99.95 %; other values refused, naming
+    ``field``)."""
     for k, v in RELIABILITY_A1.items():
         if abs(k - reliability) < 1e-9:
             return v
-    raise InputError("reliability", f"{reliability!r} % is not a reliability of ISO 281:2007 table 12",
+    raise InputError(field, f"{reliability!r} % is not a reliability of ISO 281:2007 table 12",
                      "use one of " + ", ".join(f"{k:g}" for k in RELIABILITY_A1))
 
 

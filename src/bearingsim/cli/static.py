@@ -1,4 +1,4 @@
-"""Commands of the quasi-static model: ``catalog``, ``static`` and ``reproduce spindle-axial-stiffness``.
+"""Commands of the quasi-static model: ``static`` and ``reproduce spindle-axial-stiffness``.
 
 Thin: parse the options (:mod:`.options`), call the API (:func:`bearingsim.statics.jones_harris.solve`), print.
 """
@@ -8,6 +8,7 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
+from typing import Optional
 
 import typer
 
@@ -27,21 +28,6 @@ from .options import (
 )
 
 
-def catalog():
-    """List the built-in bearing catalogue."""
-    from rich.table import Table
-
-    from ..io import catalog_entries
-
-    t = Table(title="bearingsim catalogue")
-    t.add_column("name")
-    t.add_column("type")
-    t.add_column("description")
-    for e in catalog_entries():
-        t.add_row(e["name"], e["type"], e["description"])
-    make_console().print(t)
-
-
 def static(
     bearing: BearingArg,
     fa: FaOpt = None,
@@ -51,26 +37,158 @@ def static(
     my: MyOpt = None,
     speed: SpeedOpt = None,
     control: ControlOpt = "outer",
+    lubricant: Optional[str] = typer.Option(
+        None, "--lubricant", help="Library name (bearingsim lubricants) or TOML: modified rating life (ISO 281 a_ISO) "
+        "and friction torque"),
+    temperature: Optional[str] = typer.Option(None, "--temperature",
+                                              help='Operating (oil) temperature with --lubricant, e.g. "70 degC"'),
+    contamination: str = typer.Option(
+        "normal", "--contamination", help="Cleanliness level of ISO 281 table 11 (extreme, high, normal, slight, "
+        "typical, severe, very_severe) or the factor e_C (0-1)"),
+    reliability: float = typer.Option(90.0, "--reliability", help="Reliability in % for the modified life "
+                                      "(ISO 281 table 12: 90, 95, 96, 97, 98, 99 ... 99.95)"),
     as_json: JsonOpt = False,
 ):
-    """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment)."""
+    """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment), with the ISO 281
+    rating lives (hours at the speed), the ISO/TS 16281 reference rating life and the ISO 76 static safety."""
     from ..io import load_bearing
+    from ..life import apply_rating, reliability_factor
     from ..statics.jones_harris import solve
 
     announce_compilation()
     b = load_bearing(bearing)
     loads = options.parse_loads(fa, fr, fz, moment, my)
     omega = options.parse_speed(speed)
+    lub, t = _operating_lubricant(lubricant, temperature)
+    ec = _contamination(contamination)
+    reliability_factor(reliability, "--reliability")
     res = solve(b, loads, omega, control)
+    friction = None
+    if res.converged:
+        apply_rating(res, lub, t, ec, reliability)
+        if lub is not None:
+            friction = _friction(res, lub, t)
     if as_json:
-        typer.echo(json.dumps(res.to_dict()))
+        d = res.to_dict()
+        if friction is not None:
+            d["friction"] = friction
+            d["friction_torque_N_m"] = friction.get("friction_torque_N_m")
+            d["power_loss_W"] = friction.get("power_loss_W")
+        typer.echo(json.dumps(d))
     else:
-        print_static(res)
+        print_static(res, friction)
     if not res.converged:
         raise typer.Exit(1)
 
 
-def print_static(res) -> None:
+def _operating_lubricant(lubricant, temperature):
+    """(Lubricant or None, temperature [K] or None) from the options; a lubricant needs a temperature."""
+    from ..errors import InputError
+    from ..units import parse_quantity
+
+    if lubricant is None:
+        if temperature is not None:
+            raise InputError("--temperature", "a temperature without --lubricant is not used",
+                             'give the lubricant too, e.g. --lubricant iso-vg-68 --temperature "70 degC"')
+        return None, None
+    if temperature is None:
+        raise InputError("--temperature", "the modified rating life and friction need the operating temperature",
+                         'e.g. --temperature "70 degC"')
+    from ..lubricants import get_lubricant
+
+    lub = get_lubricant(lubricant, "--lubricant")
+    t = parse_quantity(temperature, "temperature", "--temperature")
+    lub.check_temperature(t, "--temperature")
+    return lub, t
+
+
+def _contamination(value: str):
+    """The --contamination option: a level name of ISO 281 table 11 or a factor e_C in [0, 1]."""
+    from ..errors import InputError
+    from ..life import CONTAMINATION
+
+    try:
+        v = float(value)
+    except ValueError:
+        key = value.strip().lower().replace("-", "_").replace(" ", "_")
+        if key not in CONTAMINATION:
+            raise InputError("--contamination", f"unknown cleanliness level {value!r}",
+                             "use one of " + ", ".join(CONTAMINATION) + " (ISO 281:2007 table 11) or a factor 0-1") \
+                from None
+        return key
+    if not 0.0 <= v <= 1.0:
+        raise InputError("--contamination", f"e_C must lie in [0, 1], got {value}", "e.g. --contamination 0.5")
+    return v
+
+
+def _friction(res, lub, t):
+    """Friction torque and power loss of the operating point (:func:`bearingsim.friction.friction_summary`),
+    None at rest or when the friction model is not available."""
+    if res.speed == 0:
+        return None
+    try:
+        from ..friction import friction_summary
+    except ImportError:  # pragma: no cover - the friction module is part of the package since issue 15
+        return None
+    return friction_summary(res, lub, t)
+
+
+def _kn(v) -> str:
+    return "—" if v is None else f"{v / 1e3:.4g} kN"
+
+
+def _hours(v) -> str:
+    return "—" if v is None else f"{v:,.0f} h"
+
+
+def print_rating(con, res, friction=None) -> None:
+    """The ratings, lives (hours), static safety and friction of a result, estimates flagged (trade units)."""
+    r = getattr(res, "rating", None)
+    if not r:
+        return
+    est = set(r.get("estimated", ()))
+
+    def flag(key):
+        return " [yellow](estimated)[/]" if key in est else ""
+
+    rpm = abs(res.speed) * 30 / math.pi
+    con.print(f"ratings: C = {_kn(r['dynamic_load_rating_N'])}{flag('dynamic_load_rating_N')}, "
+              f"C0 = {_kn(r['static_load_rating_N'])}{flag('static_load_rating_N')}, "
+              f"f0 = {r['geometry_factor_f0']:.3g}{flag('geometry_factor_f0')}, "
+              f"Pu = {_kn(r['fatigue_load_limit_N'])}{flag('fatigue_load_limit_N')}")
+    con.print(f"equivalent loads: P = {_kn(r['equivalent_dynamic_load_N'])} (ISO 281), "
+              f"P0 = {_kn(r['equivalent_static_load_N'])} (ISO 76)")
+    l10, l10r = r["basic_rating_life_million_revolutions"], r["reference_rating_life_million_revolutions"]
+    at = f" at {rpm:.0f} rpm" if rpm > 0 else ""
+    for name, rev, hours, std in (("basic rating life L10", l10, r["basic_rating_life_hours"], "ISO 281"),
+                                  ("reference rating life L10r", l10r, r["reference_rating_life_hours"],
+                                   "ISO/TS 16281")):
+        if rev is not None:
+            head = f"{_hours(hours)}{at} ({rev:.4g} × 10⁶ rev" if hours is not None else f"{rev:.4g} × 10⁶ rev ("
+            con.print(f"{name} = {head}, {std})".replace("(, ", "("))
+    f = r.get("life_factors", {})
+    if r.get("modified_rating_life_hours") is not None or r.get("modified_reference_rating_life_hours") is not None:
+        con.print(f"modified rating life (reliability {f['reliability_percent']:g} %, a1 = {f['a1']:.3g}, "
+                  f"κ = {f['kappa']:.3g} (ν = {f['viscosity_m2_s'] * 1e6:.3g} mm²/s, ν1 = "
+                  f"{f['rated_viscosity_m2_s'] * 1e6:.3g} mm²/s), e_C = {f['e_C']:.2g}): "
+                  f"L_nm = {_hours(r['modified_rating_life_hours'])}"
+                  + (f" (a_ISO = {f['a_ISO']:.3g})" if "a_ISO" in f else "")
+                  + f", L_nmr = {_hours(r['modified_reference_rating_life_hours'])}"
+                  + (f" (a_ISO = {f['a_ISO_reference']:.3g})" if "a_ISO_reference" in f else ""))
+    s0, s0p = r.get("static_safety_factor"), r.get("static_safety_factor_pressure")
+    con.print("static safety: s0 = C0/P0 = " + ("—" if s0 is None else f"{s0:.3g}") + flag("static_load_rating_N")
+              + " (ISO 76); from the maximum contact pressure, (4200 MPa / p_max)³ = "
+              + ("—" if s0p is None else f"{s0p:.3g}"))
+    if friction is not None:
+        tq, pw = friction.get("friction_torque_N_m"), friction.get("power_loss_W")
+        if tq is not None:
+            con.print(f"friction torque {tq * 1e3:.4g} N·mm, power loss {pw:.4g} W "
+                      f"({friction.get('headline_model', 'palmgren')})")
+    for n in r.get("life_notes", ()):
+        con.print(f"[dim]note:[/] {n}")
+
+
+def print_static(res, friction=None) -> None:
     """Readable tables of a :class:`StaticResult` (engineering units for display only)."""
     from rich.table import Table
 
@@ -87,6 +205,7 @@ def print_static(res) -> None:
     if c:
         con.print(f"internal clearance: radial {c['radial_internal_clearance_m'] * 1e6:.2f} µm, axial "
                   f"{c['axial_internal_clearance_m'] * 1e6:.2f} µm; axial play {c['axial_play_m'] * 1e6:.2f} µm")
+    print_rating(con, res, friction)
     for w in getattr(res, "warnings", ()):
         con.print(f"[yellow]warning:[/] {w}")
     k = Table(title="stiffness matrix (N/µm, N/mrad, N·m/µm, N·m/mrad)")
@@ -135,11 +254,10 @@ def reproduce_spindle(
 
 
 def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None:
-    """Add ``catalog``, ``static`` and (with ``reproduce_app``) ``reproduce spindle-axial-stiffness``."""
-    app.command("catalog")(catalog)
+    """Add ``static`` and (with ``reproduce_app``) ``reproduce spindle-axial-stiffness``."""
     app.command("static")(static)
     if reproduce_app is not None:
         reproduce_app.command("spindle-axial-stiffness")(reproduce_spindle)
 
 
-__all__ = ["catalog", "print_static", "register", "reproduce_spindle", "static"]
+__all__ = ["print_static", "register", "reproduce_spindle", "static"]
