@@ -29,7 +29,6 @@ from numpy.testing import assert_allclose
 
 from bearingsim.cage_modes import (
     CageRing,
-    _element_frames,
     assemble,
     cage_modes,
     element_end_forces,
@@ -40,6 +39,7 @@ from bearingsim.cage_modes import (
     stress_shapes,
     torsion_shear_stress,
 )
+from bearingsim.cage_modes.stress import _element_frames
 from bearingsim.errors import InputError
 
 E, NU = 2.06e11, 0.3
@@ -220,7 +220,7 @@ def hub():
 
 def test_element_matrices_reassemble_K(hub):
     """The element stiffness and frames used for the stress recovery reassemble the global K."""
-    from bearingsim.cage_modes import _element_stiffness
+    from bearingsim.cage_modes.stress import _element_stiffness
 
     fe = hub.fe
     lam, kl = _element_frames(fe), _element_stiffness(fe)
@@ -286,7 +286,7 @@ def test_stress_shapes_superpose(hub):
 def test_torsion_shear_stress_square_and_strip():
     """τ_max = T/(0.208 a³) for a square (Roark 7th ed. table 10.7 case 4; Timoshenko & Goodier §109)
     and → 3T/(a c²) for a thin strip."""
-    from bearingsim.cage_modes import _rect_torsion_stress_factor
+    from bearingsim.cage_modes.stress import _rect_torsion_stress_factor
 
     assert_allclose(_rect_torsion_stress_factor(1.0, 1.0), 1 / 0.208, rtol=2e-3,
                     err_msg="Roark table 10.7 case 4 / Timoshenko & Goodier: square τ = T/(0.208 a³)")
