@@ -8,8 +8,8 @@
      (deep groove: z = 0.0004–0.0006 (mid value 0.0005 used), y = 0.55; angular contact:
      z = 0.001, y = 0.33); P1 per type: deep groove ``P1 = max(3 Fa − 0.1 Fr, Fr)``,
      angular contact ``P1 = max(0.9 Fa cot α − 0.1 Fr, Fr)``; P0 the static equivalent load of
-     ISO 76 (deep groove X0 = 0.6, Y0 = 0.5; angular contact X0 = 0.5, Y0 from the ISO 76 table
-     by α), C0 the static load rating;
+     ISO 76 (:func:`bearingsim.safety.equivalent_static_load`), C0 the static load rating of the bearing
+     file or, when it gives none, the project's ISO 76 estimate (:func:`bearingsim.life.static_rating_estimate`);
    * viscous term: ``M_v = 1e-7 f0 (ν n)^(2/3) d_m³`` [N·mm, ν in mm²/s, n in rpm, d_m in mm]
      for ν n ≥ 2000, else ``M_v = 160e-7 f0 d_m³``; f0 per bearing type and lubrication
      method (table :data:`PALMGREN_F0`).
@@ -66,10 +66,6 @@ PALMGREN_F0 = {
 #: Palmgren's f1 = z (P0/C0)^y: (z_low, z_high, y) per bearing type (Harris & Kotzalas 2007, after Palmgren 1959;
 #: as recalled, not re-checked in this session)
 PALMGREN_F1 = {"deep_groove": (0.0004, 0.0006, 0.55), "angular_contact": (0.001, 0.001, 0.33)}
-#: ISO 76:2006 table 1, single-row angular contact ball bearings: (α [deg], Y0); X0 = 0.5 (as recalled)
-ISO76_Y0 = ((15.0, 0.46), (20.0, 0.42), (25.0, 0.38), (30.0, 0.33), (35.0, 0.29), (40.0, 0.26), (45.0, 0.22))
-#: ISO 76:2006: contact stress at the most heavily loaded contact that defines C0 of ball bearings [Pa]
-ISO76_STRESS = 4.2e9
 METHODS = tuple(PALMGREN_F0["deep_groove"])
 MODELS = ("both", "palmgren", "physical")
 
@@ -89,33 +85,13 @@ def _row_bearings(bearing) -> list:
     return [bearing]
 
 
-def static_equivalent_load(fr: float, fa: float, kind: str, contact_angle: float) -> float:
-    """ISO 76:2006 static equivalent load P0 = max(X0 Fr + Y0 Fa, Fr) of a single-row radial ball bearing [N].
+def _static_equivalent_load(fr: float, fa: float, kind: str, contact_angle: float) -> float:
+    """ISO 76:2006 P0 of one row [N] by :func:`bearingsim.safety.equivalent_static_load`; an angular contact
+    angle outside the standard's table (5°–45°) is clamped to it."""
+    from .safety import equivalent_static_load
 
-    Deep groove X0 = 0.6, Y0 = 0.5; angular contact X0 = 0.5, Y0 interpolated linearly in the ISO 76
-    table by the nominal contact angle [rad] (clamped to 15°–45°)."""
-    fr, fa = abs(float(fr)), abs(float(fa))
-    if kind == "deep_groove":
-        x0, y0 = 0.6, 0.5
-    else:
-        x0 = 0.5
-        y0 = float(np.interp(math.degrees(contact_angle), [a for a, _ in ISO76_Y0], [y for _, y in ISO76_Y0]))
-    return max(x0 * fr + y0 * fa, fr)
-
-
-def static_load_rating_estimate(bearing) -> float:
-    """C0 [N] of one row from the ISO 76 definition when the bearing file gives none: the radial load
-    that puts 4200 MPa at the centre of the most heavily loaded inner contact, C0 = Z Q_max cos α / 5
-    (Stribeck's 5, ISO 76's assumption), Q_max at inner conformity 0.52 (ISO 76's groove) and the
-    bearing's E′.  For a 6205 (Z = 9, D = 7.938 mm, d_m = 38.5 mm, steel) this gives 7.76 kN against the
-    catalogue 7.8 kN.  An estimate: flagged in :func:`palmgren_torque`'s output."""
-    from .contact import hertz
-
-    alpha = bearing.contact_angle if bearing.kind == "angular_contact" else 0.0
-    rx, ry = hertz.raceway_radii(bearing.ball_diameter, bearing.pitch_diameter, 0.52, alpha, True)
-    p1 = hertz.point_contact_exact(1.0, rx, ry, bearing.effective_modulus).max_pressure
-    q = (ISO76_STRESS / p1) ** 3
-    return bearing.ball_count * q * math.cos(alpha) / 5.0
+    a = min(max(contact_angle, math.radians(5.0)), math.radians(45.0)) if kind != "deep_groove" else 0.0
+    return float(equivalent_static_load(fr, fa, a, 1, kind))
 
 
 def palmgren_torque(bearing, fr: float, fa: float, speed: float, nu: float | None = None,
@@ -135,14 +111,16 @@ def palmgren_torque(bearing, fr: float, fa: float, speed: float, nu: float | Non
     """
     if method not in METHODS:
         raise InputError("lubrication_method", f"unknown method {method!r}", f"use one of {', '.join(METHODS)}")
+    from .life import nominal_contact_angle, static_rating_estimate
+
     kind = bearing.kind
-    alpha = bearing.contact_angle if kind == "angular_contact" else 0.0
+    alpha = nominal_contact_angle(bearing)
     fr, fa = abs(float(fr)), abs(float(fa))
     c0 = float(getattr(bearing, "static_load_rating", 0.0) or 0.0)
     estimated = not c0 > 0
     if estimated:
-        c0 = static_load_rating_estimate(bearing)
-    p0 = static_equivalent_load(fr, fa, kind, alpha)
+        c0 = static_rating_estimate(bearing)[0]
+    p0 = _static_equivalent_load(fr, fa, kind, alpha)
     z_lo, z_hi, y = PALMGREN_F1[kind]
     f1 = 0.5 * (z_lo + z_hi) * (p0 / c0) ** y
     if kind == "deep_groove":
@@ -378,8 +356,8 @@ def friction_summary(result, lubricant=None, temperature: float | None = None, *
             ml += p["load_N_m"]
             mv += p["viscous_N_m"] or 0.0
             if p["C0_estimated"] and not any(getattr(rb, 'name', 'row') in n_ for n_ in notes):
-                notes.append(f"C0 of {getattr(rb, 'name', 'row')} estimated from the ISO 76 definition "
-                             f"({p['C0_N']:.0f} N): the file gives none")
+                notes.append(f"C0 of {getattr(rb, 'name', 'row')} estimated from its ball set by the ISO 76 "
+                             f"definition ({p['C0_N']:.0f} N): the file gives none")
         out["palmgren_rows"] = rows_out
         out["palmgren_load_N_m"] = ml
         if lub_obj is None:
@@ -426,6 +404,5 @@ def friction_summary(result, lubricant=None, temperature: float | None = None, *
     return out
 
 
-__all__ = ["friction_summary", "palmgren_torque", "static_equivalent_load", "static_load_rating_estimate",
-           "contact_losses", "drag_loss", "ball_drag_power", "sphere_drag_coefficient", "parker_oil_fraction",
-           "PALMGREN_F0", "PALMGREN_F1", "METHODS", "MODELS"]
+__all__ = ["friction_summary", "palmgren_torque", "contact_losses", "drag_loss", "ball_drag_power",
+           "sphere_drag_coefficient", "parker_oil_fraction", "PALMGREN_F0", "PALMGREN_F1", "METHODS", "MODELS"]

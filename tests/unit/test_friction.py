@@ -69,27 +69,25 @@ def test_palmgren_load_term():
     assert q["P1_N"] == 5000.0
 
 
-def test_iso76_static_equivalent_load():
-    # deep groove X0 = 0.6, Y0 = 0.5, never below Fr (ISO 76:2006 §6.2)
-    assert F.static_equivalent_load(1000.0, 1000.0, "deep_groove", 0.0) == pytest.approx(1100.0)
-    assert F.static_equivalent_load(1000.0, 100.0, "deep_groove", 0.0) == 1000.0
-    # angular contact X0 = 0.5, Y0 = 0.38 at 25°, interpolated between the table's angles
-    assert F.static_equivalent_load(1000.0, 2000.0, "angular_contact", math.radians(25)) == pytest.approx(1260.0)
-    assert F.static_equivalent_load(0.0, 1000.0, "angular_contact", math.radians(22.5)) == pytest.approx(400.0)
+def test_palmgren_uses_the_project_iso76_figures():
+    """P0 and the C0 estimate are the ones of safety.py / life.py (one formula each); a C0 in the file wins."""
+    import dataclasses
 
+    from bearingsim.life import static_rating_estimate
+    from bearingsim.safety import equivalent_static_load
 
-def test_c0_estimate_against_catalogue():
-    """C0 from the ISO 76 definition for a 6205 ball set (Z = 9, D = 5/16 in, d_m = 38.5 mm) against the
-    catalogue 7.8 kN (SKF 6205: C0 = 7.8 kN); the tolerance covers the ball-set estimate (d_m rounded)."""
-    from bearingsim.geometry import BallBearing
-    from bearingsim.materials import get_material
-
-    steel = get_material("bearing_steel")
-    b = BallBearing(name="6205-like", kind="deep_groove", ball_diameter=7.938e-3, ball_count=9,
-                    pitch_diameter=38.5e-3, inner_conformity=0.52, outer_conformity=0.53, contact_angle=0.0,
-                    diametral_clearance=10e-6, ball_material=steel, ring_material=steel)
-    np.testing.assert_allclose(F.static_load_rating_estimate(b), 7800.0, rtol=0.03,
-                               err_msg="SKF catalogue 6205: C0 = 7.8 kN (ISO 76 4200 MPa definition)")
+    b = load_bearing("skf-7011-cdga-hc")
+    p = F.palmgren_torque(b, 800.0, 2000.0, 1000 * RPM)
+    assert p["C0_estimated"] and p["C0_N"] == static_rating_estimate(b)[0]
+    assert p["P0_N"] == equivalent_static_load(800.0, 2000.0, b.contact_angle, 1, "angular_contact")
+    given = dataclasses.replace(b, static_load_rating=20e3)
+    q = F.palmgren_torque(given, 800.0, 2000.0, 1000 * RPM)
+    assert not q["C0_estimated"] and q["C0_N"] == 20e3
+    assert q["load_N_m"] / p["load_N_m"] == pytest.approx((p["C0_N"] / 20e3) ** 0.33, rel=1e-12)
+    # an angle beyond ISO 76's table is clamped to 45°
+    steep = dataclasses.replace(b, contact_angle=math.radians(60.0))
+    r = F.palmgren_torque(steep, 0.0, 2000.0, 1000 * RPM)
+    assert r["P0_N"] == pytest.approx(equivalent_static_load(0.0, 2000.0, math.radians(45.0)), rel=1e-12)
 
 
 # ---------------------------------------------------------------------------------------- physics

@@ -9,7 +9,7 @@ not be retrieved (docs/friction.md).  Operating point: 667 N thrust, MIL-L-23699
 Bands (docs/friction.md, validation table):
 * Palmgren within a factor 2 of the measurement at every point: its f0 is tabulated to one digit and the
   table's own ranges span up to ×2.9 (grease 0.7–2); the data's ±5 % is small against that.  Measured:
-  +35 … +62 %.  Its speed exponent (log–log slope 28k→72k rpm) within 0.2 of the measured 1.47 (the ±5 %
+  +37 … +64 %.  Its speed exponent (log–log slope 28k→72k rpm) within 0.2 of the measured 1.47 (the ±5 %
   band of the two end points alone allows ±0.11).
 * Physics-based model: a LOWER bound — it leaves out cage friction, the churning and momentum of the jet oil
   and the temperature rise of the contacts — asserted as 0.25 < model/measured < 1.  Measured: 0.34 … 0.54,
