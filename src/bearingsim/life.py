@@ -413,6 +413,14 @@ def _rating(bearing, name: str, row_b, nrows: int) -> float:
     return v
 
 
+#: bearing fields -> the keys of :func:`rating_summary` they give
+_RATING_KEYS = {"dynamic_load_rating": "dynamic_load_rating_N", "static_load_rating": "static_load_rating_N",
+                "geometry_factor_f0": "geometry_factor_f0", "fatigue_load_limit": "fatigue_load_limit_N"}
+#: the fields of the internal geometry (ball set)
+_BALL_SET = {"ball_diameter", "ball_count", "pitch_diameter", "inner_conformity", "outer_conformity", "conformity",
+             "contact_angle", "diametral_clearance"}
+
+
 def rating_summary(result, lubricant=None, temperature: float | None = None, contamination="normal",
                    reliability: float = 90.0) -> dict:
     """ISO 281 / ISO 76 / ISO/TS 16281 figures of a solved operating point (SI and hours), JSON-ready.
@@ -447,6 +455,14 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
     if cu <= 0:
         cu = fatigue_load_limit_estimate(c0, row_b.pitch_diameter)
         estimated.append("fatigue_load_limit_N")
+    # figures the bearing file itself marks as estimates (its [sources] text starts with ESTIMATE/ASSUMED)
+    marked = set(getattr(brg, "estimated", ()) or ()) | set(getattr(row_b, "estimated", ()) or ())
+    for field_name, key in _RATING_KEYS.items():
+        if field_name in marked and key not in estimated:
+            estimated.append(key)
+    if marked & _BALL_SET:
+        notes.append("the ball set (" + ", ".join(sorted(marked & _BALL_SET)) + ") is an estimate: the load "
+                     "distribution, the reference rating life and the pressure-based s0 rest on it")
     fr = math.hypot(result.loads.fr_y, result.loads.fr_z)
     fa = abs(result.loads.fa)
     out = {"dynamic_load_rating_N": c if c > 0 else None, "static_load_rating_N": c0, "geometry_factor_f0": f0,
