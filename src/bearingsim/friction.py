@@ -14,9 +14,8 @@
      for ν n ≥ 2000, else ``M_v = 160e-7 f0 d_m³``; f0 per bearing type and lubrication
      method (table :data:`PALMGREN_F0`).
 
-   Palmgren's model is a catalogue-accuracy estimate; Harris & Kotzalas present it for
-   bearings at moderate speed; at high speed (jet lubrication, d_m n > 10⁶) it was fitted to
-   few data.
+   An empirical estimate: its measured accuracy on the two checks of this project is in
+   docs/friction.md (+37…+64 % on a jet-lubricated bearing at 1–2.5·10⁶ d_m n).
 2. **Physics-based** — our own contact models at Jones' kinematics (the ball speeds of the
    quasi-static solution, :func:`bearingsim.statics.jones_harris.solve`):
 
