@@ -9,6 +9,8 @@ import subprocess
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearingsim import friction as F
 from bearingsim.contact import hertz
@@ -67,6 +69,25 @@ def test_palmgren_load_term():
     # a radial load larger than the axial share takes over P1
     q = F.palmgren_torque(b, 5000.0, 100.0, 1000 * RPM)
     assert q["P1_N"] == 5000.0
+
+
+@settings(max_examples=60, deadline=None)
+@given(fr=st.floats(0.0, 2e4), fa=st.floats(0.0, 2e4), dfa=st.floats(1.0, 5e3), rpm=st.floats(10.0, 3e4),
+       nu=st.floats(1e-6, 5e-4), deep=st.booleans())
+def test_palmgren_monotone(fr, fa, dfa, rpm, nu, deep):
+    """More axial load never lowers the load torque (P1 and P0 grow with Fa); more speed or viscosity never
+    lowers the viscous torque; both are finite and ≥ 0."""
+    b = load_bearing("skf-7011-cdga-hc")
+    if deep:
+        import dataclasses
+
+        b = dataclasses.replace(b, kind="deep_groove", contact_angle=0.0, diametral_clearance=10e-6)
+    p = F.palmgren_torque(b, fr, fa, rpm * RPM, nu)
+    q = F.palmgren_torque(b, fr, fa + dfa, rpm * RPM, nu)
+    assert 0.0 <= p["load_N_m"] <= q["load_N_m"] and math.isfinite(q["load_N_m"])
+    faster = F.palmgren_torque(b, fr, fa, 1.5 * rpm * RPM, nu)["viscous_N_m"]
+    thicker = F.palmgren_torque(b, fr, fa, rpm * RPM, 1.5 * nu)["viscous_N_m"]
+    assert 0.0 < p["viscous_N_m"] <= min(faster, thicker)
 
 
 def test_palmgren_uses_the_project_iso76_figures():
