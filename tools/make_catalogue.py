@@ -62,7 +62,7 @@ def _kn(x_n: float) -> str:
 def _ball_text(dw: float) -> str:
     frac = Fraction(dw / INCH).limit_denominator(64)
     if abs(float(frac) * INCH - dw) < 1e-9:
-        return f"{frac} in ({dw * 1e3:.4f} mm)"
+        return f"{frac} in ({dw * 1e3:.7g} mm)"
     return f"{dw * 1e3:g} mm"
 
 

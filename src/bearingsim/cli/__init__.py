@@ -8,8 +8,9 @@ Thin: parse, call the API, print.  The package:
   traceback, unless ``BEARINGSIM_DEBUG=1``;
 * :mod:`.output` — output paths checked before computing, atomic writes; :mod:`.console` — rich console and the
   first-run compilation note;
-* one module per command group, module-level command functions registered here: :mod:`.static` (catalog, static,
-  reproduce spindle-axial-stiffness), :mod:`.sweep` (map, export ross, reproduce hub-static), :mod:`.dynamics`
+* one module per command group, module-level command functions registered here: :mod:`.catalog` (catalog),
+  :mod:`.clearance` (clearance), :mod:`.static` (static, reproduce spindle-axial-stiffness), :mod:`.sweep` (map,
+  export ross, reproduce hub-static), :mod:`.dynamics`
   (simulate), :mod:`.hysteresis` (reproduce hub-hysteresis), :mod:`.lubrication` (lubrication, lubricants,
   traction-curve), :mod:`.cage` (cage-modes).
 
@@ -23,7 +24,7 @@ import sys
 
 import typer
 
-from . import cage, dynamics, hysteresis, lubrication, report, static, sweep
+from . import cage, catalog, clearance, dynamics, hysteresis, lubrication, report, static, sweep
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="bearingsim: ball bearing statics, stiffness, lubrication and dynamics.")
@@ -48,6 +49,8 @@ def _root(
     """bearingsim: ball bearing statics, stiffness, lubrication and dynamics."""
 
 
+catalog.register(app)
+clearance.register(app)
 static.register(app, reproduce_app)
 cage.register(app)
 lubrication.register(app)

@@ -38,12 +38,56 @@ def catalog_names() -> list[str]:
 
 
 def catalog_entries() -> list[dict]:
-    """Name, description and type of every catalogue entry (for ``bearingsim catalog``)."""
-    out = []
-    for name in catalog_names():
-        data = _read_catalog(name)
-        out.append({"name": name, "type": data.get("type", ""), "description": data.get("description", "")})
-    return out
+    """One summary per catalogue entry (for ``bearingsim catalog``), SI units, None where the entry does not say:
+    name, type, description, bore_m, outside_diameter_m, width_m, contact_angle_rad, dynamic_load_rating_N,
+    static_load_rating_N, ball_count, ball_diameter_m, pitch_diameter_m, estimated (field names whose source
+    starts with ESTIMATE or ASSUMED).  Read from the files without building the bearings (fast)."""
+    return [catalog_summary(name, _read_catalog(name)) for name in catalog_names()]
+
+
+_QUICK_UNITS = {"mm": 1e-3, "m": 1.0, "um": 1e-6, "µm": 1e-6, "in": 0.0254, "N": 1.0, "kN": 1e3, "MN": 1e6,
+                "deg": math.pi / 180.0, "rad": 1.0}
+
+
+def _quick(value, dimension: str, field: str):
+    """A quantity string as SI float: the plain ``"<number> <unit>"`` forms of the catalogue directly, anything
+    else through :func:`bearingsim.units.parse_quantity`; None when absent."""
+    if value is None:
+        return None
+    if isinstance(value, str):
+        parts = value.split()
+        if len(parts) == 2 and parts[1] in _QUICK_UNITS:
+            try:
+                return float(parts[0]) * _QUICK_UNITS[parts[1]]
+            except ValueError:
+                pass
+    with file_input():
+        return parse_quantity(value, dimension, field)
+
+
+def catalog_summary(name: str, data: dict) -> dict:
+    """The summary of :func:`catalog_entries` for one parsed bearing file ``data`` [SI]."""
+    src = data.get("sources", {})
+    src = src if isinstance(src, dict) else {}
+    estimated = [k for k, v in src.items() if isinstance(v, str)
+                 and v.lstrip().upper().startswith(("ESTIMATE", "ASSUMED"))]
+    kind = data.get("type", "angular_contact" if "rows" not in data and "arrangement" not in data
+                    else "bearing_set")
+    z = data.get("ball_count")
+    return {
+        "name": name, "type": kind, "description": data.get("description", ""),
+        "bore_m": _quick(data.get("bore"), "length", "bore"),
+        "outside_diameter_m": _quick(data.get("outside_diameter"), "length", "outside_diameter"),
+        "width_m": _quick(data.get("width"), "length", "width"),
+        "contact_angle_rad": (_quick(data.get("contact_angle"), "angle", "contact_angle")
+                              if kind != "deep_groove" else 0.0) if "ball_count" in data else None,
+        "dynamic_load_rating_N": _quick(data.get("dynamic_load_rating"), "force", "dynamic_load_rating"),
+        "static_load_rating_N": _quick(data.get("static_load_rating"), "force", "static_load_rating"),
+        "ball_count": z if isinstance(z, int) and not isinstance(z, bool) else None,
+        "ball_diameter_m": _quick(data.get("ball_diameter"), "length", "ball_diameter"),
+        "pitch_diameter_m": _quick(data.get("pitch_diameter"), "length", "pitch_diameter"),
+        "estimated": estimated,
+    }
 
 
 def _read_catalog(name: str) -> dict:
@@ -203,4 +247,4 @@ def _bearing_from_dict(data: dict) -> BallBearing:
     )
 
 
-__all__ = ["catalog_names", "catalog_entries", "resolve_bearing_data", "load_bearing", "bearing_from_dict"]
+__all__ = ["catalog_names", "catalog_entries", "catalog_summary", "resolve_bearing_data", "load_bearing", "bearing_from_dict"]
