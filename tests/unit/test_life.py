@@ -103,3 +103,159 @@ def test_iso281_life_without_load_is_none_not_infinity(b218):
     assert iso281_life(r) is None
     assert "Infinity" not in json.dumps(r.to_dict())
     assert iso281_life(jh.solve(b, jh.Loads(fa=3000.0), 0.0)) > 0
+
+
+# ---- issue 15: ISO/TS 16281 nominal angle, ISO 281 / ISO 76 summary -------------------------------------
+def _deep_groove(clearance=0.0, **kw):
+    from bearingsim.geometry import BallBearing
+    from bearingsim.materials import Material
+
+    steel = Material("steel", 207e9, 0.3, 7850.0)
+    return BallBearing(name="dg", kind="deep_groove", ball_diameter=7.94e-3, ball_count=9, pitch_diameter=39.04e-3,
+                       inner_conformity=0.52, outer_conformity=0.53, contact_angle=0.0, ball_material=steel,
+                       ring_material=steel, diametral_clearance=clearance, **kw)
+
+
+def test_raceway_ratings_are_those_of_the_design_not_of_the_clearance():
+    """ISO/TS 16281 rates the raceways at the nominal contact angle: a deep-groove bearing with clearance (free
+    contact angle 12.8° here) has the ratings of the same bearing without clearance (the free angle gave 2.8 %
+    longer lives, tests/validation/test_iso16281.py)."""
+    b0, b1 = _deep_groove(0.0), _deep_groove(20e-6)
+    assert math.degrees(b1.free_contact_angle) > 10.0
+    assert life.raceway_ratings(b1, 14e3) == life.raceway_ratings(b0, 14e3)
+    assert life.nominal_contact_angle(b1) == 0.0
+
+
+def test_standard_constants_are_the_lundberg_palmgren_integrals():
+    jr, j1, j2 = life.lp_integrals(0.5)
+    np.testing.assert_allclose([jr / j1, jr / j2, j2 / j1],
+                               [life.TS16281_JR_J1, life.TS16281_JR_J2, life.TS16281_J2_J1], atol=6e-4,
+                               err_msg="ISO/TS 16281 constants 0.407, 0.389, 1.044 (rounded integrals, eps = 0.5)")
+
+
+def test_readme_15deg_bearing_gets_an_iso281_life_with_estimated_c0():
+    """The README's own 15° example file has C but no C₀: table 3 needs f₀F_a/C₀, which is now estimated
+    (ISO 76 derivation) and flagged, instead of a null life."""
+    from bearingsim.io import bearing_from_dict
+
+    b = bearing_from_dict({"name": "readme", "type": "angular_contact", "ball_diameter": "11.5 mm", "ball_count": 17,
+                           "pitch_diameter": "72.5 mm", "inner_groove_radius": "5.98 mm",
+                           "outer_groove_radius": "6.095 mm", "contact_angle": "15 deg",
+                           "dynamic_load_rating": "23.4 kN", "ball_material": "silicon_nitride",
+                           "ring_material": "bearing_steel"})
+    r = jh.solve(b, jh.Loads(fa=1000.0, fr_y=500.0), 1500 * math.pi / 30)
+    d = r.to_dict()
+    assert d["basic_rating_life_million_revolutions"] > 0
+    assert {"static_load_rating_N", "geometry_factor_f0"} <= set(d["estimated"])
+    assert "dynamic_load_rating_N" not in d["estimated"]
+    # 15°: F_a/F_r = 2 > e, so P = 0.44 F_r + Y F_a with 1 < Y < 1.47 (table 3, 15° single row)
+    p = d["equivalent_dynamic_load_N"]
+    assert 0.44 * 500 + 1.0 * 1000 < p < 0.44 * 500 + 1.47 * 1000
+    np.testing.assert_allclose(d["basic_rating_life_hours"],
+                               d["basic_rating_life_million_revolutions"] * 1e6 / (60 * 1500), rtol=1e-12)
+
+
+def test_lives_in_hours_need_a_speed():
+    b = _deep_groove(dynamic_load_rating=14e3, static_load_rating=7.8e3, geometry_factor_f0=14.0)
+    r = jh.solve(b, jh.Loads(fr_y=2000.0, fa=500.0))
+    s = r.rating
+    assert s["basic_rating_life_million_revolutions"] > 0 and s["basic_rating_life_hours"] is None
+    assert any("speed" in n for n in s["life_notes"])
+    assert s["estimated"] == ["fatigue_load_limit_N"]  # C, C0 and f0 given; Pu estimated (C0/22)
+    np.testing.assert_allclose(s["fatigue_load_limit_N"], 7.8e3 / 22, rtol=1e-12)
+
+
+def test_modified_life_is_a1_a_iso_l10_and_reliability_scales_it():
+    from bearingsim.lubricants import get_lubricant
+
+    b = _deep_groove(dynamic_load_rating=14e3, static_load_rating=7.8e3, geometry_factor_f0=14.0,
+                     fatigue_load_limit=335.0)
+    r = jh.solve(b, jh.Loads(fr_y=2000.0, fa=500.0), 1500 * math.pi / 30)
+    oil = get_lubricant("iso-vg-68")
+    s90 = dict(life.apply_rating(r, oil, 343.15, "normal", 90.0))
+    f = s90["life_factors"]
+    np.testing.assert_allclose(f["kappa"], oil.kinematic_viscosity(343.15) / life.rated_viscosity(r.speed, 39.04e-3))
+    np.testing.assert_allclose(s90["modified_rating_life_hours"], f["a_ISO"] * s90["basic_rating_life_hours"],
+                               rtol=1e-12)
+    s99 = life.apply_rating(r, oil, 343.15, "normal", 99.0)
+    np.testing.assert_allclose(s99["modified_rating_life_hours"] / s90["modified_rating_life_hours"], 0.25,
+                               rtol=1e-12, err_msg="ISO 281:2007 table 12: a1(99 %) = 0.25")
+    assert r.rating is s99 and r.to_dict()["modified_rating_life_hours"] == s99["modified_rating_life_hours"]
+    with pytest.raises(life.InputError, match="reliability"):
+        life.reliability_factor(93.0)
+    with pytest.raises(life.InputError, match="contamination"):
+        life.contamination_factor("dirty", 0.04)
+
+
+def test_pressure_safety_factor_at_the_static_rating_load():
+    """At F_r = C₀ (estimated from the ISO 76 derivation: 4 200 MPa at Q = 5 C₀/Z), the pressure-based factor is
+    the ratio of Stribeck's 5 to the computed Z Q_max/F_r (4.37 for a zero-clearance ring, Harris & Kotzalas):
+    (4200 MPa/p_max)³ = Q₀/Q_max because p_max ∝ Q^(1/3)."""
+    b = _deep_groove(0.0)
+    c0, _ = life.static_rating_estimate(b)
+    r = jh.solve(b, jh.Loads(fr_y=c0))
+    qmax = float(np.max(r.balls["inner_load_N"]))
+    s0p = r.rating["static_safety_factor_pressure"]
+    np.testing.assert_allclose(s0p, 5.0 * c0 / (b.ball_count * qmax), rtol=1e-9)
+    assert 1.05 < s0p < 1.25
+    np.testing.assert_allclose(r.rating["static_safety_factor"], 1.0, rtol=1e-12)  # P0 = Fr = C0
+
+
+def test_static_safety_warning_once():
+    b = _deep_groove(0.0, static_load_rating=7.8e3, geometry_factor_f0=14.0)
+    r = jh.solve(b, jh.Loads(fr_y=9e3))
+    w = [x for x in r.warnings if "s0 = C0/P0" in x]
+    assert len(w) == 1 and "0.867" in w[0]
+    life.apply_rating(r)
+    assert len([x for x in r.warnings if "s0 = C0/P0" in x]) == 1
+
+
+def test_pairs_use_double_row_factors_and_tandem_single_row(b7011):
+    b = dataclasses.replace(b7011, dynamic_load_rating=23.4e3, static_load_rating=17.3e3, geometry_factor_f0=14.0)
+    fr, fa = 2000.0, 300.0
+    p = {}
+    for arr, rows in (("DB", 2), ("DF", 2), ("DT", 1)):
+        pair = ar.make_system(b, arr, preload=200.0 if arr != "DT" else None)
+        r = jh.solve(pair, jh.Loads(fr_y=fr, fa=fa), 3000 * math.pi / 30)
+        assert r.converged
+        rel = 14.0 * fa / (2 * 17.3e3)
+        np.testing.assert_allclose(r.rating["equivalent_dynamic_load_N"],
+                                   life.equivalent_dynamic_load(fr, fa, b.contact_angle, rows, "angular_contact", rel),
+                                   rtol=1e-12, err_msg=f"ISO 281 6.1: {arr} pair")
+        np.testing.assert_allclose(r.rating["static_load_rating_N"], 2 * 17.3e3, rtol=1e-12)
+        np.testing.assert_allclose(r.rating["dynamic_load_rating_N"], 2**0.7 * 23.4e3, rtol=1e-12)
+        p[arr] = r.rating["equivalent_dynamic_load_N"]
+    # F_a/F_r = 0.15 <= e: a DB/DF pair has P = F_r + Y1 F_a with Y1 ≈ 1.6 (15°); the tandem pair, with single-row
+    # factors, P = F_r
+    assert p["DB"] == p["DF"] and 1.5 * fa < p["DB"] - fr < 1.7 * fa
+    assert p["DT"] == fr
+
+
+def test_static_cli_lives_and_safety_json(tmp_path):
+    """Through the installed console script: lives in hours, s0, modified life and friction with a lubricant."""
+    import json
+    import subprocess
+
+    f = tmp_path / "dg.toml"
+    f.write_text('name = "dg"\ntype = "deep_groove"\nball_diameter = "7.94 mm"\nball_count = 9\n'
+                 'pitch_diameter = "39.04 mm"\ninner_conformity = 0.52\nouter_conformity = 0.53\n'
+                 'diametral_clearance = "10 um"\nball_material = "bearing_steel"\nring_material = "bearing_steel"\n'
+                 'dynamic_load_rating = "14 kN"\nstatic_load_rating = "7.8 kN"\ngeometry_factor_f0 = 14\n')
+    cmd = ["bearingsim", "static", str(f), "--fr", "2 kN", "--fa", "0.5 kN", "--speed", "1500 rpm"]
+    out = subprocess.run(cmd + ["--json", "--lubricant", "iso-vg-68", "--temperature", "70 degC"],
+                         capture_output=True, text=True, check=True)
+    d = json.loads(out.stdout)
+    for k in ("dynamic_load_rating_N", "static_load_rating_N", "geometry_factor_f0", "equivalent_dynamic_load_N",
+              "equivalent_static_load_N", "basic_rating_life_million_revolutions", "basic_rating_life_hours",
+              "modified_rating_life_hours", "reference_rating_life_million_revolutions", "static_safety_factor",
+              "static_safety_factor_pressure"):
+        assert d[k] is not None and d[k] > 0, k
+    # f0 Fa/C0 = 0.897: e = 0.272 > Fa/Fr = 0.25, so P = Fr (ISO 281 table 3)
+    assert d["equivalent_dynamic_load_N"] == 2000.0
+    np.testing.assert_allclose(d["basic_rating_life_hours"], (14 / 2) ** 3 * 1e6 / (60 * 1500), rtol=1e-12)
+    np.testing.assert_allclose(d["static_safety_factor"], 7800 / max(0.6 * 2000 + 0.5 * 500, 2000), rtol=1e-12)
+    assert "friction_torque_N_m" in d
+    text = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+    assert "basic rating life L10 = 3,811 h at 1500 rpm" in text and "s0 = C0/P0 = 3.9" in text
+    bad = subprocess.run(cmd + ["--contamination", "dirty"], capture_output=True, text=True)
+    assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "--contamination" in bad.stderr

@@ -28,7 +28,6 @@ import math
 import numpy as np
 import pytest
 
-from bearingsim import life
 from bearingsim.geometry import BallBearing
 from bearingsim.materials import Material
 from bearingsim.statics import jones_harris as jh
