@@ -339,9 +339,9 @@ def life_modification_factor(kappa: float, ec_cu_over_p: float) -> float:
     if k < 0.4:
         inner = 2.5671 - 2.2649 / k**0.054381
     elif k < 1.0:
-        inner = 2.5671 - 1.9987 / k**0.071739
+        inner = 2.5671 - 1.9987 / k**0.19087
     else:
-        inner = 2.5671 - 1.9987 / k**0.190087
+        inner = 2.5671 - 1.9987 / k**0.071739
     x = max(ec_cu_over_p, 0.0)
     base = 1.0 - inner**0.83 * x ** (1.0 / 3.0)
     if base <= 0.0:

@@ -69,6 +69,16 @@ def test_a_iso_tends_to_one_tenth_without_margin_over_the_fatigue_limit(kappa):
                                err_msg="SKF ConCentra diagram 1 / MESYS: a -> 0.1 as e_C Cu/P -> 0, all kappa")
 
 
+@pytest.mark.parametrize("kappa", [0.4, 1.0])
+@pytest.mark.parametrize("x", [0.01, 0.1, 0.3])
+def test_a_iso_is_continuous_where_the_formula_changes(kappa, x):
+    """ISO 281:2007 eqs. for radial ball bearings change constants at κ = 0.4 and κ = 1; the curves of its
+    figure are continuous there (a mismatched exponent jumps by a factor of 1.3-3 at κ = 0.4)."""
+    lo = life.life_modification_factor(kappa * (1 - 1e-9), x)
+    hi = life.life_modification_factor(kappa, x)
+    np.testing.assert_allclose(lo, hi, rtol=2e-3, err_msg="ISO 281:2007 a_ISO, ball bearings: continuity")
+
+
 def test_a_iso_kappa_above_four_and_cap():
     np.testing.assert_allclose(life.life_modification_factor(9.0, 0.05), life.life_modification_factor(4.0, 0.05),
                                rtol=0, err_msg="ISO 281 / SKF: for kappa > 4 use the curve of kappa = 4")
