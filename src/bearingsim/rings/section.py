@@ -1,0 +1,218 @@
+"""Ring cross-sections of a ball bearing estimated from its boundary dimensions, and their r–z meshes.
+
+A ring is modelled as a body of revolution: a cross-section in the (r, z) half-plane (z the bearing axis, local
+to the row: z = ξ, positive towards the side of the *outer* contact point, the convention of the row frame of
+:mod:`bearingsim.statics.layout`) swept around the axis.
+
+Estimate of the section (used when only the catalogue's boundary dimensions d, D, B are known; nothing is fitted
+to a stiffness):
+
+* groove bottom radii from the pitch diameter and the ball diameter D_w (zero clearance):
+  r_bi = (d_m − D_w)/2 (inner), r_bo = (d_m + D_w)/2 (outer) [m];
+* groove = circle of radius f·D_w (f the conformity) whose lowest (inner) / highest (outer) point is the groove
+  bottom, at mid-width (z = 0);
+* seat surface = bore radius d/2 (inner ring) or outside radius D/2 (outer ring);
+* both lands (shoulders) at a height h = ``shoulder_fraction``·D_w above (inner) / below (outer) the groove
+  bottom; 0.25 D_w is an engineering estimate of angular-contact spindle-bearing shoulders (the high shoulder of
+  such rings is typically 0.2–0.3 D_w, the low one lower; using one height for both sides overstates the low
+  shoulder a little, which stiffens the ring slightly).  docs/rings.md gives the sensitivity to this fraction;
+* faces at z = ±B/2, square corners (chamfers neglected).
+
+Units: metres throughout.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+
+
+@dataclass(frozen=True)
+class RingSection:
+    """Cross-section of one ring in its row frame [m].
+
+    kind : ``"inner"`` or ``"outer"``
+    seat_radius : bore radius (inner) or outside radius (outer)
+    land_radius : radius of the lands beside the groove
+    groove_bottom_radius : radius of the groove bottom (at z = 0)
+    groove_radius : f·D_w
+    half_width : B/2
+    contact_angle : nominal contact angle α₀ [rad] (where the unit loads act)
+    """
+
+    kind: str
+    seat_radius: float
+    land_radius: float
+    groove_bottom_radius: float
+    groove_radius: float
+    half_width: float
+    contact_angle: float
+
+    def __post_init__(self):
+        if self.kind not in ("inner", "outer"):
+            raise InputError("kind", f"must be 'inner' or 'outer', got {self.kind!r}", "give the ring kind")
+        for name in ("seat_radius", "land_radius", "groove_bottom_radius", "groove_radius", "half_width"):
+            v = getattr(self, name)
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+                raise InputError(name, f"must be a positive length, got {v!r}", "give a length in metres")
+        sgn = self.sign
+        # inner: seat < groove bottom < land; outer: seat > groove bottom > land
+        if not (sgn * (self.groove_bottom_radius - self.seat_radius) > 0
+                and sgn * (self.land_radius - self.groove_bottom_radius) > 0):
+            raise InputError("seat_radius", "the seat, groove bottom and land radii are not ordered as in a "
+                             f"{self.kind} ring", "check bore/outside diameter, pitch and ball diameters")
+        if sgn * (self.land_radius - self.groove_bottom_radius) >= self.groove_radius:
+            raise InputError("land_radius", "the shoulder is higher than the groove radius",
+                             "use a smaller shoulder fraction")
+        if self.groove_radius * math.sin(self.contact_angle) >= self.groove_edge_z:
+            raise InputError("contact_angle", "the nominal contact point lies beyond the groove edge",
+                             "use a higher shoulder or a smaller contact angle")
+
+    @property
+    def sign(self) -> float:
+        """+1 for the inner ring (material below the raceway), −1 for the outer ring."""
+        return 1.0 if self.kind == "inner" else -1.0
+
+    @property
+    def groove_centre(self) -> tuple[float, float]:
+        """(r, z) of the groove-curvature centre [m]."""
+        return self.groove_bottom_radius + self.sign * self.groove_radius, 0.0
+
+    @property
+    def groove_edge_z(self) -> float:
+        """|z| where the groove meets the lands [m]."""
+        h = abs(self.land_radius - self.groove_bottom_radius)
+        rg = self.groove_radius
+        return math.sqrt(rg * rg - (rg - h) ** 2)
+
+    def surface_radius(self, z: np.ndarray) -> np.ndarray:
+        """Radius of the raceway side of the section at axial position z [m]."""
+        z = np.asarray(z, dtype=float)
+        rc, _ = self.groove_centre
+        rg = self.groove_radius
+        inside = np.abs(z) < self.groove_edge_z
+        groove = rc - self.sign * np.sqrt(np.maximum(rg * rg - z * z, 0.0))
+        return np.where(inside, groove, self.land_radius)
+
+    @property
+    def contact_point(self) -> np.ndarray:
+        """(r, z) of the nominal contact point (angle α₀ from the groove bottom, on the side of the row's load
+        path: −z on the inner ring, +z on the outer ring) [m]."""
+        rc, _ = self.groove_centre
+        a = self.contact_angle
+        rg = self.groove_radius
+        return np.array([rc - self.sign * rg * math.cos(a), -self.sign * rg * math.sin(a)])
+
+    @property
+    def inward_normal(self) -> np.ndarray:
+        """Unit vector (r, z) at the contact point pointing into the ring material (the direction in which the
+        ball pushes this ring) [-]."""
+        a = self.contact_angle
+        return -self.sign * np.array([math.cos(a), math.sin(a)])
+
+    @property
+    def support_face_z(self) -> float:
+        """z of the face that carries the ring's axial reaction: the face on the side the ball load pushes
+        (−B/2 for the inner ring, +B/2 for the outer ring) [m]."""
+        return -self.sign * self.half_width
+
+    @property
+    def wall(self) -> float:
+        """Wall thickness between groove bottom and seat [m]."""
+        return abs(self.groove_bottom_radius - self.seat_radius)
+
+
+def estimate_sections(bearing, shoulder_fraction: float = 0.25) -> tuple[RingSection, RingSection]:
+    """(inner, outer) :class:`RingSection` of a single-row ``bearing`` from its bore, outside diameter and width
+    (see the module docstring for the estimate) [m].  InputError when the boundary dimensions are unknown."""
+    for name in ("bore", "outside_diameter", "width"):
+        if not getattr(bearing, name, 0.0) > 0:
+            raise InputError(name, "is needed for the elastic-ring model (the ring sections are estimated from the "
+                             "boundary dimensions)", f"give {name} in the bearing file")
+    if not 0.05 <= shoulder_fraction <= 0.45:
+        raise InputError("shoulder_fraction", f"{shoulder_fraction!r} is not a plausible shoulder height / D_w",
+                         "use 0.15–0.35 (default 0.25)")
+    dw = bearing.ball_diameter
+    dm = bearing.pitch_diameter
+    alpha = bearing.contact_angle if bearing.kind == "angular_contact" else 0.0
+    h = shoulder_fraction * dw
+    rbi = 0.5 * (dm - dw)
+    rbo = 0.5 * (dm + dw)
+    inner = RingSection("inner", 0.5 * bearing.bore, rbi + h, rbi, bearing.inner_conformity * dw,
+                        0.5 * bearing.width, alpha)
+    outer = RingSection("outer", 0.5 * bearing.outside_diameter, rbo - h, rbo, bearing.outer_conformity * dw,
+                        0.5 * bearing.width, alpha)
+    return inner, outer
+
+
+def _graded(a: float, b: float, focus: float, h_min: float, n: int) -> np.ndarray:
+    """n+1 points on [a, b], spacing ≈ h_min at ``focus`` growing geometrically (ratio ≤ 1.35) away from it."""
+    pts = [focus]
+    for direction, end in ((-1.0, a), (1.0, b)):
+        x, h = focus, h_min
+        side = []
+        while direction * (end - x) > 1.5 * h:
+            x += direction * h
+            side.append(x)
+            h = min(h * 1.35, abs(end - a + b - a) / max(n, 1))
+        side.append(end)
+        pts = (side[::-1] + pts) if direction < 0 else (pts + side)
+    return np.unique(np.round(np.array(pts, dtype=float), 15))
+
+
+def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_axial: int = 16):
+    """Structured quadrilateral mesh (skfem ``MeshQuad``) of ``section`` in (r, z) [m].
+
+    Nodes: axial positions graded from ``h_contact`` at the contact point (and including the groove edges) to
+    about B/n_axial; through the wall ``n_through`` layers graded from ``h_contact`` at the raceway.  Each axial
+    line of nodes runs straight from the seat to the raceway surface (the surface is followed at the nodes).
+    Boundaries named ``seat``, ``raceway``, ``face_minus``, ``face_plus``."""
+    from skfem import MeshQuad
+
+    hw = section.half_width
+    zc = float(section.contact_point[1])
+    zs = _graded(-hw, hw, zc, h_contact, n_axial)
+    ze = section.groove_edge_z
+    zs = np.unique(np.concatenate([zs, [-ze, ze]]))
+    # merge nodes closer than h_contact/3 to a groove edge onto the edge
+    keep = np.ones(len(zs), bool)
+    for e in (-ze, ze):
+        close = (np.abs(zs - e) < h_contact / 3) & (zs != e)
+        keep &= ~close
+    zs = zs[keep]
+    depth = section.wall + abs(section.land_radius - section.groove_bottom_radius)
+    t = _graded(0.0, 1.0, 1.0, h_contact / depth, n_through)
+    mesh = MeshQuad.init_tensor(t, zs)
+    tt, zz = mesh.p
+    rsurf = section.surface_radius(zz)
+    rr = section.seat_radius + tt * (rsurf - section.seat_radius)
+    mesh = MeshQuad(np.vstack([rr, zz]), mesh.t)
+    tol = 1e-9 * hw
+    return mesh.with_boundaries({
+        "seat": lambda x: np.abs(x[0] - section.seat_radius) < tol,
+        "face_minus": lambda x: np.abs(x[1] + hw) < tol,
+        "face_plus": lambda x: np.abs(x[1] - hw) < tol,
+        "raceway": lambda x: (np.abs(x[0] - section.seat_radius) >= tol) & (np.abs(np.abs(x[1]) - hw) >= tol),
+    })
+
+
+def mesh_rectangle(r_in: float, r_out: float, half_width: float, n_r: int, n_z: int):
+    """Uniform quadrilateral mesh of the rectangle [r_in, r_out] × [−half_width, half_width] with boundaries
+    ``inner``, ``outer``, ``face_minus``, ``face_plus`` (thin rings and sleeves of the closed-form checks) [m]."""
+    from skfem import MeshQuad
+
+    if not (0 < r_in < r_out and half_width > 0 and n_r >= 1 and n_z >= 1):
+        raise InputError("mesh", "need 0 < r_in < r_out, half_width > 0 and at least one element each way",
+                         "check the dimensions")
+    mesh = MeshQuad.init_tensor(np.linspace(r_in, r_out, n_r + 1), np.linspace(-half_width, half_width, n_z + 1))
+    tol = 1e-9 * (r_out - r_in)
+    return mesh.with_boundaries({
+        "inner": lambda x: np.abs(x[0] - r_in) < tol,
+        "outer": lambda x: np.abs(x[0] - r_out) < tol,
+        "face_minus": lambda x: np.abs(x[1] + half_width) < tol,
+        "face_plus": lambda x: np.abs(x[1] - half_width) < tol,
+    })
