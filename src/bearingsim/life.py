@@ -116,17 +116,16 @@ def _rows_and_ratings(bearing):
     return out
 
 
-def reference_rating_life(result) -> float | None:
-    """ISO/TS 16281 basic reference rating life L10r [10^6 revolutions] from the ball loads of a
-    :class:`~bearingsim.statics.jones_harris.StaticResult`; ``None`` when no dynamic load rating is
-    known (``dynamic_load_rating`` in the bearing file) or the result did not converge."""
+def row_reference_lives(result) -> list[float] | None:
+    """ISO/TS 16281 reference rating life of each row [10^6 revolutions] (its two raceways combined with the
+    Weibull exponent; ∞ for a row without load), or ``None`` (no rating, or not converged)."""
     if not getattr(result, "converged", True):
         return None
     rows = _rows_and_ratings(result.bearing)
     if any(c <= 0 for _, c in rows):
         return None
     b = result.balls
-    lives = []
+    out = []
     for k, (brg, c) in enumerate(rows):
         sel = b["row"] == k
         z = int(np.sum(sel))
@@ -135,9 +134,19 @@ def reference_rating_life(result) -> float | None:
         qo = np.maximum(b["outer_load_N"][sel], 0.0)
         qei = (np.sum(qi**3) / z) ** (1.0 / 3.0)
         qeo = (np.sum(qo ** (10.0 / 3.0)) / z) ** 0.3
-        lives.append((qci / qei) ** 3 if qei > 0 else None)
-        lives.append((qco / qeo) ** 3 if qeo > 0 else None)
-    return float(_combine(lives))
+        out.append(float(_combine([(qci / qei) ** 3 if qei > 0 else None, (qco / qeo) ** 3 if qeo > 0 else None])))
+    return out
+
+
+def reference_rating_life(result) -> float | None:
+    """ISO/TS 16281 basic reference rating life L10r [10^6 revolutions] from the ball loads of a
+    :class:`~bearingsim.statics.jones_harris.StaticResult` (all raceways of all rows combined with the Weibull
+    exponent); ``None`` when no dynamic load rating is known (``dynamic_load_rating`` in the bearing file) or
+    the result did not converge."""
+    rows = row_reference_lives(result)
+    if rows is None:
+        return None
+    return float(_combine([x for x in rows if math.isfinite(x)]))
 
 
 # ---- ISO 281:2007 table 3: X, Y, e ------------------------------------------------------------------
@@ -490,7 +499,8 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
         l10 = basic_rating_life(c, p)
     elif p is not None:
         notes.append("no load: infinite rating life")
-    l10r = reference_rating_life(result) if c > 0 else None
+    row_lives = row_reference_lives(result) if c > 0 else None
+    l10r = None if row_lives is None else float(_combine([x for x in row_lives if math.isfinite(x)]))
     if l10r is not None and not math.isfinite(l10r):
         l10r = None
     out["basic_rating_life_million_revolutions"] = l10
@@ -531,6 +541,15 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
     out["life_factors"] = factors
     out["static_safety_factor"] = c0 / p0 if p0 else None
     out["static_safety_factor_pressure"] = pressure_safety_factor(result)
+    if nrows > 1:
+        # per row of a set: its share of the reference life and its pressure-based s0 (which row limits)
+        out["row_ratings"] = [
+            {"row": k, "reference_rating_life_million_revolutions":
+                (row_lives[k] if row_lives is not None and math.isfinite(row_lives[k]) else None),
+             "reference_rating_life_hours": (life_hours(row_lives[k], result.speed) if row_lives is not None
+                                             and math.isfinite(row_lives[k]) else None),
+             "static_safety_factor_pressure": pressure_safety_factor(result, row=k)}
+            for k in range(nrows)]
     out["estimated"] = estimated
     out["life_notes"] = notes
     return out

@@ -54,20 +54,27 @@ def equivalent_static_load(fr: float, fa: float, contact_angle: float, rows: int
     return max(x0 * fr + y0 * fa, fr)
 
 
-def max_contact_pressure(result) -> float:
-    """Largest Hertz pressure of any ball on either raceway [Pa] (0 when no ball is loaded)."""
+def max_contact_pressure(result, row: int | None = None) -> float:
+    """Largest Hertz pressure of any ball (of ``row``, or of all rows) on either raceway [Pa] (0 when no ball is
+    loaded)."""
     b = result.balls
     if not len(b.get("inner_max_pressure_Pa", ())):
         return 0.0
-    return float(max(np.max(b["inner_max_pressure_Pa"]), np.max(b["outer_max_pressure_Pa"])))
+    pi, po = b["inner_max_pressure_Pa"], b["outer_max_pressure_Pa"]
+    if row is not None:
+        sel = b["row"] == row
+        if not np.any(sel):
+            return 0.0
+        pi, po = pi[sel], po[sel]
+    return float(max(np.max(pi), np.max(po)))
 
 
-def pressure_safety_factor(result, limit: float = STATIC_PRESSURE_LIMIT) -> float | None:
-    """s₀,p = (limit / p_max)³ [-] with the ISO 76 reference pressure 4 200 MPa (module docstring);
-    ``None`` when no ball is loaded or the result did not converge."""
+def pressure_safety_factor(result, limit: float = STATIC_PRESSURE_LIMIT, row: int | None = None) -> float | None:
+    """s₀,p = (limit / p_max)³ [-] with the ISO 76 reference pressure 4 200 MPa (module docstring), over all
+    rows or of one ``row``; ``None`` when no ball is loaded or the result did not converge."""
     if not getattr(result, "converged", True):
         return None
-    p = max_contact_pressure(result)
+    p = max_contact_pressure(result, row)
     if not p > 0:
         return None
     return (limit / p) ** 3

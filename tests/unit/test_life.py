@@ -259,3 +259,15 @@ def test_static_cli_lives_and_safety_json(tmp_path):
     assert "basic rating life L10 = 3,811 h at 1500 rpm" in text and "s0 = C0/P0 = 3.9" in text
     bad = subprocess.run(cmd + ["--contamination", "dirty"], capture_output=True, text=True)
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "--contamination" in bad.stderr
+
+
+def test_row_ratings_of_a_set_combine_to_the_system():
+    """Per-row reference lives of a set combine (Weibull e = 10/9) to the system's L10r; the system's pressure-based
+    s0 is that of the row with the highest contact pressure."""
+    hub = dataclasses.replace(load_bearing("hub-seed001"), dynamic_load_rating=40e3)
+    r = jh.solve(hub, jh.Loads(fa=945.0, fr_y=3268.0, m_z=300.0), 900.0)
+    rows = r.rating["row_ratings"]
+    lives = [x["reference_rating_life_million_revolutions"] for x in rows]
+    np.testing.assert_allclose(sum(x ** (-10 / 9) for x in lives) ** -0.9, r.reference_rating_life, rtol=1e-12)
+    assert lives[0] != lives[1]
+    assert r.rating["static_safety_factor_pressure"] == min(x["static_safety_factor_pressure"] for x in rows)

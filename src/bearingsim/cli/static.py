@@ -179,6 +179,12 @@ def print_rating(con, res, friction=None) -> None:
     con.print("static safety: s0 = C0/P0 = " + ("—" if s0 is None else f"{s0:.3g}") + flag("static_load_rating_N")
               + " (ISO 76); from the maximum contact pressure, (4200 MPa / p_max)³ = "
               + ("—" if s0p is None else f"{s0p:.3g}"))
+    for row in r.get("row_ratings") or ():
+        lr, s0r = row["reference_rating_life_million_revolutions"], row["static_safety_factor_pressure"]
+        lh = row["reference_rating_life_hours"]
+        con.print(f"  row {row['row']}: L10r = " + ("—" if lr is None else f"{lr:.4g} × 10⁶ rev")
+                  + ("" if lh is None else f" = {_hours(lh)}") + ", s0 from p_max = "
+                  + ("—" if s0r is None else f"{s0r:.3g}"))
     if friction is not None:
         tq, pw = friction.get("friction_torque_N_m"), friction.get("power_loss_W")
         if tq is not None:
