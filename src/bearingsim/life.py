@@ -442,7 +442,8 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
     ``static_safety_factor_pressure`` ((4200 MPa / p_max)³, :mod:`bearingsim.safety`), ``life_factors``
     (a1, a_ISO, κ, ν, ν1, e_C), ``estimated`` (the names of figures estimated, not from the bearing file)
     and ``life_notes`` (why a figure is absent).  ``lubricant`` (a :class:`~bearingsim.lubricants.Lubricant`)
-    and ``temperature`` [K] give ν for the modified lives; without them those are None with a note."""
+    (or its library name / TOML path) and ``temperature`` [K] give ν for the modified lives; without them those are
+    None with a note."""
     from .safety import equivalent_static_load, pressure_safety_factor
 
     brg = result.bearing
@@ -516,6 +517,10 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
         if l10 is not None or l10r is not None:
             notes.append("no lubricant and temperature (--lubricant, --temperature): no modified rating life")
     elif not at_rest:
+        if not hasattr(lubricant, "kinematic_viscosity"):  # a library name or a TOML path
+            from .lubricants import get_lubricant
+
+            lubricant = get_lubricant(lubricant)
         nu = lubricant.kinematic_viscosity(temperature)
         nu1 = rated_viscosity(result.speed, row_b.pitch_diameter)
         kappa = nu / nu1
