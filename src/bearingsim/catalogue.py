@@ -145,7 +145,7 @@ def static_load_rating(ball_count: int, ball_diameter: float, pitch_diameter: fl
 def cn_clearance(bore: float) -> tuple[float, float]:
     """(min, max) radial internal clearance of group CN of a deep groove ball bearing of bore ``bore`` [m],
     in [m] (:data:`CN_CLEARANCE`)."""
-    d = bore * 1e3
+    d = round(bore * 1e3, 6)  # [mm]; rounded so that 40e-3 m is 40 mm, in the group "over 30 incl. 40"
     for lo, hi, cmin, cmax in CN_CLEARANCE:
         if (lo < d <= hi) or (lo == 0.0 and d <= hi):
             return cmin * 1e-6, cmax * 1e-6
