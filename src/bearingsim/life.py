@@ -414,11 +414,12 @@ def _unit_data(bearing):
 
 
 def _rating(bearing, name: str, row_b, nrows: int) -> float:
-    """A rating of the unit [N] (the bearing's field, else nrows × the row's for C₀; 0 = unknown)."""
+    """A rating of the unit [N]: the bearing's field, else from the row's — i^0.7 C (ISO 281 §5.1), i C₀
+    (ISO 76 §5.1) and i C_u (SKF, bearing pairs: P_u = 2 P_u of a single bearing) for i rows; 0 = unknown."""
     v = float(getattr(bearing, name, 0.0) or 0.0)
     if v <= 0 and row_b is not bearing:
         r = float(getattr(row_b, name, 0.0) or 0.0)
-        v = nrows * r if name == "static_load_rating" else (nrows**0.7 * r if name == "dynamic_load_rating" else 0)
+        v = nrows**0.7 * r if name == "dynamic_load_rating" else nrows * r
     return v
 
 
