@@ -16,7 +16,8 @@ Example (``examples/spindle-7011.toml``)::
     tolerance = 1e-6                    # integrator tolerance (relative; lengths scaled by 1 mm)
     integrator = "auto"                 # ros34w (W-method, implicit per ball) for traction = "slices", else dopri5;
                                         # or "dopri5", "ros2w", "ros34w"
-    contact_damping = 0.05              # Hunt–Crossley alpha [s/m]
+    contact_damping = 0.05              # Hunt–Crossley alpha [s/m], or "ehl": the alpha that gives the loaded
+                                        # contacts the lubricant's squeeze-film damping (contact/damping.py)
     gravity = ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]   # optional
     load_point = "0 mm"                 # axial position of the load point (default: the bearing's)
     chunk = 200                         # samples per netCDF chunk (memory bound)
@@ -88,7 +89,7 @@ class Case:
     traction: str = "slices"
     n_slices: int = 8
     tolerance: float = 1e-6
-    contact_damping: float = 0.05
+    contact_damping: float | str = 0.05  #: Hunt–Crossley α [s/m] or "ehl" (:meth:`damping_alpha`)
     gravity: tuple = (0.0, 0.0, 0.0)
     load_point: float = 0.0  #: relative to the origin of the bearing's kernel rows [m]
     ring_mass: float = 2.0
@@ -126,8 +127,17 @@ class Case:
             raise InputError("n_slices", f"must be an integer in 1..64, got {self.n_slices!r}", "e.g. 8")
         if isinstance(self.chunk, bool) or not (isinstance(self.chunk, int) and 1 <= self.chunk <= MAX_CHUNK):
             raise InputError("chunk", f"must be an integer in 1..{MAX_CHUNK}, got {self.chunk!r}", "e.g. 200")
-        if self.contact_damping < 0:
-            raise InputError("contact_damping", "must be ≥ 0", "e.g. 0.05 (s/m)")
+        if isinstance(self.contact_damping, str):
+            if self.contact_damping != "ehl":
+                raise InputError("contact_damping", f"unknown model {self.contact_damping!r}",
+                                 'give a Hunt–Crossley alpha in s/m (e.g. 0.05) or "ehl"')
+            if self.lubricant is None:
+                raise InputError("contact_damping", '"ehl" needs a lubricant',
+                                 'add lubricant = "iso-vg-68" or give a numeric alpha (e.g. 0.05)')
+        elif isinstance(self.contact_damping, bool) or not isinstance(self.contact_damping, (int, float)) \
+                or not (0 <= self.contact_damping < math.inf):
+            raise InputError("contact_damping", f"must be a finite number ≥ 0, got {self.contact_damping!r}",
+                             "e.g. 0.05 (s/m)")
         if self.integrator not in ("auto", "dopri5", "ros2w", "ros34w"):
             raise InputError("integrator", f"unknown integrator {self.integrator!r}",
                              "use auto, dopri5, ros2w or ros34w")
@@ -161,10 +171,28 @@ class Case:
         src = {k: v for k, v in self.source.items() if k != "checkpoint_every"}  # not part of the trajectory
         return hashlib.sha256(json.dumps(src, sort_keys=True, default=str).encode()).hexdigest()[:16]
 
+    def damping_alpha(self) -> float:
+        """Hunt–Crossley α [s/m] of the run: the number given, or for ``contact_damping = "ehl"`` the α that gives
+        the loaded contacts of the quasi-static start (loads and speed at t = 0) the squeeze-film damping of
+        :func:`bearingsim.contact.damping.equivalent_alpha` (Σ c_ehl / Σ 1.5 Q)."""
+        if not isinstance(self.contact_damping, str):
+            return float(self.contact_damping)
+        from ..contact.damping import equivalent_alpha
+        from ..statics import jones_harris as jh
+        from .model import _static_loads
+
+        w0 = abs(self.speed.at(0.0))
+        res = jh.solve(self.bearing, _static_loads(self.loads, 0.0, self.load_point), w0, control=self.control)
+        if not res.converged or not w0 > 0:
+            raise InputError("contact_damping", '"ehl" needs a converged quasi-static start at a speed > 0 '
+                             f"(converged: {res.converged}, speed {w0:.4g} rad/s)",
+                             "give a numeric Hunt–Crossley alpha (e.g. 0.05) for runs from standstill")
+        return equivalent_alpha(res, self.lubricant, self.temperature)
+
     def model_options(self) -> dict:
         c = self.cage
         return dict(ring_mass=self.ring_mass, ring_inertia=self.ring_inertia, gravity=self.gravity,
-                    damping_alpha=self.contact_damping, traction=self.traction, n_slices=self.n_slices,
+                    damping_alpha=self.damping_alpha(), traction=self.traction, n_slices=self.n_slices,
                     load_point=self.load_point, speed=self.speed.as_tuple(), lubricant=self.lubricant,
                     temperature=self.temperature, lubrication=self.lubrication or None,
                     cage_mass=c.get("mass"), pocket_clearance=c.get("pocket_clearance"),

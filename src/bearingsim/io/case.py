@@ -38,7 +38,7 @@ def case_from_dict(data: dict, base: Path | None = None) -> Case:
 
     Every dimensional value needs its unit (``duration = "20 ms"``; a bare number is an
     :class:`InputError` naming the unit to add, :func:`bearingsim.units.file_input`); ``tolerance``,
-    ``contact_damping`` [s/m], ``n_slices``, ``chunk`` and ``cage.friction`` are bare numbers.
+    ``contact_damping`` [s/m] (or ``"ehl"``), ``n_slices``, ``chunk`` and ``cage.friction`` are bare numbers.
     """
     if not isinstance(data, dict):
         raise InputError("case", f"expected a table, got {type(data).__name__}", "give the parsed TOML table (a dict)")
@@ -124,8 +124,14 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
     tol = data.get("tolerance", 1e-6)
     damping = data.get("contact_damping", 0.05)
     for k, v in (("tolerance", tol), ("contact_damping", damping)):
+        if k == "contact_damping" and isinstance(v, str):
+            if v != "ehl":
+                raise InputError(k, f"unknown contact damping model {v!r}"[:160],
+                                 'give a Hunt–Crossley alpha in s/m (e.g. 0.05) or "ehl"')
+            continue
         if isinstance(v, bool) or not isinstance(v, (int, float)):
-            raise InputError(k, f"expected a number, got {v!r}", "e.g. 1e-6")
+            raise InputError(k, f"expected a number, got {v!r}", "e.g. 1e-6" if k == "tolerance" else
+                             'e.g. 0.05 (Hunt–Crossley alpha, s/m) or "ehl"')
     start = data.get("start", "consistent")
     if not isinstance(start, str):
         raise InputError("start", f"expected a name, got {start!r}"[:160], 'use start = "consistent" or "rest"')
@@ -144,7 +150,7 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
                 duration=parse_quantity(data["duration"], "time", "duration"),
                 output_interval=parse_quantity(data["output_interval"], "time", "output_interval"),
                 lubricant=lub, temperature=temperature, traction=traction, n_slices=data.get("n_slices", 8),
-                tolerance=float(tol), contact_damping=float(damping), gravity=tuple(gvec), load_point=load_point,
+                tolerance=float(tol), contact_damping=damping if isinstance(damping, str) else float(damping), gravity=tuple(gvec), load_point=load_point,
                 ring_mass=ring_mass, ring_inertia=inertia, cage=cage, lubrication=data.get("lubrication", {}),
                 chunk=data.get("chunk", 200), control=data.get("control", "outer"),
                 checkpoint_every=every, checkpoint_interval=interval, integrator=data.get("integrator", "auto"),
