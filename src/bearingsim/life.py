@@ -32,7 +32,12 @@ ISO 281:2007 (:func:`equivalent_dynamic_load`, :func:`rating_summary`):
 * modified rating life L_nm = a1 a_ISO L10 (eq. 2): a1 from the reliability (table 12), a_ISO for ball
   bearings from the viscosity ratio κ = ν/ν1 and e_C C_u/P (eqs. 22–25), ν1 the rated viscosity (eqs. 27–28),
   e_C from a cleanliness level (table 11, the middle of its range), C_u the fatigue load limit (bearing file,
-  else the ISO 281:2007 annex B estimate C_u = C₀/22 for d_m ≤ 100 mm, flagged).
+  else the ISO 281:2007 annex B estimate C_u = C₀/22 for d_m ≤ 100 mm, flagged);
+* modified reference rating life L_nmr = a1 a_ISO L10r (ISO/TS 16281:2008 §7) with a_ISO evaluated at the dynamic
+  equivalent reference load P_ref = C / L10r^(1/3).
+
+A bearing set reports, besides the system's figures, each row's reference life and pressure-based static safety
+(``row_ratings``): the row that limits the set.
 
 Units: forces [N], speeds [rad/s] inside, lives [10^6 rev] and [h], viscosities [m²/s].
 """
@@ -440,7 +445,8 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
     ``basic_rating_life_million_revolutions``, ``basic_rating_life_hours``, ``modified_rating_life_hours``,
     ``reference_rating_life_million_revolutions``, ``reference_rating_life_hours``,
     ``modified_reference_rating_life_hours``, ``static_safety_factor`` (C₀/P₀, ISO 76),
-    ``static_safety_factor_pressure`` ((4200 MPa / p_max)³, :mod:`bearingsim.safety`), ``life_factors``
+    ``static_safety_factor_pressure`` ((4200 MPa / p_max)³, :mod:`bearingsim.safety`), for a set ``row_ratings``
+    (per row: reference life in 10⁶ rev and hours, pressure-based s₀), ``life_factors``
     (a1, a_ISO, κ, ν, ν1, e_C), ``estimated`` (the names of figures estimated, not from the bearing file)
     and ``life_notes`` (why a figure is absent).  ``lubricant`` (a :class:`~bearingsim.lubricants.Lubricant`)
     (or its library name / TOML path) and ``temperature`` [K] give ν for the modified lives; without them those are
