@@ -336,6 +336,7 @@ class CellResult:
             "simulated_seconds": float(self.record.get("simulated_seconds", math.nan)),
             "steps": int(self.record.get("steps", 0)),
             "from_earlier_run": bool(self.record.get("from_folder", False)),
+            "resumed_from_checkpoint": bool(self.record.get("resumed", False)),
             "notes": list(self.notes),
         }
 
