@@ -27,7 +27,9 @@ def test_commands_are_module_level_functions():
     from bearingsim.cli import app
 
     callbacks = list(_commands(app))
-    assert len(callbacks) == 12  # 8 top-level commands, export ross, three reproduce commands
+    # 10 top-level commands (catalog, clearance, static, cage-modes, lubrication, lubricants, traction-curve, map,
+    # simulate, report), export ross, three reproduce commands
+    assert len(callbacks) == 14
     for f in callbacks:
         assert f.__module__.startswith("bearingsim.cli."), f
         assert f.__qualname__ == f.__name__, f"{f.__module__}.{f.__qualname__} is not a module-level function"

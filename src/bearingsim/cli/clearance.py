@@ -14,7 +14,7 @@ from typing import Annotated, Optional
 import typer
 
 from .console import make_console
-from .options import BearingArg, JsonOpt
+from .options import BearingArg, JsonOpt, SpeedOpt  # --speed: the inner ring's centrifugal expansion
 
 ShaftFitOpt = Annotated[Optional[str], typer.Option(
     "--shaft-fit", help='Diametral interference of the inner ring on the shaft, e.g. "12 um" (negative: loose; '
@@ -26,8 +26,6 @@ TemperaturesOpt = Annotated[Optional[str], typer.Option(
     "--temperatures", help='Operating temperatures, e.g. "inner=70 degC,outer=55 degC" (also balls=, shaft=, '
     "housing=, reference= (default 20 degC); balls default to the mean of the rings, shaft to inner, housing "
     "to outer)")]
-SpeedOpt = Annotated[Optional[str], typer.Option(
-    "--speed", help='Inner-ring speed for its centrifugal expansion, e.g. "6000 rpm"')]
 ShaftBoreOpt = Annotated[Optional[str], typer.Option("--shaft-bore", help='Bore of a hollow shaft, e.g. "20 mm"')]
 HousingOdOpt = Annotated[Optional[str], typer.Option(
     "--housing-od", help='Outside diameter of the housing, e.g. "120 mm" (default: rigid, infinitely thick)')]
