@@ -155,8 +155,13 @@ def reference_rating_life(result) -> float | None:
 
 
 # ---- ISO 281:2007 table 3: X, Y, e ------------------------------------------------------------------
-#: relative axial load f₀F_a/C₀r of the rows below [-]
+#: relative axial load f₀F_a/C₀r of the rows below [-] (deep groove and 5°).  The table goes back to the axial
+#: load per ball F_a/(i Z D_w²) = 25, 50, 100, 150, 200, 300, 500, 750, 1000 lbf/in² (0.172 … 6.89 N/mm², ISO/TR
+#: 1281-1); since C₀r = f₀ i Z D_w² cos α (ISO 76), f₀F_a/C₀r = F_a/(i Z D_w² cos α) and the 10° and 15° columns
+#: are those loads divided by cos α, as ISO 281:2007 prints them (_REL_LOAD_BY_ANGLE)
 _REL_LOAD = (0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89)
+_REL_LOAD_BY_ANGLE = {5: _REL_LOAD, 10: (0.175, 0.350, 0.700, 1.05, 1.40, 2.10, 3.50, 5.25, 7.00),
+                      15: (0.178, 0.357, 0.714, 1.07, 1.43, 2.14, 3.57, 5.35, 7.14)}
 #: radial contact groove (deep-groove) ball bearings: e and Y (X = 0.56) for F_a/F_r > e, single and double row
 _DG_E = (0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44)
 _DG_Y = (2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00)
@@ -200,9 +205,10 @@ def interp(x: float, xs, ys) -> float:
     return float(ys[-1])
 
 
-def _at_load(values, rel_load: float) -> float:
-    """Linear interpolation of a table-3 column in f₀F_a/C₀r, clamped to the table's range."""
-    return interp(rel_load, _REL_LOAD, values)
+def _at_load(values, rel_load: float, loads=_REL_LOAD) -> float:
+    """Linear interpolation of a table-3 column in f₀F_a/C₀r (at the relative loads ``loads``), clamped to the
+    table's range."""
+    return interp(rel_load, loads, values)
 
 
 def _angular_entry(deg: int, rel_load: float | None):
@@ -210,8 +216,9 @@ def _angular_entry(deg: int, rel_load: float | None):
     if deg in _AC_LARGE:
         return _AC_LARGE[deg]
     e, (xs, ys), (x1, y1), (x2, y2) = _AC_SMALL[deg]
-    return (_at_load(e, rel_load), (xs, _at_load(ys, rel_load)), (x1, _at_load(y1, rel_load)),
-            (x2, _at_load(y2, rel_load)))
+    col = _REL_LOAD_BY_ANGLE[deg]
+    return (_at_load(e, rel_load, col), (xs, _at_load(ys, rel_load, col)), (x1, _at_load(y1, rel_load, col)),
+            (x2, _at_load(y2, rel_load, col)))
 
 
 def needs_static_rating(contact_angle: float, kind: str = "angular_contact") -> bool:
@@ -489,8 +496,9 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
         notes.append(why)
     else:
         rel = f0 * fa / c0 if needs_static_rating(alpha, kind) else None
-        if rel is not None and rel > _REL_LOAD[-1]:
-            notes.append(f"relative axial load f0·Fa/C0 = {rel:.3g} exceeds ISO 281 table 3 (6.89): the "
+        rel_max = _REL_LOAD[-1] / math.cos(alpha)  # 6.89 (deep groove) … 7.14 (15°)
+        if rel is not None and rel > rel_max * (1 + 1e-3):
+            notes.append(f"relative axial load f0·Fa/C0 = {rel:.3g} exceeds ISO 281 table 3 ({rel_max:.3g}): the "
                          "bearing is loaded beyond its permissible axial load; factors of the last row used")
         p = equivalent_dynamic_load(fr, fa, alpha, i_table, kind, rel)
         if p is None:
