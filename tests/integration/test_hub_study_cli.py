@@ -158,7 +158,7 @@ def test_one_cell_on_a_real_dask_cluster_equals_the_local_run(tmp_path):
 
 
 @pytest.mark.parametrize("args, field", [
-    (["--traction", "curve"], "--traction"),
+    (["--traction", "magic"], "--traction"),
     (["--speeds", "fast"], "--speeds"),
     (["--cycles", "1"], "--cycles"),
     (["--workers", "0"], "--workers"),

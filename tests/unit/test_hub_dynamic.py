@@ -73,12 +73,30 @@ def test_cell_case_changes_speed_frequency_duration_and_traction_only():
     assert c2.output_interval == pytest.approx(1 / (200 * 2000.0), rel=1e-12)
 
 
-def test_traction_curve_is_refused_with_the_reason():
+def test_traction_choices():
+    data = read_toml(CASE, "case")
+    c = hd.cell_case(data, CASE.parent, 10.0, 50.0, 3, "curve")
+    assert c.traction == "slices" and c.lubrication["fluid_model"] == "curve"
+    assert c.lubrication["fluid_curve"] == list(hd.SEED_FIG4_CURVE)
+    p = hd.cell_case(data, CASE.parent, 10.0, 50.0, 3, "physical")
+    assert p.traction == "slices" and p.lubrication.get("fluid_model") == "physical"
+    assert "fluid_curve" not in p.lubrication
+    assert c.fingerprint() != p.fingerprint()  # another case: a stored cell of one is not reused for the other
     with pytest.raises(InputError) as e:
-        hd.traction_model("curve")
-    assert e.value.field == "--traction" and "no traction-curve law" in str(e.value)
-    with pytest.raises(InputError, match="unknown traction"):
         hd.traction_model("magic")
+    assert e.value.field == "--traction" and "unknown traction" in str(e.value)
+
+
+def test_traction_curve_has_the_shape_of_the_papers_fig4():
+    """[S1] Fig. 4 (axes 0-0.1 and 0-0.015): μ(0) = 0, peak 0.08 at s = 0.01, below the peak beyond it."""
+    from bearingsim.contact import traction
+
+    coef = traction.fit_four_parameter(*hd.SEED_FIG4_CURVE)
+    s = np.linspace(0.0, 0.05, 5001)
+    mu = traction.traction_curve(s, coef)
+    assert mu[0] == pytest.approx(0.0, abs=1e-12)
+    assert s[np.argmax(mu)] == pytest.approx(0.01, abs=1e-5) and mu.max() == pytest.approx(0.08, rel=1e-6)
+    assert 0.07 < mu[-1] < 0.08
 
 
 def _standin_estimate(t, load, response, frequency, level, **kw):
@@ -205,7 +223,7 @@ def test_bad_input(tmp_path):
     with pytest.raises(InputError, match="workers"):
         hd.run_study(CASE, workers=0)
     with pytest.raises(InputError, match="traction"):
-        hd.run_study(CASE, traction="curve")
+        hd.run_study(CASE, traction="magic")
     const = tmp_path / "const.toml"
     const.write_text(CASE.read_text().split("[loads]")[0] + '[loads]\nfr = "2800 N"\n')
     with pytest.raises(InputError, match="loads"):

@@ -36,7 +36,8 @@ def reproduce_hub_hysteresis(
     cycles: int = typer.Option(8, "--cycles", help="load cycles per cell after the start-up cycles"),
     startup: int = typer.Option(2, "--startup-cycles", help="load cycles simulated before them (not periodic yet)"),
     traction: Optional[str] = typer.Option(None, "--traction",
-                                           help="physical (lubricated film), curve, none (default: the case's)"),
+                                           help="physical (lubricated film), curve (fluid law of the paper's "
+                                                "Fig. 4 shape), none (default: the case's)"),
     workers: Optional[int] = typer.Option(None, "--workers",
                                           help="local processes (default: one per cell up to the cores)"),
     scheduler: Optional[str] = typer.Option(None, "--scheduler",

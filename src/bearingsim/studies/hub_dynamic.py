@@ -67,8 +67,14 @@ SEED_FIG9_ALT = {(10, 50): 6.7, (50, 50): 4.1, (100, 50): 3.0,
 #: load cycles simulated before the ``cycles`` the estimator is meant to use (the start is not periodic;
 #: the estimator's own periodicity criterion decides how many it actually discards)
 STARTUP_CYCLES = 2
-#: --traction choices → the dynamic case's traction model (None: the engine has no such law)
-TRACTIONS = {"physical": "slices", "none": "none", "curve": None}
+#: --traction choices → the dynamic case's traction model ("curve": the sliced lubricated kernel with the fluid
+#: law replaced by the four-parameter curve :data:`SEED_FIG4_CURVE`)
+TRACTIONS = {"physical": "slices", "none": "none", "curve": "slices"}
+#: (μ₀, μ_max, s_max, μ_∞) of a four-parameter traction curve (contact/traction.py, fit_four_parameter) of the
+#: shape of [S1] Fig. 4: μ = 0 at s = 0, a peak of 0.08 near s = 0.01, a slow fall; our reading of a figure
+#: without stated conditions (μ_∞ = 0.07 assumed).  Used as the fluid law of ``--traction curve``
+#: (``[lubrication] fluid_model = "curve"``); the boundary law and the mixing in Λ stay the case's.
+SEED_FIG4_CURVE = (0.0, 0.08, 0.01, 0.07)
 #: [S1] Fig. 8: W_H is read where the moment passes 0.3 kN·m
 LEVEL = 300.0
 
@@ -107,12 +113,7 @@ def traction_model(traction: str | None) -> str | None:
         return None
     if traction not in TRACTIONS:
         raise InputError("--traction", f"unknown traction {traction!r}", "use physical, curve or none")
-    model = TRACTIONS[traction]
-    if model is None:
-        raise InputError("--traction", "the dynamic engine has no traction-curve law: the four-parameter curve "
-                         "of contact/traction.py is not wired into the dynamic contacts, and the regularised "
-                         "Coulomb law there is a test stand-in", "use --traction physical (lubricated film) or none")
-    return model
+    return TRACTIONS[traction]
 
 
 def cell_case(case_data: dict, base: Path | None, speed_kmh: float, frequency_hz: float, cycles: int,
@@ -139,6 +140,15 @@ def cell_case(case_data: dict, base: Path | None, speed_kmh: float, frequency_hz
     model = traction_model(traction)
     if model is not None:
         d["traction"] = model
+    if traction in ("physical", "curve"):
+        lub = dict(d.get("lubrication") or {})
+        if traction == "curve":
+            lub["fluid_model"] = "curve"
+            lub["fluid_curve"] = list(SEED_FIG4_CURVE)
+        else:
+            lub.pop("fluid_curve", None)
+            lub["fluid_model"] = "physical"
+        d["lubrication"] = lub
     return case_from_dict(d, base=base)
 
 
@@ -562,6 +572,6 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
     return HysteresisStudy(cells, level, cycles, startup, traction, str(case_path), wall, notes)
 
 
-__all__ = ["LEVEL", "SEED_FIG9", "SEED_FIG9_ALT", "STARTUP_CYCLES", "TRACTIONS", "TYRE_RADIUS", "CellResult",
-           "HysteresisStudy", "analyse_cell", "cell_case", "cell_name", "last_cycle", "load_cell", "run_cell",
+__all__ = ["LEVEL", "SEED_FIG4_CURVE", "SEED_FIG9", "SEED_FIG9_ALT", "STARTUP_CYCLES", "TRACTIONS", "TYRE_RADIUS",
+           "CellResult", "HysteresisStudy", "analyse_cell", "cell_case", "cell_name", "last_cycle", "load_cell", "run_cell",
            "run_study", "save_cell", "seed_value", "static_compliance", "traction_model"]
