@@ -573,5 +573,5 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
 
 
 __all__ = ["LEVEL", "SEED_FIG4_CURVE", "SEED_FIG9", "SEED_FIG9_ALT", "STARTUP_CYCLES", "TRACTIONS", "TYRE_RADIUS",
-           "CellResult", "HysteresisStudy", "analyse_cell", "cell_case", "cell_name", "last_cycle", "load_cell", "run_cell",
-           "run_study", "save_cell", "seed_value", "static_compliance", "traction_model"]
+           "CellResult", "HysteresisStudy", "analyse_cell", "cell_case", "cell_name", "last_cycle", "load_cell",
+           "run_cell", "run_study", "save_cell", "seed_value", "static_compliance", "traction_model"]
