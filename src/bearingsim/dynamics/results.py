@@ -104,12 +104,13 @@ class Results:
             yield lambda name, start=0, stop=None: ds[name][start:stop].values
 
     def loop_widths(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> np.ndarray:
-        """Hysteresis of the tilt against the moment per load cycle, Sakaguchi & Shibutani [S1] Fig. 8 definition [rad].
+        """Two-point hysteresis reading per load cycle, Sakaguchi & Shibutani [S1] Fig. 8 definition [rad] (diagnostic).
 
         For every time the applied load ``applied_load[:, load]`` (default M_z) passes ``moment``
         [N·m] rising and then falling: the tilt (``inner_ring_displacement[:, dof]``, default γz) at
         the falling crossing minus that at the rising one (linear interpolation between samples);
-        positive when the tilt lags the moment.  [S1] evaluates it at 0.3 kN·m.
+        positive when the tilt lags the moment.  [S1] evaluates it at 0.3 kN·m.  Unfiltered, it reads
+        whatever vibration rides on the loop at the two instants: the estimate is :meth:`hysteresis`.
         """
         with self._columns() as read:  # only the two variables, not the whole run
             m = read("applied_load")[:, load]
@@ -117,9 +118,47 @@ class Results:
         return analysis.loop_widths(m, g, moment)
 
     def fluctuation_range(self, moment: float = 300.0, dof: int = 4, load: int = 4) -> float:
-        """W_H of the last complete load cycle [rad] (:meth:`loop_widths`); NaN if there is none."""
+        """Two-point W_H of the last complete load cycle [rad] (:meth:`loop_widths`, diagnostic); NaN if there is none.
+
+        The estimate with its interval over the periodic cycles is :meth:`hysteresis` (``.mean``, ``.ci95``).
+        """
         w = self.loop_widths(moment, dof, load)
         return float(w[-1]) if len(w) else math.nan
+
+    def load_frequency(self, load: int = 4) -> float:
+        """Frequency [Hz] of the load channel ``load``: ``attrs["load_frequency_hz"]`` when the run stored it,
+        else estimated from the applied load's rising crossings of its mid-range
+        (:func:`.analysis.estimate_frequency`; exact for a single sine, NaN when it does not vary)."""
+        f = self.attrs.get("load_frequency_hz") if isinstance(self.attrs, dict) else None
+        if f is not None and math.isfinite(float(f)) and float(f) > 0:
+            return float(f)
+        with self._columns() as read:
+            t = read("time")
+            m = read("applied_load")[:, load]
+        return analysis.estimate_frequency(t, m)
+
+    def hysteresis(self, level: float = 300.0, dof: int = 4, load: int = 4, frequency: float | None = None,
+                   **options) -> "analysis.LoopEstimate":
+        """Loop of the tilt against the moment: W_H per periodic cycle with mean and 95 % interval, loop area,
+        phase lag and compliance of the fundamental (:func:`.analysis.hysteresis_estimate`; SI: rad, J).
+
+        level : load at which W_H is read [N·m] ([S1] Fig. 8: 300); dof : column of
+        ``inner_ring_displacement`` (4 = γz); load : column of ``applied_load`` (4 = M_z); frequency :
+        of the load [Hz], from :meth:`load_frequency` when None.  ``options`` go to the estimator
+        (n_harmonics, min_cycles, tolerance, first_cycle).
+        """
+        from ..errors import InputError
+
+        if frequency is None:
+            frequency = self.load_frequency(load)
+            if not (math.isfinite(frequency) and frequency > 0):
+                raise InputError("frequency", f"the applied load (column {load}) does not vary periodically",
+                                 "give frequency= in Hz, or run with a sine load")
+        with self._columns() as read:
+            t = np.asarray(read("time"))
+            m = np.asarray(read("applied_load")[:, load])
+            g = np.asarray(read("inner_ring_displacement")[:, dof])
+        return analysis.hysteresis_estimate(t, m, g, frequency, level, **options)
 
     def plot(self, variables=("inner_ring_displacement", "cage_angular_speed"), ax=None):
         """Plot variables against time (matplotlib); returns the figure."""
