@@ -132,3 +132,15 @@ def test_clean_start_removes_the_tilt_kick():
     assert amp["rest"] == pytest.approx(predicted, rel=0.25)
     assert amp["consistent"] < amp["rest"] / 20
     assert amp["ramp"] < amp["rest"] / 20
+
+
+def test_start_rate_of_a_table_load_is_its_right_hand_rate():
+    """A load table that starts rising at t = 0 has a kink there: the start takes the rate for t ≥ 0 (a central
+    difference would halve it)."""
+    data = read_toml(CASE, "case")
+    data = dict(data, loads={"fr": {"table": [["0 ms", "2785 N"], ["5 ms", "3785 N"]]}})
+    c = case_from_dict(data, CASE.parent)
+    _, _, y0, res = run.build(c)
+    f_rate = np.array([0.0, 1000.0 / 0.005, 0.0, 0.0, c.load_point * 1000.0 / 0.005])
+    np.testing.assert_allclose(y0[5:10], np.linalg.solve(res.stiffness, f_rate), rtol=2e-3,
+                               atol=1e-9)

@@ -388,11 +388,12 @@ def quasi_static_rates(model: Model, bearing, loads, static, speed: float, load_
     equation M ë + K e = −M q̈_s starts with e = 0, ė = −q̇_s and rings with amplitude |q̇_s|/ω_n in every
     mode ω_n (the kick of issue 13).  Starting with q̇ = q̇_s(t0) removes it to first order (what remains is
     forced by q̈_s, amplitude |q̈_s|/ω_n², smaller by ω_load/ω_n).  To first order q̇_s = K⁻¹ dF/dt with K the
-    static stiffness; here it is the central difference of two converged solves,
-    q̇_s ≈ (q_s(t0 + h) − q_s(t0 − h)) / 2h with h = ``loads.rate_step()`` (O(h²) error; the solves start
-    from q_s(t0), tolerance far below the change of q over h), which also gives the balls' centre velocities
-    in the groove (their positions x1, x2 follow the contact angles).  Ball spins and the cage are left at
-    their quasi-static values at t0.  Returns zeros when the loads do not change at t0 (e.g. a ramp-in).
+    static stiffness; here it is the one-sided three-point difference of converged solves,
+    q̇_s ≈ (−3 q_s(t0) + 4 q_s(t0 + h) − q_s(t0 + 2h)) / 2h with h = ``loads.rate_step()`` (O(h²) error; only
+    t ≥ t0, so a load table that starts rising at t0 gives its right-hand rate; the solves start from
+    q_s(t0), tolerance far below the change of q over h), which also gives the balls' centre velocities in the
+    groove (their positions x1, x2 follow the contact angles).  Ball spins and the cage are left at their
+    quasi-static values at t0.  Returns zeros when the loads do not change at t0 (e.g. a ramp-in).
     """
     from ..statics import jones_harris as jh
 
@@ -401,18 +402,18 @@ def quasi_static_rates(model: Model, bearing, loads, static, speed: float, load_
     if not (h > 0 and math.isfinite(h)):
         raise InputError("h", f"must be a positive time step, got {h!r} s", "omit it (default from the loads)")
     rates = np.zeros(model.n_state)
-    if not np.any(loads.rate(t0, h)):
+    if not np.any(loads.at(t0 + h) - loads.at(t0)) and not np.any(loads.at(t0 + 2 * h) - loads.at(t0)):
         return rates
     w = abs(speed)
     states = []
-    for tt in (t0 - h, t0 + h):
+    for tt in (t0, t0 + h, t0 + 2 * h):
         res = jh.solve(bearing, _static_loads(loads, tt, load_point), w, control=control,
                        initial=np.asarray(static.displacement, dtype=float))
         if not res.converged:
             raise InputError("loads", f"no quasi-static equilibrium at t = {tt:.6g} s ({res.status}) for the "
                              "consistent start", 'set start = "rest" or give loads the bearing can carry')
         states.append(initial_state(model, res, speed))
-    dy = (states[1] - states[0]) / (2.0 * h)
+    dy = (-3.0 * states[0] + 4.0 * states[1] - states[2]) / (2.0 * h)
     rates[0:5] = dy[0:5]
     for k in range(model.n_balls):
         o = ly.N_RING + ly.N_BALL * k
