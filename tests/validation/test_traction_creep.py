@@ -84,3 +84,12 @@ def test_bad_input():
         tr.creep_slope(100.0, 1e-4, 1e-3, 79e9, 0.3, 0.3e9, None)
     with pytest.raises(InputError, match="creep_slope"):
         tr.creep_slope(100.0, 1e-4, 1e-3, 79e9, 0.3, solids=False)
+
+
+def test_series_factor_on_the_film_modulus_gives_the_series_slope():
+    """φ G_f in the film law (what a traction kernel needs to include the solids) reproduces creep_slope."""
+    q, a, b, g, nu, g_f, h = 700.0, 1.4e-4, 1.25e-3, 79e9, 0.3, 0.28e9, 0.1e-6
+    phi = tr.solids_in_series_factor(g_f, 2 * a, h, g, tr.kalker_c11(a, b, nu))
+    assert 0 < phi < 1
+    assert tr.creep_slope(q, a, b, g, nu, phi * g_f, h, solids=False) == pytest.approx(
+        tr.creep_slope(q, a, b, g, nu, g_f, h), rel=1e-12)

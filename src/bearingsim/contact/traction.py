@@ -302,6 +302,19 @@ def creep_slope(load: float, a_roll: float, b_lat: float, shear_modulus: float, 
     return series_stiffness(k_f, k_s) / load
 
 
+@njit(cache=True, error_model="numpy")
+def solids_in_series_factor(film_modulus, ell, film, shear_modulus, c11):
+    """φ = K_s/(K_s + K_f) = 1/(1 + π G_f ℓ/(2 h G C₁₁)) [-]: the factor on the film's elastic modulus G_f [Pa]
+    that puts the solids' creep compliance (Kalker, :func:`solid_creep_stiffness`) in series with the film's
+    (:func:`film_creep_stiffness`; ℓ [m] the contact length in the rolling direction, h [m] the film, G [Pa]
+    the solids' shear modulus).  τ_e = φ G_f ℓ s/h in :func:`elastic_plastic_mean_stress` gives the series slope
+    exactly at small slip and leaves the saturated (viscous) stress unchanged; between the two it is an
+    approximation (the solids' slip is taken proportional to the film's elastic stress)."""
+    if film_modulus <= 0.0 or film <= 0.0:
+        return 1.0
+    return 1.0 / (1.0 + math.pi * film_modulus * ell / (2.0 * film * shear_modulus * c11))
+
+
 def dyson_shear_modulus(pressure: float, temperature: float) -> float:
     """G_∞ = 1.2 p/(2.52 + 0.024 t) − 10⁸ [Pa] (Dyson's formula as in Zhou & Hoeprich 1991 eq. 37; p [Pa],
     t [°C] = temperature [K] − 273.15): the limiting elastic shear modulus the traction kernel uses for the film
@@ -400,4 +413,4 @@ __all__ = ["four_parameter", "fit_four_parameter", "traction_curve", "mixed_weig
            "rolling_resistance_zh",
            "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING", "KALKER_C11_A_OVER_B", "KALKER_C11_B_OVER_A",
            "kalker_c11", "solid_creep_stiffness", "film_creep_stiffness", "series_stiffness", "creep_slope",
-           "dyson_shear_modulus"]
+           "solids_in_series_factor", "dyson_shear_modulus"]
