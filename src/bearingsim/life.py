@@ -130,15 +130,19 @@ def row_reference_lives(result) -> list[float] | None:
     if any(c <= 0 for _, c in rows):
         return None
     b = result.balls
+    qi_all = np.maximum(b["inner_load_N"], 0.0)
+    qo_all = np.maximum(b["outer_load_N"], 0.0)
     out = []
     for k, (brg, c) in enumerate(rows):
-        sel = b["row"] == k
-        z = int(np.sum(sel))
+        if len(rows) == 1:
+            qi, qo = qi_all, qo_all
+        else:
+            sel = b["row"] == k
+            qi, qo = qi_all[sel], qo_all[sel]
+        z = len(qi)
         qci, qco = raceway_ratings(brg, c)
-        qi = np.maximum(b["inner_load_N"][sel], 0.0)
-        qo = np.maximum(b["outer_load_N"][sel], 0.0)
-        qei = (np.sum(qi**3) / z) ** (1.0 / 3.0)
-        qeo = (np.sum(qo ** (10.0 / 3.0)) / z) ** 0.3
+        qei = (float((qi * qi).dot(qi)) / z) ** (1.0 / 3.0)
+        qeo = (float((qo ** (10.0 / 3.0)).sum()) / z) ** 0.3
         out.append(float(_combine([(qci / qei) ** 3 if qei > 0 else None, (qco / qeo) ** 3 if qeo > 0 else None])))
     return out
 
@@ -443,24 +447,9 @@ _BALL_SET = {"ball_diameter", "ball_count", "pitch_diameter", "inner_conformity"
              "contact_angle", "diametral_clearance"}
 
 
-def rating_summary(result, lubricant=None, temperature: float | None = None, contamination="normal",
-                   reliability: float = 90.0) -> dict:
-    """ISO 281 / ISO 76 / ISO/TS 16281 figures of a solved operating point (SI and hours), JSON-ready.
-
-    Keys: ``dynamic_load_rating_N``, ``static_load_rating_N``, ``geometry_factor_f0``,
-    ``fatigue_load_limit_N``, ``equivalent_dynamic_load_N``, ``equivalent_static_load_N``,
-    ``basic_rating_life_million_revolutions``, ``basic_rating_life_hours``, ``modified_rating_life_hours``,
-    ``reference_rating_life_million_revolutions``, ``reference_rating_life_hours``,
-    ``modified_reference_rating_life_hours``, ``static_safety_factor`` (C₀/P₀, ISO 76),
-    ``static_safety_factor_pressure`` ((4200 MPa / p_max)³, :mod:`bearingsim.safety`), for a set ``row_ratings``
-    (per row: reference life in 10⁶ rev and hours, pressure-based s₀), ``life_factors``
-    (a1, a_ISO, κ, ν, ν1, e_C), ``estimated`` (the names of figures estimated, not from the bearing file)
-    and ``life_notes`` (why a figure is absent).  ``lubricant`` (a :class:`~bearingsim.lubricants.Lubricant`)
-    (or its library name / TOML path) and ``temperature`` [K] give ν for the modified lives; without them those are
-    None with a note."""
-    from .safety import equivalent_static_load, pressure_safety_factor
-
-    brg = result.bearing
+def _bearing_ratings_uncached(brg) -> tuple:
+    """The load-independent part of :func:`rating_summary`: (kind, nominal angle, rows of table 3, number of rows,
+    row bearing, reason or None, C, C₀, f₀, C_u [N, -], estimated keys, notes)."""
     notes: list[str] = []
     estimated: list[str] = []
     kind, alpha, i_table, nrows, row_b, why = _unit_data(brg)
@@ -480,13 +469,50 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
         cu = fatigue_load_limit_estimate(c0, row_b.pitch_diameter)
         estimated.append("fatigue_load_limit_N")
     # figures the bearing file itself marks as estimates (its [sources] text starts with ESTIMATE/ASSUMED)
-    marked = set(getattr(brg, "estimated", ()) or ()) | set(getattr(row_b, "estimated", ()) or ())
+    marked = set(getattr(brg, "estimated", ()) or ())
+    if row_b is not brg:
+        marked |= set(getattr(row_b, "estimated", ()) or ())
     for field_name, key in _RATING_KEYS.items():
         if field_name in marked and key not in estimated:
             estimated.append(key)
     if marked & _BALL_SET:
         notes.append("the ball set (" + ", ".join(sorted(marked & _BALL_SET)) + ") is an estimate: the load "
                      "distribution, the reference rating life and the pressure-based s0 rest on it")
+    return kind, alpha, i_table, nrows, row_b, why, c, c0, f0, cu, tuple(estimated), tuple(notes)
+
+
+_bearing_ratings_cached = functools.lru_cache(maxsize=256)(_bearing_ratings_uncached)
+
+
+def _bearing_ratings(brg) -> tuple:
+    """Cached :func:`_bearing_ratings_uncached` (bearings are immutable; an unhashable one is computed)."""
+    try:
+        return _bearing_ratings_cached(brg)
+    except TypeError:
+        return _bearing_ratings_uncached(brg)
+
+
+def rating_summary(result, lubricant=None, temperature: float | None = None, contamination="normal",
+                   reliability: float = 90.0) -> dict:
+    """ISO 281 / ISO 76 / ISO/TS 16281 figures of a solved operating point (SI and hours), JSON-ready.
+
+    Keys: ``dynamic_load_rating_N``, ``static_load_rating_N``, ``geometry_factor_f0``,
+    ``fatigue_load_limit_N``, ``equivalent_dynamic_load_N``, ``equivalent_static_load_N``,
+    ``basic_rating_life_million_revolutions``, ``basic_rating_life_hours``, ``modified_rating_life_hours``,
+    ``reference_rating_life_million_revolutions``, ``reference_rating_life_hours``,
+    ``modified_reference_rating_life_hours``, ``static_safety_factor`` (C₀/P₀, ISO 76),
+    ``static_safety_factor_pressure`` ((4200 MPa / p_max)³, :mod:`bearingsim.safety`), for a set ``row_ratings``
+    (per row: reference life in 10⁶ rev and hours, pressure-based s₀), ``life_factors``
+    (a1, a_ISO, κ, ν, ν1, e_C), ``estimated`` (the names of figures estimated, not from the bearing file)
+    and ``life_notes`` (why a figure is absent).  ``lubricant`` (a :class:`~bearingsim.lubricants.Lubricant`)
+    (or its library name / TOML path) and ``temperature`` [K] give ν for the modified lives; without them those are
+    None with a note."""
+    from .safety import equivalent_static_load, pressure_safety_factor
+
+    brg = result.bearing
+    kind, alpha, i_table, nrows, row_b, why, c, c0, f0, cu, est, bnotes = _bearing_ratings(brg)
+    notes = list(bnotes)
+    estimated = list(est)
     fr = math.hypot(result.loads.fr_y, result.loads.fr_z)
     fa = abs(result.loads.fa)
     out = {"dynamic_load_rating_N": c if c > 0 else None, "static_load_rating_N": c0, "geometry_factor_f0": f0,

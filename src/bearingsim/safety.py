@@ -20,8 +20,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
 from .life import interp
 from .limits import STATIC_PRESSURE_LIMIT
 
@@ -63,10 +61,10 @@ def max_contact_pressure(result, row: int | None = None) -> float:
     pi, po = b["inner_max_pressure_Pa"], b["outer_max_pressure_Pa"]
     if row is not None:
         sel = b["row"] == row
-        if not np.any(sel):
+        if not sel.any():
             return 0.0
         pi, po = pi[sel], po[sel]
-    return float(max(np.max(pi), np.max(po)))
+    return float(max(pi.max(), po.max()))
 
 
 def pressure_safety_factor(result, limit: float = STATIC_PRESSURE_LIMIT, row: int | None = None) -> float | None:
