@@ -110,3 +110,40 @@ def test_reliability_factor_table_is_the_weibull_formula(reliability):
     a1 = 0.95 * (math.log(1 / s) / math.log(1 / 0.9)) ** (2 / 3) + 0.05
     np.testing.assert_allclose(life.reliability_factor(reliability), a1, rtol=0.025, atol=0.0005,
                                err_msg="ISO/TR 1281-2 derivation of ISO 281:2007 table 12")
+
+
+def _skf_6309(**ratings):
+    """The catalogue's 6309 (ISO 15 boundary, estimated ball set) with SKF's ratings of the worked examples."""
+    import dataclasses
+
+    from bearingsim.io import load_bearing
+
+    return dataclasses.replace(load_bearing("6309"), **ratings)
+
+
+def test_skf_catalogue_example_1_basic_rating_life():
+    """SKF Rolling bearings catalogue, 'Selecting bearing size — calculation examples', example 1: an SKF Explorer
+    6309 (C = 55.3 kN) at 3 000 r/min under F_r = 10 kN: P = F_r, L10 = 169 × 10⁶ rev, L10h = 940 h."""
+    from bearingsim.statics import jones_harris as jh
+
+    r = jh.solve(_skf_6309(dynamic_load_rating=55.3e3), jh.Loads(fr_y=10e3), 3000 * math.pi / 30)
+    d = r.to_dict()
+    src = "SKF rolling bearings catalogue, calculation example 1 (6309, 10 kN, 3000 r/min)"
+    assert d["equivalent_dynamic_load_N"] == 10e3, src
+    np.testing.assert_allclose(d["basic_rating_life_million_revolutions"], 169.0, rtol=3e-3, err_msg=src)
+    np.testing.assert_allclose(d["basic_rating_life_hours"], 940.0, rtol=5e-3, err_msg=src)
+
+
+def test_skf_bearing_calculator_report_6309():
+    """SKF Bearing Calculator summary report (published 2015, 'Designation: 6309'): C = 55.3 kN, C0 = 31.5 kN,
+    F_r = 4 kN, F_a = 0.5 kN, 1 800 r/min, normal cleanliness: P = 4 kN, L10h = 24 500 h, contamination factor
+    0.55 (SKF's ηc for 'normal cleanliness (e.g. shielded bearing)', the middle of ISO 281 table 11's 0.5-0.6)."""
+    from bearingsim.statics import jones_harris as jh
+
+    b = _skf_6309(dynamic_load_rating=55.3e3, static_load_rating=31.5e3)
+    r = jh.solve(b, jh.Loads(fr_y=4e3, fa=0.5e3), 1800 * math.pi / 30)
+    d = r.to_dict()
+    src = "SKF Bearing Calculator report, 6309, Fr 4 kN, Fa 0.5 kN, 1800 r/min"
+    assert d["equivalent_dynamic_load_N"] == 4e3, src + ": P = Fr (Fa/Fr = 0.125 < e)"
+    np.testing.assert_allclose(d["basic_rating_life_hours"], 24500.0, rtol=2.1e-3, err_msg=src + ": L10h")
+    assert life.contamination_factor("normal", b.pitch_diameter) == 0.55, src + ": eta_c normal cleanliness"
