@@ -166,3 +166,20 @@ def test_case_option_ehl():
     no_lub = {k: v for k, v in data.items() if k != "lubricant"}
     with pytest.raises(InputError, match="contact_damping"):
         case_from_dict(dict(no_lub, contact_damping="ehl", traction="none"), CASE.parent)
+
+
+def test_squeeze_rate_is_the_derivative_of_the_hertz_gap():
+    """The model's squeeze rate outside the contact, −(1 − (2/π) asin(a/r)) per unit approach (an incremental
+    flat punch), is d/dδ of the Hertz separation (a² = R δ); and the separation tends to the point-load
+    displacement of the same force far away (Johnson 1985, ch. 3)."""
+    r_c, a = 5e-3, 3e-4
+    d = a * a / r_c
+    r = np.array([1.01, 1.2, 2.0, 5.0, 20.0]) * a
+    dd = 1e-6 * d
+    num = (dm.hertz_separation(r, math.sqrt(r_c * (d + dd)), r_c)
+           - dm.hertz_separation(r, math.sqrt(r_c * (d - dd)), r_c)) / (2 * dd)
+    np.testing.assert_allclose(num, -(1 - (2 / np.pi) * np.arcsin(a / r)), rtol=1e-4, atol=1e-7)
+    assert dm.hertz_separation(0.5 * a, a, r_c) == 0.0 and dm.hertz_separation(a, a, r_c) == pytest.approx(0, abs=1e-15)
+    far = 200 * a
+    assert dm.hertz_separation(far, a, r_c) == pytest.approx(far**2 / (2 * r_c) - d + 4 * a**3 / (3 * math.pi * r_c * far),
+                                                               rel=1e-9)

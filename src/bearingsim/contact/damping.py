@@ -23,8 +23,8 @@ in this work and are *not* used):
 2. The loaded contact is flattened: inside the Hertz area the film (piezoviscous, η(p) ≫ η₀) is taken as rigid —
    its thickness h_c and no flow through it at these frequencies — and outside, the gap is h_c plus the Hertz
    separation g_H(r).  For a small extra approach dδ at (to first order) fixed contact size, the surfaces outside
-   move as under a flat punch: dg = −dδ (1 − (2/π) asin(a/r)) (Johnson 1985, *Contact Mechanics*, §3.8, the rigid
-   flat punch; the Hertz separation outside the circle, §3.4), so the squeeze rate vanishes at the contact edge
+   move as under a flat punch: dg = −dδ (1 − (2/π) asin(a/r)) (Johnson 1985, *Contact Mechanics*, ch. 3: the
+   surface displacements of the rigid flat punch's pressure and of the Hertz pressure outside the loaded circle), so the squeeze rate vanishes at the contact edge
    and tends to δ̇ far away.  Axisymmetric Reynolds with no flux at r = a:
    r h³ p′ = −12 η δ̇ ∫_a^r f(s) s ds, f = 1 − (2/π) asin(a/s), p(∞) = 0; c = ∫ p 2πr dr / δ̇
    (:func:`squeeze_flattened_circle`, a quadrature).  As a → 0 it tends to the rigid 6 π η R₀²/h.
@@ -75,7 +75,8 @@ def squeeze_rigid_ellipsoid(viscosity: float, rx: float, ry: float, gap: float) 
 def hertz_separation(r, a: float, radius: float):
     """Separation of two bodies outside a Hertz circle of radius a [m] (sum of radii 1/R = 1/R₁ + 1/R₂, approach
     δ = a²/R): g(r) = r²/(2R) − δ + (a²/(πR))[(2 − r²/a²) asin(a/r) + √(r²/a² − 1)] [m], 0 for r ≤ a
-    (Johnson 1985, §3.4)."""
+    (Johnson 1985, *Contact Mechanics*, ch. 3: the displacement of the Hertz pressure outside the circle; checked
+    here: g(a) = 0 and g → r²/(2R) − δ + 4a³/(3πR r) far away, the point-load displacement of the same force)."""
     r = np.asarray(r, dtype=float)
     x = np.maximum(r / a, 1.0)
     w = (a * a / (math.pi * radius)) * ((2.0 - x * x) * np.arcsin(1.0 / x) + np.sqrt(np.maximum(x * x - 1.0, 0.0)))
