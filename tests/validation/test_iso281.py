@@ -147,3 +147,17 @@ def test_skf_bearing_calculator_report_6309():
     assert d["equivalent_dynamic_load_N"] == 4e3, src + ": P = Fr (Fa/Fr = 0.125 < e)"
     np.testing.assert_allclose(d["basic_rating_life_hours"], 24500.0, rtol=2.1e-3, err_msg=src + ": L10h")
     assert life.contamination_factor("normal", b.pitch_diameter) == 0.55, src + ": eta_c normal cleanliness"
+
+
+def test_skf_bearing_calculator_operating_viscosity():
+    """The same SKF report: oil of 120 mm²/s at 40 °C and 12 mm²/s at 100 °C, at 80 °C: κ = 2.08 with SKF's
+    rated viscosity 10.4 mm²/s, i.e. ν = 21.6 mm²/s (SKF's ν1 diagram is not ISO 281's eq.: 10.4 against
+    ISO's 12.5 mm²/s here, so only the viscosity, the numerator of κ, is compared; tolerance: the report's
+    three digits of κ and ν1)."""
+    from bearingsim.lubricants import Lubricant
+
+    oil = Lubricant(name="SKF report oil", temperature_1=313.15, kinematic_viscosity_1=120e-6, temperature_2=373.15,
+                    kinematic_viscosity_2=12e-6, density_15=880.0, pressure_viscosity_coefficient=2e-8,
+                    thermal_conductivity=0.13)
+    np.testing.assert_allclose(oil.kinematic_viscosity(353.15) * 1e6, 2.08 * 10.4, rtol=8e-3,
+                               err_msg="SKF Bearing Calculator report, 6309: kappa = 2.08, nu1 = 10.4 mm2/s at 80 C")
