@@ -41,3 +41,34 @@ def test_static_rating_estimate_of_the_6205():
     np.testing.assert_allclose(c0, 7.8e3, rtol=0.03,
                                err_msg="SKF catalogue 6205: C0 = 7.8 kN (ball set: CWRU Bearing Data Center)")
     np.testing.assert_allclose(f0, 14.0, rtol=0.03, err_msg="SKF catalogue 6205: f0 = 14")
+
+
+LYC = "LYC bearing, 'Equivalent static load - angular contact ball bearings', table 4 (ISO 76 table 4 values)"
+
+
+@pytest.mark.parametrize("deg, y0_single, y0_pair", [(15, 0.46, 0.92), (25, 0.38, 0.76), (40, 0.26, 0.52)])
+def test_angular_contact_static_equivalent_load(deg, y0_single, y0_pair):
+    a = np.radians(deg)
+    fr, fa = 1000.0, 3000.0
+    np.testing.assert_allclose(safety.equivalent_static_load(fr, fa, a, 1), 0.5 * fr + y0_single * fa, rtol=1e-12,
+                               err_msg=f"{LYC}: {deg} deg single / tandem")
+    np.testing.assert_allclose(safety.equivalent_static_load(fr, fa, a, 2), fr + y0_pair * fa, rtol=1e-12,
+                               err_msg=f"{LYC}: {deg} deg back-to-back / face-to-face")
+    # a small axial load: 0.5 Fr + Y0 Fa < Fr, so P0 = Fr (single row)
+    assert safety.equivalent_static_load(fr, 100.0, a, 1) == fr, LYC
+
+
+def test_static_safety_of_a_pair_through_the_solver():
+    """A 7205-40 DB pair (catalogue) under F_r = 3 kN, F_a = 2 kN: P0 = F_r + 0.52 F_a (LYC / ISO 76 table 4) and
+    s0 = C0 of the pair (2 C0 of one bearing) / P0; as a tandem pair, P0 = 0.5 F_r + 0.26 F_a."""
+    from bearingsim.io import load_bearing
+    from bearingsim.statics import arrangements as ar
+    from bearingsim.statics import jones_harris as jh
+
+    b = load_bearing("7205-40")
+    for arr, p0 in (("DB", 3000.0 + 0.52 * 2000.0), ("DT", max(0.5 * 3000.0 + 0.26 * 2000.0, 3000.0))):
+        pair = ar.make_system(b, arr, preload=100.0 if arr == "DB" else None)
+        r = jh.solve(pair, jh.Loads(fr_y=3000.0, fa=2000.0))
+        assert r.converged
+        np.testing.assert_allclose(r.rating["equivalent_static_load_N"], p0, rtol=1e-12, err_msg=f"{LYC}: {arr}")
+        np.testing.assert_allclose(r.rating["static_safety_factor"], 2 * b.static_load_rating / p0, rtol=1e-12)
