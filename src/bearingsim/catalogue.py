@@ -233,6 +233,100 @@ def estimate_ball_set(bore: float, outside_diameter: float, contact_angle: float
                            runner_up=runner)
 
 
+# ---- seat fits: ISO 286 tolerance classes against the normal-class bearing tolerances --------------------------
+#: upper limits of the ISO 286 size ranges [mm] ("over the previous, up to and including this"; the first
+#: range is over 6 up to 10 mm)
+_STEPS = (10, 18, 30, 50, 80, 120, 180, 250, 315)
+#: standard tolerance grades IT5–IT8 [µm] per size range (ISO 286-1 table 1)
+_IT = {5: (6, 8, 9, 11, 13, 15, 18, 20, 23), 6: (9, 11, 13, 16, 19, 22, 25, 29, 32),
+       7: (15, 18, 21, 25, 30, 35, 40, 46, 52), 8: (22, 27, 33, 39, 46, 54, 63, 72, 81)}
+#: shaft fundamental deviations [µm] (ISO 286-1 tables 2–3): ("es", values) upper or ("ei", values) lower
+_SHAFT = {"f": ("es", (-13, -16, -20, -25, -30, -36, -43, -50, -56)),
+          "g": ("es", (-5, -6, -7, -9, -10, -12, -14, -15, -17)),
+          "h": ("es", (0,) * 9),
+          "j": ("ei", (-2, -3, -4, -5, -7, -9, -11, -13, -16)),  # j5 and j6
+          "k": ("ei", (1, 1, 2, 2, 2, 3, 3, 4, 4)),
+          "m": ("ei", (6, 7, 8, 9, 11, 13, 15, 17, 20)),
+          "n": ("ei", (10, 12, 15, 17, 20, 23, 27, 31, 34)),
+          "p": ("ei", (15, 18, 22, 26, 32, 37, 43, 50, 56))}
+#: housing fundamental deviations [µm] (ISO 286-1 tables 2–3); J, K, M, N, P with their grade
+_HOUSING = {"G": ("EI", (5, 6, 7, 9, 10, 12, 14, 15, 17)), "H": ("EI", (0,) * 9),
+            "J6": ("ES", (5, 6, 8, 10, 13, 16, 18, 22, 25)), "J7": ("ES", (8, 10, 12, 14, 18, 22, 26, 30, 36)),
+            "K6": ("ES", (2, 2, 2, 3, 4, 4, 4, 5, 5)), "K7": ("ES", (5, 6, 6, 7, 9, 10, 12, 13, 16)),
+            "M6": ("ES", (-3, -4, -4, -4, -5, -6, -8, -8, -9)), "M7": ("ES", (0,) * 9),
+            "N6": ("ES", (-7, -9, -11, -12, -14, -16, -20, -22, -25)),
+            "N7": ("ES", (-4, -5, -7, -8, -9, -10, -12, -14, -14)),
+            "P6": ("ES", (-12, -15, -18, -21, -26, -30, -36, -41, -47)),
+            "P7": ("ES", (-9, -11, -14, -17, -21, -24, -28, -33, -36))}
+#: lower deviation of the mean bore diameter Δdmp of normal-class radial bearings [µm] (upper 0), ISO 492
+_BORE_DMP = (-8, -8, -10, -12, -15, -20, -25, -30, -35)
+#: lower deviation of the mean outside diameter ΔDmp of normal-class radial bearings [µm] (upper 0), ISO 492,
+#: by outside diameter over 6 up to (mm): 18, 30, 50, 80, 120, 150, 180, 250, 315
+_OD_STEPS = (18, 30, 50, 80, 120, 150, 180, 250, 315)
+_OD_DMP = (-8, -9, -11, -13, -15, -18, -25, -30, -35)
+
+
+def _step(size_mm: float, steps, field: str) -> int:
+    s = round(size_mm, 6)
+    if 6 < s <= steps[-1]:
+        for i, hi in enumerate(steps):
+            if s <= hi:
+                return i
+    raise InputError(field, f"{size_mm:g} mm is outside the tolerance tables (over 6 up to {steps[-1]} mm)",
+                     "give the interference as a length instead, e.g. \"12 um\"")
+
+
+def fit_interference(fit: str, diameter: float, seat: str) -> tuple[float, float, float]:
+    """(min, mean, max) diametral interference [m] (negative: clearance) of a bearing ring on its seat.
+
+    ``fit``: an ISO 286 tolerance class of the shaft (``seat="shaft"``: f6, g5, g6, h5, h6, j5, j6, js5, js6,
+    k5, k6, m5, m6, n6, p6; lower case) or of the housing bore (``seat="housing"``: G7, H6, H7, H8, J6, J7,
+    JS6, JS7, K6, K7, M6, M7, N6, N7, P6, P7; upper case); ``diameter``: the bearing bore (shaft) or outside
+    diameter (housing) [m].  The ring has the normal tolerance class of ISO 492 (bore and outside diameter
+    between their nominal size and the lower deviation Δdmp, ΔDmp).  Interference = shaft − bore, or
+    outside diameter − housing bore; the mean is the middle of the two limits.  Tables: ISO 286-1 standard
+    tolerances and fundamental deviations, ISO 492 normal class (the same numbers as NSK CAT. No. E1102e
+    tables 15.2 and 15.3, checked in tests/validation/test_catalogue_estimate.py)."""
+    import re
+
+    if not isinstance(fit, str):
+        raise InputError("fit", f"expected an ISO 286 tolerance class, got {fit!r}", 'e.g. "k5" or "H7"')
+    size = _positive(diameter, "bore" if seat == "shaft" else "outside_diameter") * 1e3
+    m = re.fullmatch(r"([a-zA-Z]{1,2})(\d)", fit.strip())
+    if seat == "shaft":
+        field = "--shaft-fit"
+        if not m or m.group(1) not in ("f", "g", "h", "j", "js", "k", "m", "n", "p") or int(m.group(2)) not in _IT:
+            raise InputError(field, f"{fit!r} is not a shaft tolerance class of the table",
+                             "use f6, g5, g6, h5, h6, j5, j6, js5, js6, k5, k6, m5, m6, n6, p6, or a length")
+        i = _step(size, _STEPS, field)
+        it = _IT[int(m.group(2))][i]
+        if m.group(1) == "js":
+            ei, es = -it / 2, it / 2
+        else:
+            kind, dev = _SHAFT[m.group(1)]
+            ei, es = (dev[i] - it, dev[i]) if kind == "es" else (dev[i], dev[i] + it)
+        low = _BORE_DMP[i]
+        imin, imax = ei - 0.0, es - low
+    elif seat == "housing":
+        field = "--housing-fit"
+        if not m or int(m.group(2)) not in _IT or not (
+                m.group(1) in ("G", "H", "JS") or m.group(0).strip() in _HOUSING):
+            raise InputError(field, f"{fit!r} is not a housing tolerance class of the table",
+                             "use G7, H6, H7, H8, J6, J7, JS6, JS7, K6, K7, M6, M7, N6, N7, P6, P7, or a length")
+        i = _step(size, _STEPS, field)
+        it = _IT[int(m.group(2))][i]
+        if m.group(1) == "JS":
+            lo, hi = -it / 2, it / 2
+        else:
+            kind, dev = _HOUSING[m.group(1)] if m.group(1) in ("G", "H") else _HOUSING[m.group(0).strip()]
+            lo, hi = (dev[i], dev[i] + it) if kind == "EI" else (dev[i] - it, dev[i])
+        low = _OD_DMP[_step(size, _OD_STEPS, field)]
+        imin, imax = low - hi, 0.0 - lo
+    else:
+        raise InputError("seat", f"unknown seat {seat!r}", 'use "shaft" or "housing"')
+    return imin * 1e-6, 0.5 * (imin + imax) * 1e-6, imax * 1e-6
+
+
 __all__ = ["B_M", "FC_TABLE", "F0_TABLE", "CN_CLEARANCE", "INCH_BALLS", "METRIC_BALLS", "STANDARD_BALLS", "INNER_CONFORMITY",
            "OUTER_CONFORMITY", "BallSetEstimate", "factor_fc", "factor_f0", "dynamic_load_rating",
-           "static_load_rating", "cn_clearance", "estimate_ball_set"]
+           "static_load_rating", "cn_clearance", "estimate_ball_set", "fit_interference"]

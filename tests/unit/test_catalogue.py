@@ -197,3 +197,25 @@ def test_sources_and_estimated(b6208):
     b = dataclasses.replace(b6208, notes={"bore": "ISO 15", "ball_count": "  estimate: by eye",
                                           "pitch_diameter": "Assumed (d+D)/2", "description": "x"})
     assert b.estimated == ("ball_count", "pitch_diameter")
+
+
+@pytest.mark.parametrize("fit, size, seat, field", [
+    ("k5", 2e-3, "shaft", "--shaft-fit"), ("k5", 0.4, "shaft", "--shaft-fit"), ("x5", 0.04, "shaft", "--shaft-fit"),
+    ("H7", 0.04, "shaft", "--shaft-fit"), ("k5", 0.04, "housing", "--housing-fit"), ("Q7", 0.04, "housing",
+                                                                                     "--housing-fit"),
+    ("k5", -0.04, "shaft", "bore"), ("k5", 0.04, "ring", "seat"),
+])
+def test_fit_interference_refuses_what_the_tables_do_not_hold(fit, size, seat, field):
+    with pytest.raises(InputError) as ei:
+        cat.fit_interference(fit, size, seat)
+    assert ei.value.field == field
+
+
+def test_fit_interference_limits_and_size_steps():
+    """Interference limits = shaft deviations minus the bore's (0, Δdmp); 30 mm belongs to 18–30, 30.001 to 30–50."""
+    lo, mean, hi = cat.fit_interference("k5", 0.030, "shaft")
+    assert (lo, hi) == (pytest.approx(2e-6), pytest.approx((2 + 9 + 10) * 1e-6))
+    lo2, _, hi2 = cat.fit_interference("k5", 0.030001, "shaft")
+    assert (lo2, hi2) == (pytest.approx(2e-6), pytest.approx((2 + 11 + 12) * 1e-6))
+    lo, mean, hi = cat.fit_interference("JS7", 0.1, "housing")
+    assert lo == pytest.approx(-(15 + 17.5) * 1e-6) and hi == pytest.approx(17.5e-6)

@@ -69,3 +69,16 @@ def test_bad_options_are_one_line_exit_2(args, field):
     p = run("clearance", "6208", *args, check=False)
     assert p.returncode == 2 and p.stdout == ""
     assert p.stderr.strip().startswith(f"error: {field}") and "\n" not in p.stderr.strip()
+
+
+def test_tolerance_classes_use_the_mean_interference():
+    from bearingsim.catalogue import fit_interference
+
+    d = json.loads(run("clearance", "6208", "--shaft-fit", "k5", "--housing-fit", "J7", "--json").stdout)
+    lo, mean, hi = fit_interference("k5", 0.040, "shaft")
+    assert d["conditions"]["shaft_interference"] == pytest.approx(mean, rel=1e-12)
+    assert d["tolerance_classes"]["shaft_fit"] == {"class": "k5", "min_m": pytest.approx(lo),
+                                                   "mean_m": pytest.approx(mean), "max_m": pytest.approx(hi)}
+    assert d["conditions"]["housing_interference"] == pytest.approx(fit_interference("J7", 0.080, "housing")[1])
+    p = run("clearance", "6208", "--shaft-fit", "K5", check=False)
+    assert p.returncode == 2 and p.stderr.startswith("error: --shaft-fit")

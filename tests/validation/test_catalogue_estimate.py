@@ -75,3 +75,29 @@ def test_iso281_rating_of_the_public_ball_sets_matches_the_catalogue():
         c0i = static_load_rating(z, dw, dm, math.radians(alpha))
         assert ci == pytest.approx(c, rel=0.015), f"ISO 281 C of the {source} ball set vs NSK E1102e ({name})"
         assert c0i == pytest.approx(c0, rel=0.015), f"ISO 76 C0 of the {source} ball set vs NSK E1102e ({name})"
+
+
+# ---- seat fits (bearingsim.catalogue.fit_interference) against NSK CAT. No. E1102e tables 15.2 and 15.3 -------
+# (fit, diameter [mm], seat, printed limits [µm] as (largest clearance or smallest interference as a signed
+#  interference, largest interference)); the catalogue prints ISO 286 x ISO 492 normal-class limits
+NSK_FITS = [
+    ("k5", 40, "shaft", (2, 25)), ("k6", 40, "shaft", (2, 30)), ("m5", 55, "shaft", (11, 39)),
+    ("m6", 40, "shaft", (9, 37)), ("n6", 70, "shaft", (20, 54)), ("p6", 90, "shaft", (37, 79)),
+    ("js5", 40, "shaft", (-5.5, 17.5)), ("j5", 90, "shaft", (-9, 26)), ("j6", 25, "shaft", (-4, 19)),
+    ("h6", 15, "shaft", (-11, 8)), ("g6", 55, "shaft", (-29, 5)), ("f6", 130, "shaft", (-68, -18)),
+    ("H7", 40, "housing", (-36, 0)), ("G7", 90, "housing", (-62, -12)), ("J7", 80, "housing", (-31, 12)),
+    ("JS7", 25, "housing", (-19.5, 10.5)), ("K7", 100, "housing", (-25, 25)), ("M7", 62, "housing", (-13, 30)),
+    ("N7", 47, "housing", (-3, 33)), ("P7", 140, "housing", (10, 68)), ("K6", 35, "housing", (-14, 13)), ("K6", 28, "housing", (-11, 11)),
+    ("N6", 30, "housing", (2, 24)), ("P6", 72, "housing", (13, 45)), ("H8", 200, "housing", (-102, 0)),
+]
+
+
+@pytest.mark.parametrize("fit, size, seat, limits", NSK_FITS, ids=[f"{f}-{s}" for f, s, _, _ in NSK_FITS])
+def test_fit_limits_match_the_nsk_tables(fit, size, seat, limits):
+    from bearingsim.catalogue import fit_interference
+
+    lo, mean, hi = fit_interference(fit, size * 1e-3, seat)
+    table = "15.2" if seat == "shaft" else "15.3"
+    assert lo * 1e6 == pytest.approx(limits[0], abs=1e-9), f"{fit} at {size} mm vs NSK E1102e table {table}"
+    assert hi * 1e6 == pytest.approx(limits[1], abs=1e-9), f"{fit} at {size} mm vs NSK E1102e table {table}"
+    assert mean == pytest.approx(0.5 * (lo + hi), rel=1e-12)

@@ -17,10 +17,12 @@ from .console import make_console
 from .options import BearingArg, JsonOpt, SpeedOpt  # --speed: the inner ring's centrifugal expansion
 
 ShaftFitOpt = Annotated[Optional[str], typer.Option(
-    "--shaft-fit", help='Diametral interference of the inner ring on the shaft, e.g. "12 um" (negative: loose; '
+    "--shaft-fit", help='Shaft tolerance class (ISO 286, e.g. k5, m6, js6: the mean interference against a '
+    'normal-class bore is used) or the diametral interference of the inner ring, e.g. "12 um" (negative: loose; '
     "bare number in µm)")]
 HousingFitOpt = Annotated[Optional[str], typer.Option(
-    "--housing-fit", help='Diametral interference of the outer ring in the housing, e.g. "5 um" (negative: '
+    "--housing-fit", help='Housing tolerance class (ISO 286, e.g. H7, J7, K7, N7: mean interference against a '
+    'normal-class outside diameter) or the diametral interference of the outer ring, e.g. "5 um" (negative: '
     "loose; bare number in µm)")]
 TemperaturesOpt = Annotated[Optional[str], typer.Option(
     "--temperatures", help='Operating temperatures, e.g. "inner=70 degC,outer=55 degC" (also balls=, shaft=, '
@@ -41,14 +43,30 @@ _TEMPERATURES = {"inner": "inner_ring_temperature", "outer": "outer_ring_tempera
                  "reference": "reference_temperature"}
 
 
-def _fit(value: str, option: str) -> float:
-    """A fit option: a bare number in µm, or a length with its unit → [m]."""
+def _fit(value: str, option: str, bearing) -> tuple[float, dict | None]:
+    """A fit option → (diametral interference [m], the tolerance-class details or None): an ISO 286 class
+    (:func:`bearingsim.catalogue.fit_interference`, mean of its limits), a bare number in µm, or a length."""
+    import re
+
+    from ..catalogue import fit_interference
+    from ..errors import InputError
     from ..units import parse_quantity
 
+    text = value.strip()
+    if re.fullmatch(r"[a-zA-Z]{1,2}\d", text):
+        seat = "shaft" if option == "--shaft-fit" else "housing"
+        row = bearing.rows[0].bearing
+        size = row.bore if seat == "shaft" else row.outside_diameter
+        if not size > 0:
+            what = "bore" if seat == "shaft" else "outside_diameter"
+            raise InputError(option, f"a tolerance class needs the bearing's {what}, which the file does not give",
+                             f"add {what} to the bearing file, or give the interference, e.g. \"10 um\"")
+        lo, mean, hi = fit_interference(text, size, seat)
+        return mean, {"class": text, "min_m": lo, "mean_m": mean, "max_m": hi}
     try:
-        return float(value) * 1e-6
+        return float(text) * 1e-6, None
     except ValueError:
-        return parse_quantity(value, "length", option)
+        return parse_quantity(text, "length", option), None
 
 
 def parse_temperatures(text: str) -> dict:
@@ -70,17 +88,18 @@ def parse_temperatures(text: str) -> dict:
     return out
 
 
-def operating_conditions(shaft_fit=None, housing_fit=None, temperatures=None, speed=None, shaft_bore=None,
+def operating_conditions(bearing, shaft_fit=None, housing_fit=None, temperatures=None, speed=None, shaft_bore=None,
                          housing_od=None, housing_expansion=None, shaft_expansion=None):
-    """The command's options → :class:`~bearingsim.statics.clearance.OperatingClearance` (SI)."""
+    """The command's options → (:class:`~bearingsim.statics.clearance.OperatingClearance` (SI), the tolerance
+    classes used {"shaft_fit": …, "housing_fit": …})."""
     from ..statics.clearance import OperatingClearance
     from ..units import parse_quantity
 
-    kw = {}
+    kw, classes = {}, {}
     if shaft_fit is not None:
-        kw["shaft_interference"] = _fit(shaft_fit, "--shaft-fit")
+        kw["shaft_interference"], classes["shaft_fit"] = _fit(shaft_fit, "--shaft-fit", bearing)
     if housing_fit is not None:
-        kw["housing_interference"] = _fit(housing_fit, "--housing-fit")
+        kw["housing_interference"], classes["housing_fit"] = _fit(housing_fit, "--housing-fit", bearing)
     if temperatures:
         kw.update(parse_temperatures(temperatures))
     if speed is not None:
@@ -93,7 +112,7 @@ def operating_conditions(shaft_fit=None, housing_fit=None, temperatures=None, sp
         kw["housing_expansion"] = housing_expansion
     if shaft_expansion is not None:
         kw["shaft_expansion"] = shaft_expansion
-    return OperatingClearance(**kw)
+    return OperatingClearance(**kw), {k: v for k, v in classes.items() if v is not None}
 
 
 def _free_angle(bearing, pd: float) -> float:
@@ -145,8 +164,17 @@ def _print(res: dict, name: str) -> None:
         ("inner ring", "inner_ring_temperature"), ("outer ring", "outer_ring_temperature"),
         ("balls", "ball_temperature"), ("shaft", "shaft_temperature"), ("housing", "housing_temperature"))
         if cond[f] is not None)
-    con.print(f"[bold]{name}[/]: shaft fit {cond['shaft_interference'] * 1e6:+.1f} µm, housing fit "
-              f"{cond['housing_interference'] * 1e6:+.1f} µm (positive = interference), reference {t_ref:.1f} °C"
+    cls = res.get("tolerance_classes", {})
+
+    def fit_text(key, what):
+        c = cls.get(key)
+        text = f"{what} {cond[key.replace('_fit', '_interference')] * 1e6:+.1f} µm"
+        if c:
+            text += f" ({c['class']}: mean of {c['min_m'] * 1e6:+.1f} … {c['max_m'] * 1e6:+.1f} µm)"
+        return text
+
+    con.print(f"[bold]{name}[/]: {fit_text('shaft_fit', 'shaft fit')}, {fit_text('housing_fit', 'housing fit')} "
+              f"(positive = interference), reference {t_ref:.1f} °C"
               + (f"; {temps}" if temps else "") + f"; speed {cond['speed'] * 30 / math.pi:.0f} rpm")
     t = Table(title="diametral clearance (µm; negative = less clearance / preload)")
     t.add_column("")
@@ -196,9 +224,10 @@ def clearance(
     from ..io import load_bearing
 
     b = load_bearing(bearing)
-    cond = operating_conditions(shaft_fit, housing_fit, temperatures, speed, shaft_bore, housing_od,
-                                housing_expansion, shaft_expansion)
+    cond, classes = operating_conditions(b, shaft_fit, housing_fit, temperatures, speed, shaft_bore, housing_od,
+                                         housing_expansion, shaft_expansion)
     res = clearance_result(b, cond)
+    res["tolerance_classes"] = classes
     if as_json:
         typer.echo(json.dumps({"bearing": getattr(b, "name", str(bearing)), **res}))
     else:
