@@ -7,7 +7,7 @@ ISO/TS 16281:2008 (Lundberg–Palmgren theory; Harris & Kotzalas 2007 vol. 2 ch.
   (inner ring rotating, load fixed in space, so the inner raceway is "rotating relative to the load"):
       Q_ei = [ (1/Z) Σ Q_ij^3 ]^(1/3),   Q_eo = [ (1/Z) Σ Q_oj^(10/3) ]^(3/10)
 * basic dynamic load rating of the raceway contacts, from the basic dynamic load rating C of the bearing
-  (ISO/TS 16281:2008 §4.3, the Lundberg–Palmgren ratio of the two raceways; i rows of Z balls):
+  (ISO/TS 16281:2008, the Lundberg–Palmgren ratio of the two raceways; i rows of Z balls):
       Q_ci = C / (0.407 Z i^0.7 cos α) · [1 + (1.044 ((1−γ)/(1+γ))^1.72 (f_i(2f_o−1)/(f_o(2f_i−1)))^0.41)^(10/3)]^0.3
       Q_co = C / (0.389 Z i^0.7 cos α) · [1 + (1.044 (…))^(−10/3)]^0.3
   with γ = D cos α / d_m and α the **nominal** contact angle of the bearing (0 for a deep-groove bearing,
@@ -23,17 +23,17 @@ ISO/TS 16281:2008 (Lundberg–Palmgren theory; Harris & Kotzalas 2007 vol. 2 ch.
 
 ISO 281:2007 (:func:`equivalent_dynamic_load`, :func:`rating_summary`):
 
-* basic rating life L10 = (C/P)^3 [10^6 rev] (eq. 15), P = X F_r + Y F_a (eq. 9) with X, Y, e of table 3 for
+* basic rating life L10 = (C/P)^3 [10^6 rev], P = X F_r + Y F_a with X, Y, e of table 3 for
   deep-groove (radial contact groove) and angular-contact ball bearings, single row and pairs/double row;
   for deep-groove bearings and nominal angles ≤ 15° X, Y, e depend on the relative axial load f₀F_a/C₀r,
   so C₀ and f₀ are needed (from the bearing file, else estimated: :func:`static_rating_estimate`, flagged);
   intermediate loads and angles by linear interpolation (ISO 281:2007 table 3, footnote);
 * L10h = 10^6 L10 / (60 n) [h] at the operating speed n [r/min];
-* modified rating life L_nm = a1 a_ISO L10 (eq. 2): a1 from the reliability (table 12), a_ISO for ball
-  bearings from the viscosity ratio κ = ν/ν1 and e_C C_u/P (eqs. 22–25), ν1 the rated viscosity (eqs. 27–28),
-  e_C from a cleanliness level (table 11, the middle of its range), C_u the fatigue load limit (bearing file,
-  else the ISO 281:2007 annex B estimate C_u = C₀/22 for d_m ≤ 100 mm, flagged);
-* modified reference rating life L_nmr = a1 a_ISO L10r (ISO/TS 16281:2008 §7) with a_ISO evaluated at the dynamic
+* modified rating life L_nm = a1 a_ISO L10: a1 from the reliability (the standard's table), a_ISO for ball
+  bearings from the viscosity ratio κ = ν/ν1 and e_C C_u/P (the standard's formulae for radial ball bearings),
+  ν1 the rated viscosity, e_C from a cleanliness level (table 11, the middle of its range), C_u the fatigue
+  load limit (bearing file, else the ISO 281:2007 annex B estimate C_u = C₀/22 for d_m ≤ 100 mm, flagged);
+* modified reference rating life L_nmr = a1 a_ISO L10r (ISO/TS 16281:2008) with a_ISO evaluated at the dynamic
   equivalent reference load P_ref = C / L10r^(1/3).
 
 A bearing set reports, besides the system's figures, each row's reference life and pressure-based static safety
@@ -53,7 +53,7 @@ from .errors import InputError
 
 E_WEIBULL = 10.0 / 9.0
 
-#: ISO/TS 16281:2008 §4.3 constants of the raceway ratings: J_r/J_1, J_r/J_2, J_2/J_1 of the rating
+#: ISO/TS 16281:2008 constants of the raceway ratings: J_r/J_1, J_r/J_2, J_2/J_1 of the rating
 #: condition (ε = 0.5), rounded as in the standard
 TS16281_JR_J1 = 0.407
 TS16281_JR_J2 = 0.389
@@ -86,7 +86,7 @@ def nominal_contact_angle(bearing) -> float:
 
 def raceway_ratings(bearing, c_row: float) -> tuple[float, float]:
     """(Q_ci, Q_co) [N]: basic dynamic load ratings of a ball on the inner and outer raceway of a row of
-    rating ``c_row`` [N] (ISO/TS 16281:2008 §4.3, module docstring; nominal contact angle, one row)."""
+    rating ``c_row`` [N] (ISO/TS 16281:2008, module docstring; nominal contact angle, one row)."""
     a = nominal_contact_angle(bearing)
     g = bearing.ball_diameter * math.cos(a) / bearing.pitch_diameter
     fi, fo = bearing.inner_conformity, bearing.outer_conformity
@@ -273,7 +273,7 @@ def xy_factors(fr: float, fa: float, contact_angle: float, rows: int = 1, kind: 
 
 def equivalent_dynamic_load(fr: float, fa: float, contact_angle: float, rows: int = 1,
                             kind: str = "angular_contact", rel_load: float | None = None) -> float | None:
-    """P = X F_r + Y F_a [N] (ISO 281:2007 eq. 9 with the factors of :func:`xy_factors`); ``None`` where
+    """P = X F_r + Y F_a [N] (ISO 281:2007, with the factors of :func:`xy_factors`); ``None`` where
     table 3 gives no factors (deep groove and angles below 20° need ``rel_load`` = f₀F_a/C₀r)."""
     f = xy_factors(fr, fa, contact_angle, rows, kind, rel_load)
     if f is None:
@@ -283,14 +283,14 @@ def equivalent_dynamic_load(fr: float, fa: float, contact_angle: float, rows: in
 
 
 def basic_rating_life(c: float, p: float) -> float:
-    """ISO 281:2007 eq. 15: L10 = (C/P)^3 [10^6 revolutions] for ball bearings."""
+    """ISO 281:2007: L10 = (C/P)^3 [10^6 revolutions] for ball bearings."""
     if p <= 0:
         return math.inf
     return (c / p) ** 3
 
 
 def life_hours(l10: float, speed: float) -> float | None:
-    """L_h = 10^6 L / (60 n) [h] (ISO 281:2007 eq. 16) for a life L [10^6 rev] at the speed [rad/s] (its
+    """L_h = 10^6 L / (60 n) [h] (ISO 281:2007) for a life L [10^6 rev] at the speed [rad/s] (its
     magnitude); ``None`` at rest (no revolutions: no life in hours)."""
     n = abs(speed) * 30.0 / math.pi
     if not n > 0 or l10 is None or not math.isfinite(l10):
@@ -299,7 +299,7 @@ def life_hours(l10: float, speed: float) -> float | None:
 
 
 # ---- ISO 281:2007 modified rating life ---------------------------------------------------------------
-#: life modification factor for reliability a1, reliability [%] -> a1 (ISO 281:2007 table 12)
+#: life modification factor for reliability a1, reliability [%] -> a1 (ISO 281:2007, reliability table)
 RELIABILITY_A1 = {90.0: 1.0, 95.0: 0.64, 96.0: 0.55, 97.0: 0.47, 98.0: 0.37, 99.0: 0.25, 99.2: 0.22,
                   99.4: 0.19, 99.6: 0.16, 99.8: 0.12, 99.9: 0.093, 99.92: 0.087, 99.94: 0.080, 99.95: 0.077}
 
@@ -317,12 +317,12 @@ CONTAMINATION = {
 
 
 def reliability_factor(reliability: float, field: str = "reliability") -> float:
-    """a1 [-] for a reliability [%] of ISO 281:2007 table 12 (90 % … 99.95 %; other values refused, naming
+    """a1 [-] for a reliability [%] of the ISO 281:2007 table (90 % … 99.95 %; other values refused, naming
     ``field``)."""
     for k, v in RELIABILITY_A1.items():
         if abs(k - reliability) < 1e-9:
             return v
-    raise InputError(field, f"{reliability!r} % is not a reliability of ISO 281:2007 table 12",
+    raise InputError(field, f"{reliability!r} % is not a reliability of the ISO 281:2007 table",
                      "use one of " + ", ".join(f"{k:g}" for k in RELIABILITY_A1))
 
 
@@ -344,7 +344,7 @@ def contamination_factor(level, pitch_diameter: float) -> float:
 
 def rated_viscosity(speed: float, pitch_diameter: float) -> float:
     """Rated (reference) viscosity ν1 [m²/s] for the speed [rad/s] and pitch diameter [m]
-    (ISO 281:2007 eqs. 27–28, n in r/min, D_pw in mm, ν1 in mm²/s):
+    (ISO 281:2007, n in r/min, D_pw in mm, ν1 in mm²/s):
     ν1 = 45 000 n^−0.83 D_pw^−0.5 for n < 1000 r/min, ν1 = 4 500 n^−0.5 D_pw^−0.5 for n ≥ 1000 r/min."""
     n = abs(speed) * 30.0 / math.pi
     if not n > 0:
@@ -355,7 +355,7 @@ def rated_viscosity(speed: float, pitch_diameter: float) -> float:
 
 
 def life_modification_factor(kappa: float, ec_cu_over_p: float) -> float:
-    """a_ISO [-] of radial ball bearings (ISO 281:2007 eqs. 22–25), κ clamped to 4 above (the standard's
+    """a_ISO [-] of radial ball bearings (ISO 281:2007), κ clamped to 4 above (the standard's
     rule), a_ISO limited to 50; κ must be ≥ 0.1 (below, the formulae are not valid: InputError)."""
     if not kappa >= 0.1:
         raise InputError("kappa", f"viscosity ratio κ = {kappa:.3g} is below 0.1, outside ISO 281:2007",
@@ -375,7 +375,7 @@ def life_modification_factor(kappa: float, ec_cu_over_p: float) -> float:
 
 
 # ---- ISO 76 static rating and ISO 281 fatigue load limit (estimates) -----------------------------------
-#: maximum contact pressure at C₀ for ball bearings other than self-aligning [Pa] (ISO 76:2006 §5.1)
+#: maximum contact pressure at C₀ for ball bearings other than self-aligning [Pa] (ISO 76:2006)
 C0_PRESSURE = 4.2e9
 #: Stribeck's factor of ISO 76: Q_max = 5 F_r / (i Z cos α) at the static rating (ISO/TR 10657)
 STRIBECK_STATIC = 5.0
@@ -391,9 +391,9 @@ def static_rating_estimate(bearing) -> tuple[float, float]:
 
 def _static_rating_estimate(bearing) -> tuple[float, float]:
     """(C₀r [N], f₀ [-]) estimated from the ball set, as ISO 76 derives them: the radial load at which the
-    most heavily loaded contact reaches 4 200 MPa, with Stribeck's Q_max = 5 C₀r/(Z cos α) (ISO 76:2006
-    §5.1, derivation in ISO/TR 10657), Hertz pressure of this bearing's raceways and materials
-    (:mod:`bearingsim.contact.hertz`); f₀ = C₀r / (Z D_w² cos α) with D_w in mm (ISO 76 eq. 1)."""
+    most heavily loaded contact reaches 4 200 MPa, with Stribeck's Q_max = 5 C₀r/(Z cos α) (ISO 76:2006,
+    derivation in ISO/TR 10657), Hertz pressure of this bearing's raceways and materials
+    (:mod:`bearingsim.contact.hertz`); f₀ = C₀r / (Z D_w² cos α) with D_w in mm (ISO 76)."""
     a = nominal_contact_angle(bearing)
     p1 = max(bearing.contact(1.0, True, a).max_pressure, bearing.contact(1.0, False, a).max_pressure)
     q0 = (C0_PRESSURE / p1) ** 3
@@ -423,15 +423,15 @@ def _unit_data(bearing):
         return row_b.kind, nominal_contact_angle(row_b), 0, len(rows), row_b, \
             f"ISO 281 has no factors for a unit of {len(rows)} rows"
     arr = getattr(bearing, "arrangement", "custom")
-    # ISO 281:2007 §6.1: a pair face-to-face or back-to-back is rated as a double-row bearing; a tandem pair
+    # ISO 281:2007: a pair face-to-face or back-to-back is rated as a double-row bearing; a tandem pair
     # takes the single-row factors with the rating of the set
     i_table = 1 if arr == "DT" else 2
     return row_b.kind, nominal_contact_angle(row_b), i_table, len(rows), row_b, None
 
 
 def _rating(bearing, name: str, row_b, nrows: int) -> float:
-    """A rating of the unit [N]: the bearing's field, else from the row's — i^0.7 C (ISO 281 §5.1), i C₀
-    (ISO 76 §5.1) and i C_u (SKF, bearing pairs: P_u = 2 P_u of a single bearing) for i rows; 0 = unknown."""
+    """A rating of the unit [N]: the bearing's field, else from the row's — i^0.7 C (ISO 281), i C₀
+    (ISO 76) and i C_u (SKF, bearing pairs: P_u = 2 P_u of a single bearing) for i rows; 0 = unknown."""
     v = float(getattr(bearing, name, 0.0) or 0.0)
     if v <= 0 and row_b is not bearing:
         r = float(getattr(row_b, name, 0.0) or 0.0)
@@ -572,7 +572,7 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
             notes.append(f"viscosity ratio κ = {kappa:.3g} < 0.1: outside ISO 281, no modified rating life")
         else:
             if kappa > 4.0:
-                notes.append(f"κ = {kappa:.3g} > 4: a_ISO at κ = 4 (ISO 281:2007 §9.3.2)")
+                notes.append(f"κ = {kappa:.3g} > 4: a_ISO at κ = 4 (ISO 281:2007)")
             if l10 is not None and p:
                 a_iso = life_modification_factor(kappa, ec * cu / p)
                 factors["a_ISO"] = a_iso

@@ -1,15 +1,15 @@
 """Static safety of ball bearings (ISO 76:2006).
 
-* Static equivalent radial load (ISO 76:2006 §6.1, eq. 5 with table 4 for radial ball bearings):
+* Static equivalent radial load (ISO 76:2006, with table 4 for radial ball bearings):
       P₀r = X₀ F_r + Y₀ F_a,   and P₀r = F_r when that is larger (single-row bearings, X₀ < 1)
   X₀ = 0.6, Y₀ = 0.5 for radial contact groove (deep-groove) bearings, single and double row; angular contact
   groove bearings: X₀ = 0.5 (single row) / 1 (double row, or a pair face-to-face/back-to-back), Y₀ from the
   table for 5°–45° (linear interpolation between tabulated angles; a tandem pair takes the single-row values).
 * Static safety factor s₀ = C₀/P₀ (ISO 76:2006 annex, the ratio the bearing makers tabulate requirements for).
 * Static safety factor from the computed contact pressure: ISO 76 defines C₀ of ball bearings as the load at
-  which the most heavily loaded contact reaches 4 200 MPa (§5.1).  In a Hertz point contact p_max ∝ Q^(1/3)
-  (Harris & Kotzalas 2007 vol. 1 eq. 5.42: p_max = 3Q/(2πab), a, b ∝ Q^(1/3)), so the factor by which the
-  load may grow until p_max reaches 4 200 MPa is s₀,p = (4 200 MPa / p_max)³: the same meaning as C₀/P₀ — a
+  which the most heavily loaded contact reaches 4 200 MPa.  In a Hertz point contact p_max ∝ Q^(1/3)
+  (p_max = 3Q/(2πab) with a, b ∝ Q^(1/3): Hamrock & Brewe 1983, :mod:`bearingsim.contact.hertz`), so the factor
+  by which the load may grow until p_max reaches 4 200 MPa is s₀,p = (4 200 MPa / p_max)³: the same meaning as C₀/P₀ — a
   ratio of loads — but from the actual load distribution (clearance, moments, preload, centrifugal forces)
   instead of the table's Stribeck distribution.
 
@@ -43,7 +43,7 @@ def static_factors(contact_angle: float, rows: int = 1, kind: str = "angular_con
 
 def equivalent_static_load(fr: float, fa: float, contact_angle: float, rows: int = 1,
                            kind: str = "angular_contact") -> float | None:
-    """P₀r [N] = max(X₀ F_r + Y₀ F_a, F_r) (ISO 76:2006 eq. 5 and §6.1); ``None`` outside table 4."""
+    """P₀r [N] = max(X₀ F_r + Y₀ F_a, F_r) (ISO 76:2006); ``None`` outside table 4."""
     f = static_factors(contact_angle, rows, kind)
     if f is None:
         return None

@@ -179,7 +179,7 @@ def test_modified_life_is_a1_a_iso_l10_and_reliability_scales_it():
                                rtol=1e-12)
     s99 = life.apply_rating(r, oil, 343.15, "normal", 99.0)
     np.testing.assert_allclose(s99["modified_rating_life_hours"] / s90["modified_rating_life_hours"], 0.25,
-                               rtol=1e-12, err_msg="ISO 281:2007 table 12: a1(99 %) = 0.25")
+                               rtol=1e-12, err_msg="ISO 281:2007 reliability table: a1(99 %) = 0.25")
     assert r.rating is s99 and r.to_dict()["modified_rating_life_hours"] == s99["modified_rating_life_hours"]
     with pytest.raises(life.InputError, match="reliability"):
         life.reliability_factor(93.0)

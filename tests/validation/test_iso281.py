@@ -104,12 +104,12 @@ def test_contamination_factor_table(level, small, large):
 
 @pytest.mark.parametrize("reliability", sorted(life.RELIABILITY_A1))
 def test_reliability_factor_table_is_the_weibull_formula(reliability):
-    """ISO 281:2007 table 12 lists a1 rounded from a1 = 0.95 [ln(1/S)/ln(1/0.9)]^(2/3) + 0.05 (Weibull slope 1.5,
+    """ISO 281:2007's reliability table lists a1 rounded from a1 = 0.95 [ln(1/S)/ln(1/0.9)]^(2/3) + 0.05 (Weibull slope 1.5,
     fatigue-life minimum 0.05 L10; ISO/TR 1281-2:2008): every tabulated value within its rounding."""
     s = reliability / 100.0
     a1 = 0.95 * (math.log(1 / s) / math.log(1 / 0.9)) ** (2 / 3) + 0.05
     np.testing.assert_allclose(life.reliability_factor(reliability), a1, rtol=0.025, atol=0.0005,
-                               err_msg="ISO/TR 1281-2 derivation of ISO 281:2007 table 12")
+                               err_msg="ISO/TR 1281-2 derivation of the ISO 281:2007 a1 table")
 
 
 def _skf_6309(**ratings):

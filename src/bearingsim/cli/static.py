@@ -46,7 +46,7 @@ def static(
         "normal", "--contamination", help="Cleanliness level of ISO 281 table 11 (extreme, high, normal, slight, "
         "typical, severe, very_severe) or the factor e_C (0-1)"),
     reliability: float = typer.Option(90.0, "--reliability", help="Reliability in % for the modified life "
-                                      "(ISO 281 table 12: 90, 95, 96, 97, 98, 99 ... 99.95)"),
+                                      "(ISO 281 reliability table: 90, 95, 96, 97, 98, 99 ... 99.95)"),
     as_json: JsonOpt = False,
 ):
     """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment), with the ISO 281
