@@ -115,6 +115,7 @@ class HarmonicRing:
             fixed.append(comp[1][self._boundary_scalar_dofs(name)])
         self._fixed_all = np.unique(np.concatenate(fixed)) if fixed else np.zeros(0, dtype=int)
         self._factors: dict[int, object] = {}
+        self._sliced: dict[int, tuple] = {}  # free dofs and sliced A00, A01, A11 per family (n = 0, n ≥ 1)
 
     def _boundary_scalar_dofs(self, name: str) -> np.ndarray:
         if name not in self.mesh.boundaries:
@@ -144,9 +145,17 @@ class HarmonicRing:
         (the harmonic's generalized forces [N], e.g. :meth:`point_load` × ĝ_n); the factorisation is kept."""
         load = np.asarray(load, dtype=float)
         if n not in self._factors:
-            free = self._free_dofs(n)
-            k = self.stiffness(n)[free][:, free].tocsc()
-            self._factors[n] = (free, splu(k))
+            fam = 0 if n == 0 else 1
+            if fam not in self._sliced:
+                free = self._free_dofs(n)
+                self._sliced[fam] = (free, self.a00[free][:, free].tocsc(), self.a01[free][:, free].tocsc(),
+                                     self.a11[free][:, free].tocsc())
+            elif n == 1 and self.free:
+                self._free_dofs(1)  # refuses harmonic 1 of a free ring
+            free, b0, b1, b2 = self._sliced[fam]
+            pin = 2.0 * math.pi if n == 0 else math.pi
+            k = (pin * (b0 + n * b1 + (n * n) * b2)).tocsc()
+            self._factors[n] = (free, splu(k, permc_spec="MMD_AT_PLUS_A"))
         free, lu = self._factors[n]
         x = np.zeros(self.basis.N)
         rhs = load if load.ndim == 1 else load.T

@@ -16,7 +16,13 @@ to a stiffness):
   bottom; 0.25 D_w is an engineering estimate of angular-contact spindle-bearing shoulders (the high shoulder of
   such rings is typically 0.2–0.3 D_w, the low one lower; using one height for both sides overstates the low
   shoulder a little, which stiffens the ring slightly).  docs/rings.md gives the sensitivity to this fraction;
-* faces at z = ±B/2, square corners (chamfers neglected).
+* faces at z = ±B/2, square corners (chamfers neglected);
+* seat: by default the ring is bonded to a sleeve of the same material and width B that stands for its seat
+  (the shaft under the inner ring, the housing around the outer ring), held rigidly at its far radius:
+  ``sleeve_radius`` = the shaft's bore (default 0.5 d: a hollow machine-tool spindle) or the housing's outside
+  radius (default 0.75 D, i.e. a housing wall of D/4); ``sleeve_radius = None`` puts the ring on a rigid seat.
+  A seat matters at first order: a ring on a rigid seat is *stiffer* than the half-spaces of Hertz theory
+  (its material ends at the seat), a free ring far softer (hoop and ovalisation compliance); docs/rings.md.
 
 Units: metres throughout.
 """
@@ -42,6 +48,7 @@ class RingSection:
     groove_radius : f·D_w
     half_width : B/2
     contact_angle : nominal contact angle α₀ [rad] (where the unit loads act)
+    sleeve_radius : far radius of the seat sleeve (shaft bore or housing outside radius), None for a rigid seat
     """
 
     kind: str
@@ -51,6 +58,7 @@ class RingSection:
     groove_radius: float
     half_width: float
     contact_angle: float
+    sleeve_radius: float | None = None
 
     def __post_init__(self):
         if self.kind not in ("inner", "outer"):
@@ -60,6 +68,13 @@ class RingSection:
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
                 raise InputError(name, f"must be a positive length, got {v!r}", "give a length in metres")
         sgn = self.sign
+        if self.sleeve_radius is not None:
+            v = self.sleeve_radius
+            if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0
+                    and sgn * (self.seat_radius - v) > 0):
+                raise InputError("sleeve_radius", f"{v!r} m is not beyond the seat ({self.kind} ring seat "
+                                 f"radius {self.seat_radius!r} m)", "give the shaft bore radius (inner ring, smaller "
+                                 "than the bore) or the housing outside radius (outer ring), or None")
         # inner: seat < groove bottom < land; outer: seat > groove bottom > land
         if not (sgn * (self.groove_bottom_radius - self.seat_radius) > 0
                 and sgn * (self.land_radius - self.groove_bottom_radius) > 0):
@@ -126,9 +141,12 @@ class RingSection:
         return abs(self.groove_bottom_radius - self.seat_radius)
 
 
-def estimate_sections(bearing, shoulder_fraction: float = 0.25) -> tuple[RingSection, RingSection]:
+def estimate_sections(bearing, shoulder_fraction: float = 0.25, shaft_bore_fraction: float | None = 0.5,
+                      housing_od_factor: float | None = 1.5) -> tuple[RingSection, RingSection]:
     """(inner, outer) :class:`RingSection` of a single-row ``bearing`` from its bore, outside diameter and width
-    (see the module docstring for the estimate) [m].  InputError when the boundary dimensions are unknown."""
+    (see the module docstring for the estimate) [m].  ``shaft_bore_fraction`` (shaft bore / d) and
+    ``housing_od_factor`` (housing outside diameter / D) size the seat sleeves; None gives a rigid seat.
+    InputError when the boundary dimensions are unknown."""
     for name in ("bore", "outside_diameter", "width"):
         if not getattr(bearing, name, 0.0) > 0:
             raise InputError(name, "is needed for the elastic-ring model (the ring sections are estimated from the "
@@ -142,10 +160,18 @@ def estimate_sections(bearing, shoulder_fraction: float = 0.25) -> tuple[RingSec
     h = shoulder_fraction * dw
     rbi = 0.5 * (dm - dw)
     rbo = 0.5 * (dm + dw)
+    if shaft_bore_fraction is not None and not 0.05 <= shaft_bore_fraction <= 0.9:
+        raise InputError("shaft_bore_fraction", f"{shaft_bore_fraction!r} is not a shaft bore / bearing bore",
+                         "use 0.05–0.9, or None for a rigid seat")
+    if housing_od_factor is not None and not 1.1 <= housing_od_factor <= 4.0:
+        raise InputError("housing_od_factor", f"{housing_od_factor!r} is not a housing / bearing outside diameter",
+                         "use 1.1–4, or None for a rigid seat")
     inner = RingSection("inner", 0.5 * bearing.bore, rbi + h, rbi, bearing.inner_conformity * dw,
-                        0.5 * bearing.width, alpha)
+                        0.5 * bearing.width, alpha,
+                        None if shaft_bore_fraction is None else 0.5 * bearing.bore * shaft_bore_fraction)
     outer = RingSection("outer", 0.5 * bearing.outside_diameter, rbo - h, rbo, bearing.outer_conformity * dw,
-                        0.5 * bearing.width, alpha)
+                        0.5 * bearing.width, alpha,
+                        None if housing_od_factor is None else 0.5 * bearing.outside_diameter * housing_od_factor)
     return inner, outer
 
 
@@ -164,13 +190,15 @@ def _graded(a: float, b: float, focus: float, h_min: float, n: int) -> np.ndarra
     return np.unique(np.round(np.array(pts, dtype=float), 15))
 
 
-def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_axial: int = 16):
-    """Structured quadrilateral mesh (skfem ``MeshQuad``) of ``section`` in (r, z) [m].
+def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_axial: int = 16, n_sleeve: int = 6):
+    """Structured quadrilateral mesh (skfem ``MeshQuad``) of ``section`` (and its seat sleeve) in (r, z) [m].
 
     Nodes: axial positions graded from ``h_contact`` at the contact point (and including the groove edges) to
-    about B/n_axial; through the wall ``n_through`` layers graded from ``h_contact`` at the raceway.  Each axial
-    line of nodes runs straight from the seat to the raceway surface (the surface is followed at the nodes).
-    Boundaries named ``seat``, ``raceway``, ``face_minus``, ``face_plus``."""
+    about B/n_axial; through the wall ``n_through`` layers graded from ``h_contact`` at the raceway; the sleeve
+    (if any) ``n_sleeve`` layers growing away from the seat.  Each axial line of nodes runs straight from the
+    seat to the raceway surface (the surface is followed at the nodes).  Boundaries named ``seat`` (the
+    rigidly held surface: the sleeve's far radius, or the ring's seat without a sleeve), ``raceway``,
+    ``face_minus``, ``face_plus``."""
     from skfem import MeshQuad
 
     hw = section.half_width
@@ -186,17 +214,31 @@ def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_a
     zs = zs[keep]
     depth = section.wall + abs(section.land_radius - section.groove_bottom_radius)
     t = _graded(0.0, 1.0, 1.0, h_contact / depth, n_through)
+    if section.sleeve_radius is not None:
+        w = abs(section.seat_radius - section.sleeve_radius)
+        first = min(2.0 * section.wall / max(n_through, 1), w / n_sleeve)
+        ratio = 1.0
+        if n_sleeve > 1 and first * n_sleeve < w:  # geometric growth: first layer ≈ the ring's outer layers
+            from scipy.optimize import brentq
+
+            ratio = brentq(lambda q: first * (q ** n_sleeve - 1.0) / (q - 1.0) - w, 1.0 + 1e-9, 10.0)
+        steps = first * ratio ** np.arange(n_sleeve)
+        ts = -np.cumsum(steps[::-1])[::-1] / w  # in [−1, 0)
+        ts[0] = -1.0
+        t = np.concatenate([ts, t])
     mesh = MeshQuad.init_tensor(t, zs)
     tt, zz = mesh.p
     rsurf = section.surface_radius(zz)
-    rr = section.seat_radius + tt * (rsurf - section.seat_radius)
+    far = section.sleeve_radius if section.sleeve_radius is not None else section.seat_radius
+    rr = np.where(tt >= 0, section.seat_radius + tt * (rsurf - section.seat_radius),
+                  section.seat_radius - tt * (far - section.seat_radius))
     mesh = MeshQuad(np.vstack([rr, zz]), mesh.t)
     tol = 1e-9 * hw
     return mesh.with_boundaries({
-        "seat": lambda x: np.abs(x[0] - section.seat_radius) < tol,
+        "seat": lambda x: np.abs(x[0] - far) < tol,
         "face_minus": lambda x: np.abs(x[1] + hw) < tol,
         "face_plus": lambda x: np.abs(x[1] - hw) < tol,
-        "raceway": lambda x: (np.abs(x[0] - section.seat_radius) >= tol) & (np.abs(np.abs(x[1]) - hw) >= tol),
+        "raceway": lambda x: (np.abs(x[0] - far) >= tol) & (np.abs(np.abs(x[1]) - hw) >= tol),
     })
 
 
