@@ -41,7 +41,8 @@ PAGES = {"deep_groove": "pp. B8-B15 (single-row deep groove ball bearings)",
 def read_rows(path: Path = CSV) -> list[dict]:
     """The published data, one dict per bearing (numbers as floats, f0 None when not printed)."""
     lines = [ln for ln in path.read_text(encoding="utf-8").splitlines() if ln.strip() and not ln.startswith("#")]
-    keys = ["designation", "nsk_number", "type", "contact_angle_deg", "d_mm", "D_mm", "B_mm", "Cr_N", "C0r_N", "f0"]
+    keys = ["designation", "nsk_number", "type", "contact_angle_deg", "d_mm", "D_mm", "B_mm", "Cr_N", "C0r_N", "f0",
+            "n_grease_rpm", "n_oil_rpm"]
     out = []
     for rec in csv.reader(lines):
         r = dict(zip(keys, rec, strict=True))
@@ -97,6 +98,7 @@ def entry_text(r: dict) -> str:
               f'static_load_rating = "{_kn(r["C0r_N"])}"']
     if r["f0"] is not None:
         lines.append(f"geometry_factor_f0 = {r['f0']:g}")
+    lines.append(f'limiting_speed = "{r["n_oil_rpm"]:g} rpm"')
     lines += [f"ball_count = {est.ball_count}",
               f'ball_diameter = "{est.ball_diameter * 1e3:.8g} mm"',
               f'pitch_diameter = "{_mm(est.pitch_diameter)}"',
@@ -118,6 +120,10 @@ def entry_text(r: dict) -> str:
         src["geometry_factor_f0"] = (f"not printed by {NSK} for {angle:g} deg bearings (ISO 281 uses f0 only "
                                      "below 25 deg); 0 = unknown")
     src["fatigue_load_limit"] = f"not given by {NSK}; 0 = unknown"
+    cage = ("; NSK: for machined cages, pressed cages 20 % lower" if kind == "angular_contact" and angle > 20
+            else "; NSK: for precision class P5 and better with machined cages" if kind == "angular_contact" else "")
+    src["limiting_speed"] = (f"{NSK}, {PAGES[kind]}: {r['nsk_number']} limiting speed of the open bearing "
+                             f"{r['n_oil_rpm']:g} rpm with oil ({r['n_grease_rpm']:g} rpm with grease){cage}")
     if kind == "angular_contact":
         src["contact_angle"] = f"{NSK} p. B50 note 2: suffix A = 30 deg, B = 40 deg, C = 15 deg"
     src["ball_count"] = "ESTIMATE: " + method + fit

@@ -23,7 +23,7 @@ CSV = ROOT / "src" / "bearingsim" / "data" / "catalogue_nsk_e1102e.csv"
 
 def published():
     lines = [ln for ln in CSV.read_text(encoding="utf-8").splitlines() if ln.strip() and not ln.startswith("#")]
-    keys = ["designation", "nsk_number", "type", "alpha", "d", "D", "B", "C", "C0", "f0"]
+    keys = ["designation", "nsk_number", "type", "alpha", "d", "D", "B", "C", "C0", "f0", "n_grease", "n_oil"]
     return [dict(zip(keys, r, strict=True)) for r in csv.reader(lines)]
 
 
@@ -132,6 +132,8 @@ def test_entries_carry_the_published_numbers_and_flag_estimates(row):
     assert b.dynamic_load_rating == pytest.approx(float(row["C"]), rel=1e-12)
     assert b.static_load_rating == pytest.approx(float(row["C0"]), rel=1e-12)
     assert b.geometry_factor_f0 == (float(row["f0"]) if row["f0"] else 0.0)
+    assert b.limiting_speed == pytest.approx(float(row["n_oil"]) * math.pi / 30, rel=1e-12)
+    assert f"{row['n_grease']} rpm with grease" in b.sources["limiting_speed"]
     assert b.kind == row["type"]
     if b.kind == "angular_contact":
         assert b.contact_angle == pytest.approx(math.radians(float(row["alpha"])), rel=1e-12)

@@ -133,6 +133,7 @@ _SHOW = (
     ("static_load_rating_N", "static load rating C₀", 1e-3, "kN", ("static_load_rating",)),
     ("geometry_factor_f0", "factor f₀", 1.0, "", ("geometry_factor_f0",)),
     ("fatigue_load_limit_N", "fatigue load limit P_u", 1e-3, "kN", ("fatigue_load_limit",)),
+    ("limiting_speed_rad_s", "limiting speed", 30.0 / math.pi, "rpm", ("limiting_speed",)),
     ("ball_count", "ball count Z", 1.0, "", ("ball_count",)),
     ("ball_diameter_m", "ball diameter D_w", 1e3, "mm", ("ball_diameter", "geometry")),
     ("pitch_diameter_m", "pitch diameter d_m", 1e3, "mm", ("pitch_diameter", "geometry")),
@@ -163,7 +164,8 @@ def _show_entry(d: dict) -> None:
     for key, label, scale, unit, keys in _SHOW:
         v = d.get(key)
         if isinstance(v, float) and v == 0.0 and key in ("fatigue_load_limit_N", "geometry_factor_f0",
-                                                          "dynamic_load_rating_N", "static_load_rating_N"):
+                                                          "dynamic_load_rating_N", "static_load_rating_N",
+                                                          "limiting_speed_rad_s"):
             shown = "unknown"
         elif scale is None or isinstance(v, str):
             shown = str(v)
