@@ -118,7 +118,7 @@ def test_catalogue_covers_the_series_and_bores():
     bores = ["00", "01", "02", "03"] + [f"{k:02d}" for k in range(4, 21)]
     for series in ("60", "62", "63"):
         assert {series + b for b in bores} <= names
-    for series, angles in (("70", ("15", "30")), ("72", ("15", "30", "40"))):
+    for series, angles in (("70", ("15", "25", "30")), ("72", ("15", "30", "40"))):
         assert {f"{series}{b}-{a}" for b in bores for a in angles} <= names
     assert {"harris-218", "skf-7011-cdga-hc", "skf-7011-cdga-hc-db", "hub-seed001", "hub-seed001-row"} <= names
 
@@ -145,6 +145,13 @@ def test_entries_carry_the_published_numbers_and_flag_estimates(row):
     c = cat.dynamic_load_rating(b.ball_count, b.ball_diameter, b.pitch_diameter, b.contact_angle)
     c0 = cat.static_load_rating(b.ball_count, b.ball_diameter, b.pitch_diameter, b.contact_angle)
     assert abs(c / b.dynamic_load_rating - 1) < 0.01 and abs(c0 / b.static_load_rating - 1) < 0.02
+
+
+def test_the_25_deg_entries_come_from_ntn():
+    b = io.load_bearing("7014-25")
+    assert b.contact_angle == pytest.approx(math.radians(25.0), rel=1e-12)
+    assert (b.dynamic_load_rating, b.static_load_rating) == (pytest.approx(46000.0), pytest.approx(43000.0))
+    assert b.sources["dynamic_load_rating"].startswith("NTN-SNR") and "ball_count" in b.estimated
 
 
 def test_deep_groove_entries_get_the_cn_mid_clearance():
