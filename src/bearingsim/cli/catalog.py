@@ -97,6 +97,7 @@ def entry_details(name: str) -> dict:
     from ..io import load_bearing, resolve_bearing_data
 
     from ..geometry import BallBearing
+    from ..io import catalog_names
 
     data = resolve_bearing_data(name)
     b = load_bearing(name)
@@ -109,7 +110,8 @@ def entry_details(name: str) -> dict:
                 "estimated": [k for k, v in (src.items() if isinstance(src, dict) else ())
                               if isinstance(v, str) and v.lstrip().upper().startswith(("ESTIMATE", "ASSUMED"))]}
     return {
-        "name": name, "type": b.kind, "description": data.get("description", ""),
+        "name": name if name in catalog_names() else b.name, "type": b.kind,
+        "description": data.get("description", ""),
         "bore_m": b.bore, "outside_diameter_m": b.outside_diameter, "width_m": b.width,
         "contact_angle_rad": b.contact_angle, "free_contact_angle_rad": b.free_contact_angle,
         "ball_count": b.ball_count, "ball_diameter_m": b.ball_diameter, "pitch_diameter_m": b.pitch_diameter,
@@ -128,7 +130,8 @@ _SHOW = (
     ("bore_m", "bore d", 1e3, "mm", ("bore", "boundary")),
     ("outside_diameter_m", "outside diameter D", 1e3, "mm", ("outside_diameter", "bore", "boundary")),
     ("width_m", "width B", 1e3, "mm", ("width", "bore", "boundary")),
-    ("contact_angle_rad", "contact angle α₀", 180.0 / math.pi, "deg", ("contact_angle",)),
+    ("free_contact_angle_rad", "free contact angle α₀", 180.0 / math.pi, "deg", ("contact_angle",
+                                                                                 "diametral_clearance")),
     ("dynamic_load_rating_N", "dynamic load rating C", 1e-3, "kN", ("dynamic_load_rating",)),
     ("static_load_rating_N", "static load rating C₀", 1e-3, "kN", ("static_load_rating",)),
     ("geometry_factor_f0", "factor f₀", 1.0, "", ("geometry_factor_f0",)),
@@ -165,7 +168,8 @@ def _show_entry(d: dict) -> None:
         v = d.get(key)
         if isinstance(v, float) and v == 0.0 and key in ("fatigue_load_limit_N", "geometry_factor_f0",
                                                           "dynamic_load_rating_N", "static_load_rating_N",
-                                                          "limiting_speed_rad_s"):
+                                                          "limiting_speed_rad_s", "bore_m",
+                                                          "outside_diameter_m", "width_m"):
             shown = "unknown"
         elif scale is None or isinstance(v, str):
             shown = str(v)
