@@ -222,3 +222,15 @@ def test_results_hysteresis_matches_the_array_function_and_finds_the_frequency()
     still = Results({"time": t, "applied_load": np.zeros((n, 5)), "inner_ring_displacement": disp}, attrs={})
     with pytest.raises(InputError, match="frequency"):
         still.hysteresis()
+
+
+def test_level_crossing_on_a_grid_phase_is_found():
+    """M = 600 sin θ sampled at 360 points per cycle and the level 300 N m: the crossing θ = π/6 falls on the
+    bracketing grid, where the vectorised and the scalar evaluation of the series may differ in the last bit;
+    the crossing must still be found (it once returned NaN)."""
+    spc = 360
+    th = 2 * math.pi * np.arange(5 * spc + 1) / spc
+    t = th / (2 * math.pi * F)
+    e = an.hysteresis_estimate(t, M_HAT * np.sin(th), G_HAT * np.sin(th - PHI), F, LEVEL)
+    assert e.status == "ok" and np.all(np.isfinite(e.widths))
+    np.testing.assert_allclose(e.widths, exact_width(), rtol=1e-9)

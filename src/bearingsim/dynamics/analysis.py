@@ -143,8 +143,8 @@ def level_crossings(coef: np.ndarray, level: float, grid: int = 1440) -> tuple[f
             root = th[i]
         elif fa * fb < 0.0:
             root = brentq(f, th[i], th[i + 1], xtol=1e-15, rtol=4 * np.finfo(float).eps)
-        else:
-            continue  # a zero at the bracket's right end is the next bracket's left end
+        else:  # the grid and the scalar evaluation disagree in the last bits: the root is the nearer end
+            root = th[i] if abs(fa) <= abs(fb) else th[i + 1]
         s = float(series_slope(coef, root)[0])
         if s != 0.0:
             (rise if s > 0 else fall).append((s, root % (2.0 * math.pi)))
