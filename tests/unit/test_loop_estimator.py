@@ -229,7 +229,7 @@ def test_level_crossing_on_a_grid_phase_is_found():
     bracketing grid, where the vectorised and the scalar evaluation of the series may differ in the last bit;
     the crossing must still be found (it once returned NaN)."""
     spc = 360
-    th = 2 * math.pi * np.arange(5 * spc + 1) / spc
+    th = 2 * math.pi * np.arange(8 * spc + 1) / spc
     t = th / (2 * math.pi * F)
     e = an.hysteresis_estimate(t, M_HAT * np.sin(th), G_HAT * np.sin(th - PHI), F, LEVEL)
     assert e.status == "ok" and np.all(np.isfinite(e.widths))
