@@ -54,11 +54,16 @@ def test_json_of_a_two_cell_grid_on_local_workers_with_report_then_rerun_from_th
     assert [(c["vehicle_speed_kmh"], c["frequency_hz"]) for c in data["cells"]] == [(50.0, 1000.0), (100.0, 1000.0)]
     for c in data["cells"]:
         assert c["simulated_seconds"] == pytest.approx(7 / 1000.0, rel=1e-9)
-        assert isinstance(c["wh_deg"], float), c["notes"]  # the loop estimator ran
-        lo, hi = c["wh_ci95_deg"]
-        assert lo <= c["wh_deg"] <= hi
-        assert 1 <= c["cycles_used"] <= 6 and len(c["wh_cycles_deg"]) == c["cycles_used"]
-        assert c["static_compliance_deg_per_kNm"] > 0 and c["compliance_deg_per_kNm"] > 0
+        # the loop estimator ran: numbers where its periodicity criterion held, else a note saying why
+        # (without traction nothing damps the balls: these short frictionless cells may not settle)
+        assert len(c["two_point_deg"]) == 7  # the diagnostic reading of every cycle
+        if c["wh_deg"] is None:
+            assert c["cycles_used"] == 0 and any(n.startswith("loop estimator:") for n in c["notes"]), c
+        else:
+            lo, hi = c["wh_ci95_deg"]
+            assert lo <= c["wh_deg"] <= hi and c["compliance_deg_per_kNm"] > 0
+            assert 1 <= c["cycles_used"] <= 6 and len(c["wh_cycles_deg"]) == c["cycles_used"]
+        assert c["static_compliance_deg_per_kNm"] > 0
         assert c["seed_wh_deg"] is None  # 1000 Hz: no pair of the paper
         assert not c["from_earlier_run"]
     assert data["traction"] == "none" and data["cycles"] == 6 and data["startup_cycles"] == 1
@@ -78,7 +83,7 @@ def test_json_of_a_two_cell_grid_on_local_workers_with_report_then_rerun_from_th
     assert all(c["from_earlier_run"] for c in again["cells"])
     assert "2 of 2 cells taken from the earlier run" in " ".join(again["notes"])
     for a, b in zip(data["cells"], again["cells"]):
-        for k in ("wh_deg", "wh_ci95_deg", "loop_area_J", "phase_lag_deg", "compliance_deg_per_kNm"):
+        for k in ("wh_deg", "wh_ci95_deg", "two_point_deg", "loop_area_J", "phase_lag_deg", "notes"):
             assert a[k] == b[k], k
     assert time.monotonic() - t0 < 60
 

@@ -363,8 +363,12 @@ def analyse_cell(record: dict, case, level: float = LEVEL, reduced: bool = True)
         try:
             out.estimate = hysteresis_estimate(record["time"], record["moment"], record["tilt"],
                                                record["frequency_hz"], level)
-        except InputError as exc:  # too few cycles, no periodic cycles ...
+        except InputError as exc:
             out.notes.append(f"loop estimator: {exc}")
+        else:
+            status = getattr(out.estimate, "status", "ok")
+            if status != "ok":  # too few periodic cycles, no crossing ...: the numbers as far as they exist
+                out.notes.append(f"loop estimator: {status}")
     out.static_compliance = static_compliance(case, record["frequency_hz"])
     if reduced:
         try:
@@ -491,6 +495,16 @@ def last_cycle(record: dict) -> tuple[np.ndarray, np.ndarray]:
     return np.asarray(record["moment"])[sel], np.asarray(record["tilt"])[sel]
 
 
+def _warm_up(case) -> None:
+    """Compile (first run) or load the dynamic kernels in this process before local worker processes start, so
+    that they load them from the disk cache instead of each compiling them (two output samples of ``case``)."""
+    import dataclasses
+
+    from ..dynamics.run import simulate
+
+    simulate(dataclasses.replace(case, duration=2 * case.output_interval))
+
+
 def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: int = 8,
               startup: int = STARTUP_CYCLES, traction: str | None = None, level: float = LEVEL, out_dir=None,
               workers: int | None = None, scheduler=None, worker_timeout: float = 600.0, progress: bool = False,
@@ -561,6 +575,8 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
                     _close(client, quiet)
         else:
             n = workers if workers is not None else min(len(todo), os.cpu_count() or 1)
+            if n > 1 and len(todo) > 1:
+                _warm_up(cases[todo[0]])
             run_tasks_locally(run_cell, args, todo, done, n, what="cells", job="the hub study")
     finally:
         if bar is not None:
