@@ -187,14 +187,15 @@ def _sensitivity(study, folder):
     if not any(c.reduced for c in study.cells):
         return None, "the reduced model (studies/hub_reduced.py) was not available"
     try:
+        from . import hub_reduced
         from .hub_reduced import reduced_wh
     except ImportError as exc:
         return None, f"the reduced model cannot be imported ({exc})"
-    cell = _pick(study.cells, 10.0, 50.0)
+    cell = _pick([c for c in study.cells if c.reduced], 10.0, 50.0)
     case = getattr(cell, "case", None)
     base = cell.reduced
-    slope0 = base.get("creep_slope")
-    mu0 = base.get("mu_max")
+    slope0 = base.get("creep_slope")  # the median film-elastic slope of the cell; varied as one uniform slope
+    mu0 = base.get("mu_max", getattr(hub_reduced, "MU_MAX", None))
     if case is None or slope0 is None or mu0 is None:
         return None, "the reduced model's result does not give its creep slope and μ_max (needed to vary them)"
     import matplotlib
@@ -213,7 +214,7 @@ def _sensitivity(study, folder):
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 3.8))
     a1.semilogx(factors * slope0, np.degrees(ws) * 1e3, "o-")
     a1.axvline(slope0, color="k", ls=":", lw=0.8)
-    a1.set_xlabel("creep slope dμ/ds at s → 0 [-]")
+    a1.set_xlabel("creep slope dμ/ds at s → 0, uniform [-] (dotted: median of the film law)")
     a1.set_ylabel("reduced-model W_H [10⁻³ deg]")
     a2.semilogx(factors * mu0, np.degrees([w["wh"] for w in wm]) * 1e3, "o-", label="reduced W_H")
     a2.semilogx(factors * mu0, np.degrees([w.get("bound_force", np.nan) for w in wm]) * 1e3, "s--",
