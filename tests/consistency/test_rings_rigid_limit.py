@@ -87,7 +87,7 @@ def test_steel_rings_equilibrium(b7011, steel_rings, loads):
     assert el.ring_iterations <= 6 and el.ring_residual <= 1e-12
     f, off, _, _ = forces_at(b7011, el.displacement, 0.0, "outer", steel_rings, el.ring_offsets)
     scale = jh._scale(loads, b7011.row_vectors())
-    np.testing.assert_allclose(f + loads.as_array(), 0.0, atol=jh.TOL_VERIFY * scale * 10)
+    np.testing.assert_allclose(f - loads.as_array(), 0.0, atol=jh.TOL_VERIFY * scale * 10)
     np.testing.assert_allclose(off, el.ring_offsets, rtol=0, atol=1e-11)
     rigid = jh.solve(b7011, loads)
     assert np.max(np.abs(el.ring_offsets)) > 1e-8  # tens of nm: the rings deform

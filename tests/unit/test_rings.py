@@ -88,7 +88,8 @@ def test_local_hertz_part_is_excluded(b7011, inner_coeffs):
     """No double counting: in a massive block (the half-space limit of Hertz theory) the self term left after the
     subtraction is a small fraction of the subtracted half-space part (what remains is the curvature of the
     groove, a correction of the order of Hertz theory's own error for conforming contacts); without the
-    subtraction it would be the whole local part.  The thin ring's self term is of the same small size."""
+    subtraction it would be the whole local part.  The 7011 inner ring on its hollow-shaft sleeve yields more
+    than a half-space (positive self term) but far less than the local part."""
     inner, c = inner_coeffs
     block = RingSection("inner", 0.004, inner.land_radius, inner.groove_bottom_radius, inner.groove_radius, 0.03,
                         inner.contact_angle)
@@ -97,7 +98,7 @@ def test_local_hertz_part_is_excluded(b7011, inner_coeffs):
     local = n @ cb.local @ n
     assert local > 0
     assert abs(n @ cb.coeffs[0] @ n) < 0.1 * local
-    assert abs(n @ c.coeffs[0] @ n) < 0.1 * local
+    assert 0 < n @ c.coeffs[0] @ n < 0.3 * local
 
 
 def test_readout_depth_does_not_matter(b7011, inner_coeffs):

@@ -63,10 +63,13 @@ class HarmonicRing:
     axial_fixed : names of boundaries where W = 0 for every harmonic (a rigid axial abutment), or ()
     free : True for a free body: only the rigid modes are removed (W at one node for n = 0; harmonic 1,
         which holds the rigid translation and tilt, is refused — give self-equilibrated loads without it)
+    radial_harmonics : None (the radial seat holds every harmonic) or the harmonics it holds, e.g. (1,): the
+        far surface of a seat sleeve follows the shaft's rigid translation and tilt (harmonic 1, where U and W
+        are held there) and is free for the other harmonics
     """
 
     def __init__(self, mesh, youngs_modulus: float, poisson_ratio: float, radial_fixed=(), axial_fixed=(),
-                 free: bool = False):
+                 free: bool = False, radial_harmonics=None):
         from skfem import Basis, BilinearForm, ElementQuad2, ElementVector, asm
 
         e, nu = float(youngs_modulus), float(poisson_ratio)
@@ -108,11 +111,15 @@ class HarmonicRing:
         self.a00, self.a01, self.a11 = (asm(f, self.basis).tocsr() for f in (a00, a01, a11))
         comp = self.basis.split_indices()  # dofs of U, W, V; index k of each = scalar dof k
         self.comp = comp
-        fixed = []
+        fixed, radial = [], []
         for name in radial_fixed:
-            fixed.append(comp[0][self._boundary_scalar_dofs(name)])
+            radial.append(comp[0][self._boundary_scalar_dofs(name)])
+            if radial_harmonics is not None:  # the sleeve's far surface: U and W held in harmonic 1
+                radial.append(comp[1][self._boundary_scalar_dofs(name)])
         for name in axial_fixed:
             fixed.append(comp[1][self._boundary_scalar_dofs(name)])
+        self._radial_harmonics = None if radial_harmonics is None else frozenset(int(n) for n in radial_harmonics)
+        self._fixed_radial = np.unique(np.concatenate(radial)) if radial else np.zeros(0, dtype=int)
         self._fixed_all = np.unique(np.concatenate(fixed)) if fixed else np.zeros(0, dtype=int)
         self._factors: dict[int, object] = {}
         self._sliced: dict[int, tuple] = {}  # free dofs and sliced A00, A01, A11 per family (n = 0, n ≥ 1)
@@ -123,8 +130,16 @@ class HarmonicRing:
         return np.asarray(self.scalar_basis.get_dofs(name).all(), dtype=int)
 
     # ---- per-harmonic systems ---------------------------------------------------------------------------------
+    def _family(self, n: int):
+        """Harmonics sharing one set of fixed dofs."""
+        if n == 0:
+            return (0, self._radial_harmonics is None or 0 in self._radial_harmonics)
+        return (1, self._radial_harmonics is None or n in self._radial_harmonics)
+
     def _free_dofs(self, n: int) -> np.ndarray:
         fixed = [self._fixed_all]
+        if self._family(n)[1]:
+            fixed.append(self._fixed_radial)
         if n == 0:
             fixed.append(self.comp[2])  # torsion: decoupled, unloaded
             if self.free:
@@ -145,7 +160,7 @@ class HarmonicRing:
         (the harmonic's generalized forces [N], e.g. :meth:`point_load` × ĝ_n); the factorisation is kept."""
         load = np.asarray(load, dtype=float)
         if n not in self._factors:
-            fam = 0 if n == 0 else 1
+            fam = self._family(n)
             if fam not in self._sliced:
                 free = self._free_dofs(n)
                 self._sliced[fam] = (free, self.a00[free][:, free].tocsc(), self.a01[free][:, free].tocsc(),

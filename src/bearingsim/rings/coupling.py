@@ -13,11 +13,12 @@ Q_i sin α_i + λ_i G cos α_i), on the outer ring (Q_o cos α_o − λ_o G sin 
 (the contact forces of the ball balance, [S0] eq. 10).  Each row has its own two rings (a set of separate
 bearings); rings shared by two rows (a hub unit's common outer ring) are not coupled between the rows.
 
-Solution.  A fixed point on the offsets: solve the ball and ring equilibrium of the rigid-ring kernel with the
+Solution.  Iteration on the offsets: solve the ball and ring equilibrium of the rigid-ring kernel with the
 current per-ball offsets (every ball is passed to the unchanged kernel as a one-ball row at its own azimuth,
-so the kernel needs no change), recompute the offsets from the ball forces, repeat until the largest change of
-an offset is below ``tol`` [m].  The contraction factor is the ring compliance times the contact stiffness
-(≈ 0.01–0.1 for solid rings), so a few iterations suffice.  The result is called converged only when the last
+so the kernel needs no change), recompute the offsets from the ball forces T(off), and update the offsets by
+Newton's method on T(off) − off (Jacobian from :func:`linearisation` at the rigid-ring start, kept for the
+later steps: a chord method, linear convergence with a small factor; it includes the shift of the equilibrium
+q with the offsets), until the largest change of an offset is below ``tol`` [m] (3–6 iterations).  The result is called converged only when the last
 kernel solve is a verified equilibrium (:func:`bearingsim.statics.jones_harris._attempt`) *and* the offsets
 are consistent with its ball forces to ``tol``; otherwise status and both residuals are reported.
 
@@ -91,104 +92,206 @@ def ring_model(bearing, youngs_modulus: float | None = None, poisson_ratio: floa
 
 
 def expand_rows(rows0: np.ndarray, offsets: np.ndarray) -> np.ndarray:
-    """One kernel row per ball (P_Z = 1 at the ball's azimuth) with the per-ball groove-centre offsets
+    """One kernel row per ball (P_Z = 1 at the ball's azimuth ψ₀ + 2πj/Z) with the per-ball groove-centre offsets
     ``offsets[b] = (ΔA₁, ΔA₂)`` [m] added to P_AXOFF and P_DR0."""
-    out = []
-    b = 0
-    for par in rows0:
-        z = int(par[kn.P_Z])
-        for j in range(z):
-            p = par.copy()
-            p[kn.P_Z] = 1.0
-            p[kn.P_PSI0] = par[kn.P_PSI0] + 2.0 * math.pi * j / z
-            p[kn.P_AXOFF] = par[kn.P_AXOFF] + offsets[b, 0]
-            p[kn.P_DR0] = par[kn.P_DR0] + offsets[b, 1]
-            out.append(p)
-            b += 1
-    return np.array(out)
-
-
-def ring_forces(ballout: np.ndarray, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per ball (expanded rows), the forces (F_r, F_ξ) [N] of the ball on the inner and on the outer ring."""
-    n = ballout.shape[0]
-    fi = np.zeros((n, 2))
-    fo = np.zeros((n, 2))
-    for e in range(n):
-        bo = ballout[e, 0]
-        li, lo = kn.control_weights(lam[e, 0])
-        qi, qo, g, si, ci, so, co = bo[2], bo[3], bo[6], bo[8], bo[9], bo[10], bo[11]
-        fi[e] = (-(qi * ci - li * g * si), -(qi * si + li * g * ci))
-        fo[e] = (qo * co - lo * g * so, qo * so + lo * g * co)
-    return fi, fo
-
-
-def offsets_from_forces(rows0: np.ndarray, rings: ElasticRings, fi: np.ndarray, fo: np.ndarray) -> np.ndarray:
-    """Groove-centre offsets (ΔA₁, ΔA₂) [m] per ball from the ring forces (module docstring)."""
-    out = np.zeros((fi.shape[0], 2))
-    b = 0
-    for r, (mi, mo) in enumerate(rings.matrices()):
-        z = int(rows0[r, kn.P_Z])
-        ui = (mi @ fi[b:b + z].ravel()).reshape(z, 2)  # (u_r, u_ξ) of the inner groove centre
-        uo = (mo @ fo[b:b + z].ravel()).reshape(z, 2)
-        out[b:b + z, 0] = ui[:, 1] - uo[:, 1]
-        out[b:b + z, 1] = ui[:, 0] - uo[:, 0]
-        b += z
+    zs = rows0[:, kn.P_Z].astype(int)
+    out = np.repeat(rows0, zs, axis=0)
+    j = np.concatenate([np.arange(z) for z in zs]) if len(zs) else np.zeros(0)
+    zrep = np.repeat(zs, zs).astype(float)
+    out[:, kn.P_PSI0] = out[:, kn.P_PSI0] + 2.0 * math.pi * j / zrep
+    out[:, kn.P_Z] = 1.0
+    out[:, kn.P_AXOFF] += offsets[:, 0]
+    out[:, kn.P_DR0] += offsets[:, 1]
     return out
 
 
-def _check_rings(bearing, rings) -> None:
+def ring_forces(ballout: np.ndarray, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per ball (expanded rows), the forces (F_r, F_ξ) [N] of the ball on the inner and on the outer ring
+    (control weights λ_i, λ_o = (1, 1) for inner control, (0, 2) for outer: :func:`._kernels.control_weights`)."""
+    bo = ballout[:, 0, :]
+    inner = lam[:, 0] == 1
+    li = np.where(inner, 1.0, 0.0)
+    lo = np.where(inner, 1.0, 2.0)
+    qi, qo, g, si, ci, so, co = (bo[:, k] for k in (2, 3, 6, 8, 9, 10, 11))
+    fi = -np.column_stack([qi * ci - li * g * si, qi * si + li * g * ci])
+    fo = np.column_stack([qo * co - lo * g * so, qo * so + lo * g * co])
+    return fi, fo
+
+
+def offset_maps(rows0: np.ndarray, rings: ElasticRings) -> tuple[np.ndarray, np.ndarray]:
+    """Matrices (P_i, P_o), float[2n, 2n] over all balls (ball-major): offsets (ΔA₁, ΔA₂) = P_i F_i − P_o F_o
+    with F = (F_r, F_ξ) per ball [m/N] (the ring matrices with each ball's output components swapped)."""
+    zs = rows0[:, kn.P_Z].astype(int)
+    cache = rings.__dict__.setdefault("_maps_cache", {})
+    if tuple(zs) in cache:
+        return cache[tuple(zs)]
+    nb = int(zs.sum())
+    pi = np.zeros((2 * nb, 2 * nb))
+    po = np.zeros((2 * nb, 2 * nb))
+    b = 0
+    for r, (mi, mo) in enumerate(rings.matrices()):
+        z = int(zs[r])
+        perm = np.arange(2 * z).reshape(z, 2)[:, ::-1].ravel()  # output (r, ξ) → (ξ, r)
+        pi[2 * b:2 * (b + z), 2 * b:2 * (b + z)] = mi[perm]
+        po[2 * b:2 * (b + z), 2 * b:2 * (b + z)] = mo[perm]
+        b += z
+    cache[tuple(zs)] = (pi, po)
+    return pi, po
+
+
+def offsets_from_forces(rows0: np.ndarray, rings: ElasticRings, fi: np.ndarray, fo: np.ndarray,
+                        maps=None) -> np.ndarray:
+    """Groove-centre offsets (ΔA₁, ΔA₂) [m] per ball from the ball forces on the rings (module docstring)."""
+    pi, po = maps if maps is not None else offset_maps(rows0, rings)
+    return (pi @ fi.ravel() - po @ fo.ravel()).reshape(-1, 2)
+
+
+def _check_rings(bearing, rings, rows0=None) -> None:
     if not isinstance(rings, ElasticRings):
         raise InputError("rings", f"expected ElasticRings (bearingsim.rings.coupling.ring_model), got "
                          f"{type(rings).__name__}", "build them with ring_model(bearing)")
-    rows0 = bearing.row_vectors()
+    rows0 = bearing.row_vectors() if rows0 is None else rows0
     if len(rings.rows) != rows0.shape[0] or any(int(rows0[r, kn.P_Z]) != pair[0].ball_count
                                                 for r, pair in enumerate(rings.rows)):
         raise InputError("rings", "the ring coefficients do not match the bearing's rows and ball counts",
                          "compute them for this bearing with ring_model(bearing)")
 
 
+def _assemble(rows_e, qv, omega, control):
+    """At fixed q for the one-ball rows ``rows_e``: ball forces on the rings (F_i, F_o) [N], the load each ball
+    carries (generalized, float[n, 5], :func:`bearingsim.statics.jones_harris._row_loads`) and the ring forces."""
+    nb = rows_e.shape[0]
+    lam = np.full((nb, 1), 1 if control == "inner" else 0, dtype=np.int64)
+    res = np.zeros(5)
+    kmat = np.zeros((5, 5))
+    ballout = np.zeros((nb, 1, 12))
+    kn.ring_assemble(rows_e, qv, omega, jh.CONTROLS[control], lam, np.zeros((nb, 1, 2)), np.zeros(5), res, kmat,
+                     ballout, jh.TOL_BALL, jh.MAXIT_BALL)
+    carried = np.zeros((nb, 5))
+    jh._row_loads(rows_e, qv, ballout, lam, carried)
+    fi, fo = ring_forces(ballout, lam)
+    return fi, fo, carried, res, kmat
+
+
+def _groove_gradients(rows_e, qv) -> np.ndarray:
+    """Per one-ball row: d(A₁, A₂)/dq, float[n, 2, 5] (the small-rotation gradients of
+    :func:`bearingsim.statics._kernels._groove_offsets`, vectorised)."""
+    psi = rows_e[:, kn.P_PSI0]
+    cp, sp = np.cos(psi), np.sin(psi)
+    s = rows_e[:, kn.P_SIGN]
+    ric = rows_e[:, kn.P_RIC]
+    # inner groove-centre axial position x_row + s (ξ_ic + e) (bearingsim.statics.layout.inner_groove_centre_axial)
+    xg = rows_e[:, kn.P_XROW] + s * (rows_e[:, kn.P_XIC] + rows_e[:, kn.P_AXOFF])
+    out = np.zeros((rows_e.shape[0], 2, 5))
+    out[:, 0, 0] = s
+    out[:, 0, 3] = s * ric * sp
+    out[:, 0, 4] = -s * ric * cp
+    out[:, 1, 1] = cp
+    out[:, 1, 2] = sp
+    out[:, 1, 3] = -xg * sp
+    out[:, 1, 4] = xg * cp
+    return out
+
+
+def linearisation(bearing, q, speed: float, control: str, rings: ElasticRings, offsets, step: float = 1e-10,
+                  rows0=None):
+    """Derivatives at a solution with elastic rings → dict with ``stiffness`` (K = dF_carried/dq with the ring
+    deformation following the loads), ``jacobian_offsets`` (∂T/∂off of the offset map T at fixed q, whose
+    spectral radius is the contraction factor of a fixed point at fixed q) and ``forces`` (the carried load).
+
+    K = K_A + Σ_j (∂G_j/∂A_j) (d off_j/dq),  d off/dq = (I − ∂T/∂off)⁻¹ ∂T/∂q,
+    where K_A is the kernel's analytic stiffness at fixed offsets, G_j the load ball j carries and A_j its
+    groove-centre separation (the offsets add to A_j).  Each ball depends on its own A_j only, so central
+    differences perturbing A₁ (then A₂) of all balls at once (step ``step`` [m]) give every per-ball
+    derivative from four kernel evaluations."""
+    rows0 = bearing.row_vectors() if rows0 is None else rows0
+    off = np.asarray(offsets, dtype=float)
+    nb = off.shape[0]
+    qv = np.asarray(q, dtype=float)
+    omega = abs(float(speed))
+    rows_e = expand_rows(rows0, off)
+    _, _, carried, _, k_a = _assemble(rows_e, qv, omega, control)
+    dfi = np.zeros((nb, 2, 2))  # [ball, (r, ξ), (A1, A2)]
+    dfo = np.zeros((nb, 2, 2))
+    dg = np.zeros((nb, 5, 2))
+    for a in range(2):
+        dp = np.zeros((nb, 2))
+        dp[:, a] = step
+        fip, fop, gp, _, _ = _assemble(expand_rows(rows0, off + dp), qv, omega, control)
+        fim, fom, gm, _, _ = _assemble(expand_rows(rows0, off - dp), qv, omega, control)
+        dfi[:, :, a] = (fip - fim) / (2 * step)
+        dfo[:, :, a] = (fop - fom) / (2 * step)
+        dg[:, :, a] = (gp - gm) / (2 * step)
+    pi, po = offset_maps(rows0, rings)
+    bdi = np.zeros((2 * nb, 2 * nb))
+    bdo = np.zeros((2 * nb, 2 * nb))
+    for j in range(nb):
+        bdi[2 * j:2 * j + 2, 2 * j:2 * j + 2] = dfi[j]
+        bdo[2 * j:2 * j + 2, 2 * j:2 * j + 2] = dfo[j]
+    t_off = pi @ bdi - po @ bdo
+    ta = _groove_gradients(rows_e, qv)  # [ball, (A1, A2), q]
+    t_q = pi @ np.matmul(dfi, ta).reshape(2 * nb, 5) - po @ np.matmul(dfo, ta).reshape(2 * nb, 5)
+    doff_dq = np.linalg.solve(np.eye(2 * nb) - t_off, t_q).reshape(nb, 2, 5)
+    k = k_a + np.matmul(dg, doff_dq).sum(axis=0)
+    return {"stiffness": k, "jacobian_offsets": t_off, "jacobian_q": t_q, "load_offsets": dg, "stiffness_fixed": k_a,
+            "forces": carried.sum(axis=0)}
+
+
+def stiffness(bearing, q, speed: float, control: str, rings: ElasticRings, offsets, rows0=None) -> np.ndarray:
+    """K [N/m, N/rad, N·m/m, N·m/rad] with the ring deformation following the loads (:func:`linearisation`)."""
+    return linearisation(bearing, q, speed, control, rings, offsets, rows0=rows0)["stiffness"]
+
+
 def forces_at(bearing, q, speed: float, control: str, rings: ElasticRings, offsets=None, tol: float = 1e-12,
-              maxit: int = 50):
-    """Ring forces (−carried load) float[5] at the prescribed inner-ring displacement q, the offsets iterated to
-    ``tol`` at that q → (forces, offsets, iterations, last change [m])."""
+              maxit: int = 30):
+    """Load carried by the bearing float[5] [N, N·m] at the prescribed inner-ring displacement q with the offsets
+    solved to ``tol`` [m] at that q → (load, offsets, iterations, last change [m]); NaN load when no consistent
+    ring state was found.  Newton's method on g(off) = T(off) − off with ∂T/∂off of :func:`linearisation`
+    (a plain fixed point at fixed q contracts only while ring compliance × contact stiffness < 1)."""
     rows0 = bearing.row_vectors()
     nb = int(rows0[:, kn.P_Z].sum())
     off = np.zeros((nb, 2)) if offsets is None else np.array(offsets, dtype=float)
     qv = np.asarray(q, dtype=float)
-    res = np.zeros(5)
+    maps = offset_maps(rows0, rings)
     change = math.inf
+    carried = np.zeros((nb, 5))
+    it = 0
     for it in range(1, maxit + 1):
-        rows_e = expand_rows(rows0, off)
-        lam = np.full((nb, 1), 1 if control == "inner" else 0, dtype=np.int64)
-        xb = np.zeros((nb, 1, 2))
-        kmat = np.zeros((5, 5))
-        ballout = np.zeros((nb, 1, 12))
-        kn.ring_assemble(rows_e, qv, abs(float(speed)), jh.CONTROLS[control], lam, xb, np.zeros(5), res, kmat,
-                         ballout, jh.TOL_BALL, jh.MAXIT_BALL)
-        new = offsets_from_forces(rows0, rings, *ring_forces(ballout, lam))
-        change = float(np.max(np.abs(new - off))) if nb else 0.0
-        off = new
-        if change <= tol:
+        fi, fo, carried, _, _ = _assemble(expand_rows(rows0, off), qv, abs(float(speed)), control)
+        g = offsets_from_forces(rows0, rings, fi, fo, maps) - off
+        change = float(np.max(np.abs(g))) if nb else 0.0
+        if change <= tol or not np.isfinite(change):
             break
-    return res.copy(), off, it, change
+        jac = linearisation(bearing, qv, speed, control, rings, off)["jacobian_offsets"]
+        off = off + np.linalg.solve(np.eye(2 * nb) - jac, g.ravel()).reshape(nb, 2)
+    load = carried.sum(axis=0) if change <= tol else np.full(5, np.nan)
+    return load, off, it, change
 
 
-def stiffness(bearing, q, speed: float, control: str, rings: ElasticRings, offsets, tol: float = 1e-13,
-              step: float = 1e-9) -> np.ndarray:
-    """K = −∂F/∂q [N/m, N/rad, N·m/m, N·m/rad] with the ring deformation following the loads: central
-    differences of :func:`forces_at` (step ``step`` [m] for translations, step/(d_m/2) for tilts)."""
-    dm = float(bearing.row_vectors()[0, kn.P_DM])
-    k = np.zeros((5, 5))
-    for c in range(5):
-        h = step if c < 3 else step / (0.5 * dm)
-        qp = np.array(q, dtype=float)
-        qm = qp.copy()
-        qp[c] += h
-        qm[c] -= h
-        fp = forces_at(bearing, qp, speed, control, rings, offsets, tol)[0]
-        fm = forces_at(bearing, qm, speed, control, rings, offsets, tol)[0]
-        k[:, c] = -(fp - fm) / (2.0 * h)
-    return k
+def _newton_matrix(bearing, q, speed, control, rings, off, rows0):
+    """I − J of the load-controlled fixed point off = T(q(off), off), J = ∂T/∂off − ∂T/∂q K_A⁻¹ D (D the
+    per-ball ∂G_j/∂A_j: a change of offsets moves the equilibrium q by −K_A⁻¹ D Δoff), from
+    :func:`linearisation`; None when K_A is singular."""
+    lin = linearisation(bearing, q, speed, control, rings, off, rows0=rows0)
+    nb = off.shape[0]
+    d = np.transpose(lin["load_offsets"], (1, 0, 2)).reshape(5, 2 * nb)
+    try:
+        dq = -np.linalg.solve(lin["stiffness_fixed"], d)
+    except np.linalg.LinAlgError:
+        return None
+    m = np.eye(2 * nb) - (lin["jacobian_offsets"] + lin["jacobian_q"] @ dq)
+    return m if np.all(np.isfinite(m)) else None
+
+
+def _newton_update(matrix, off, new):
+    """off + (I − J)⁻¹ (T(off) − off); the plain fixed-point step ``new`` without a usable matrix."""
+    if matrix is None:
+        return new
+    try:
+        step = np.linalg.solve(matrix, (new - off).ravel())
+    except np.linalg.LinAlgError:
+        return new
+    return off + step.reshape(off.shape) if np.all(np.isfinite(step)) else new
 
 
 def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control: str = "outer",
@@ -212,7 +315,8 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
             return res
         rings = ring_model(bearing)
     jh._check_bearing(bearing)
-    _check_rings(bearing, rings)
+    rows0 = bearing.row_vectors()
+    _check_rings(bearing, rings, rows0)
     if loads is None:
         loads = jh.Loads()
     elif not isinstance(loads, jh.Loads):
@@ -221,33 +325,43 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
     speed = jh._number(speed, "speed")
     if not (tol > 0 and math.isfinite(tol)):
         raise InputError("tol", f"must be a positive length, got {tol!r}", "e.g. 1e-12 m")
-    rows0 = bearing.row_vectors()
     nb = int(rows0[:, kn.P_Z].sum())
     la = loads.as_array()
     omega = float(abs(speed))
     scale = jh._scale(loads, rows0)
-    if initial is not None:
-        q = jh._check_initial(initial)
-    else:  # the rigid-ring equilibrium is the natural start (it is the zero-compliance limit)
-        r0 = jh.solve(bearing, loads, speed, control)
-        q = r0.displacement.copy() if r0.converged else np.array(jh.initial_guess(bearing, loads), dtype=float)
+    q = jh._check_initial(initial) if initial is not None else np.array(jh.initial_guess(bearing, loads), dtype=float)
+    # the rigid-ring equilibrium (the zero-compliance limit) is the start; jh.solve's other starts if needed
+    st0 = jh._attempt(rows0, la, omega, control, q, scale)
+    if st0[0] != 0:
+        r0 = jh.solve(bearing, loads, speed, control, initial)
+        if r0.converged:
+            st0 = jh._attempt(rows0, la, omega, control, r0.displacement, scale)
+    q = st0[1].copy()
+    maps = offset_maps(rows0, rings)
     off = np.zeros((nb, 2))
     change = math.inf
-    state = None
-    its_total = 0
+    its_total = st0[2]
     it = 0
-    for it in range(1, maxit + 1):
-        rows_e = expand_rows(rows0, off)
-        state = jh._attempt(rows_e, la, omega, control, q, scale)
+    state = st0
+    newton = None
+    if st0[0] == 0:
+        # fixed point: kernel solves (warm q) with the current offsets until the offsets stop changing; the
+        # last one is then re-done with the independent check of jh._attempt
+        for it in range(1, maxit + 1):
+            rows_e = expand_rows(rows0, off)
+            status, its, rn, bconv, lam, xb, kmat, ballout = jh._solve_kernel(rows_e, la, omega, control, q, scale)
+            its_total += its
+            if status != 0 or not bconv:
+                break
+            new = offsets_from_forces(rows0, rings, *ring_forces(ballout, lam), maps)
+            change = float(np.max(np.abs(new - off))) if nb else 0.0
+            if change <= tol:
+                break  # the offsets used are consistent with this solution's ball forces to tol
+            if newton is None:  # the Jacobian of the first iterate is kept (chord method: the offsets are small)
+                newton = _newton_matrix(bearing, q, speed, control, rings, off, rows0)
+            off = _newton_update(newton, off, new)
+        state = jh._attempt(expand_rows(rows0, off), la, omega, control, q, scale)
         its_total += state[2]
-        if state[0] != 0:
-            break
-        q = state[1]
-        new = offsets_from_forces(rows0, rings, *ring_forces(state[7], state[4]))
-        change = float(np.max(np.abs(new - off))) if nb else 0.0
-        if change <= tol:
-            break  # the offsets used are consistent with the solution's ball forces to tol
-        off = new
     status, q, its, rn, lam, xb, kmat, ballout = state
     rows_e = expand_rows(rows0, off)
     ring_ok = change <= tol
@@ -258,7 +372,10 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
         text = f"ring deformation not converged: offset change {change:.3g} m after {it} iterations (tol {tol:.3g})"
     else:
         text = jh.STATUS.get(status, f"status {status}")
-    kel = stiffness(bearing, q, speed, control, rings, off, min(tol, 1e-13)) if converged else kmat.copy()
+    kel = stiffness(bearing, q, speed, control, rings, off, rows0) if converged else kmat.copy()
+    if converged and not np.all(np.isfinite(kel)):
+        converged = False
+        text = "stiffness with elastic rings failed: no consistent ring state next to the solution"
     balls = jh.ball_table(rows_e, ballout, xb, lam, float(speed))
     zs = rows0[:, kn.P_Z].astype(int)
     balls["row"] = np.repeat(np.arange(rows0.shape[0]), zs)

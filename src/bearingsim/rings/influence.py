@@ -51,7 +51,7 @@ from ..errors import InputError
 from .section import RingSection
 
 #: bump when the computation changes (invalidates every cached file)
-CACHE_VERSION = 1
+CACHE_VERSION = 2
 CACHE_ENV = "BEARINGSIM_RING_CACHE"
 
 
@@ -147,7 +147,8 @@ def cache_key(section: RingSection, youngs_modulus: float, poisson_ratio: float,
 
 def compute_influence(section: RingSection, youngs_modulus: float, poisson_ratio: float, ball_count: int,
                       settings: InfluenceSettings | None = None, cache: bool = True) -> RingInfluence:
-    """Influence coefficients of ``section`` (a ring on a rigid seat, axially held at its loaded face) for
+    """Influence coefficients of ``section`` (a ring on a rigid seat, or bonded to its seat sleeve whose far
+    surface follows the shaft's/housing's rigid motion and is otherwise free; axially held at the loaded face) for
     ``ball_count`` balls (see the module docstring); read from / written to the disk cache when ``cache``."""
     from .axisymmetric import HarmonicRing
     from .section import mesh_section
@@ -168,7 +169,10 @@ def compute_influence(section: RingSection, youngs_modulus: float, poisson_ratio
     t0 = time.perf_counter()
     mesh = mesh_section(section, st["h_contact"], st["n_through"], st["n_axial"])
     face = "face_minus" if section.support_face_z < 0 else "face_plus"
-    ring = HarmonicRing(mesh, youngs_modulus, poisson_ratio, radial_fixed=("seat",), axial_fixed=(face,))
+    # a rigid seat holds every harmonic; the far surface of a seat sleeve (a hollow shaft's bore, a housing's
+    # outside) only follows the rigid translation and tilt of the shaft/housing (harmonic 1)
+    ring = HarmonicRing(mesh, youngs_modulus, poisson_ratio, radial_fixed=("seat",), axial_fixed=(face,),
+                        radial_harmonics=None if section.sleeve_radius is None else (1,))
     p = section.contact_point
     nin = section.inward_normal
     tan = np.array([-nin[1], nin[0]])
