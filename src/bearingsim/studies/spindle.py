@@ -5,7 +5,10 @@ Reproduces tables T1–T3 and Fig. 5 of [S0] with our models:
 * "with inertia": the Jones–Harris model of :mod:`bearingsim.statics.jones_harris`
   (seed section 2.2), K_xx of the 5×5 stiffness, outer-raceway control;
 * Palmgren: :func:`bearingsim.statics.axial.palmgren_axial_stiffness` with the free contact
-  angle α₀ and with the loaded contact angle of the thrust model.
+  angle α₀ and with the loaded contact angle of the thrust model;
+* with ``rings="fe"``: the Jones–Harris model with elastic rings (:mod:`bearingsim.rings.coupling`: ring
+  cross-sections estimated from the boundary dimensions, seat sleeves, influence coefficients by harmonic FE)
+  at n = 0, next to the paper's FEM column of T3.
 
 The paper's values are read from ``bearingsim/data/seed000.toml``.
 """
@@ -46,6 +49,10 @@ class SpindleStudy:
     fig: np.ndarray  #: Jones–Harris Ca over fig speeds, (speed, load) [N/m]
     converged: bool
     seed: dict
+    #: Jones–Harris with elastic (FE) rings at n = 0 [N/m], None for rigid rings only
+    t3_fe_rings: np.ndarray | None = None
+    #: the ring model's description (:attr:`bearingsim.rings.coupling.ElasticRings.description`)
+    rings_description: dict | None = None
 
     def deviations(self) -> dict:
         """Relative deviations of ours from the paper (ours/seed − 1) for T1 and T2."""
@@ -75,6 +82,18 @@ class SpindleStudy:
                        f"{s['T3']['palmgren'][i]:.1f}", f"{dev['T3_palmgren_loaded'][i]:+.1%}",
                        f"{s['T3']['fem'][i]:.1f}")
         console.print(t1)
+        if self.t3_fe_rings is not None:
+            t3 = Table(title="T3: axial stiffness at n = 0 with elastic rings [N/µm]: ours rigid | ours FE rings | "
+                             "[S0] FEM")
+            for c in ("Fa [N]", "rigid rings", "FE rings", "FE/rigid", "seed FEM", "seed FEM/seed no inertia",
+                      "ours FE/seed FEM"):
+                t3.add_column(c, justify="right")
+            for i, fa in enumerate(self.loads):
+                fem = s["T3"]["fem"][i]
+                t3.add_row(f"{fa:.0f}", f"{self.t1_with[i] / 1e6:.1f}", f"{self.t3_fe_rings[i] / 1e6:.1f}",
+                           f"{self.t3_fe_rings[i] / self.t1_with[i]:.3f}", f"{fem:.1f}",
+                           f"{fem / s['T1']['without_inertia'][i]:.3f}", f"{self.t3_fe_rings[i] / 1e6 / fem - 1:+.1%}")
+            console.print(t3)
         t2 = Table(title="T2: axial stiffness with inertia [N/µm]: ours (seed) deviation")
         t2.add_column("n [rpm]", justify="right")
         for fa in self.loads:
@@ -97,6 +116,8 @@ class SpindleStudy:
                 w.writerow(["T3", "palmgren_loaded_angle", 0, fa, self.palmgren_loaded[i] / 1e6,
                             s["T3"]["palmgren"][i]])
                 w.writerow(["T3", "palmgren_free_angle", 0, fa, self.palmgren_free[i] / 1e6, s["T3"]["palmgren"][i]])
+                if self.t3_fe_rings is not None:
+                    w.writerow(["T3", "fe_rings", 0, fa, self.t3_fe_rings[i] / 1e6, s["T3"]["fem"][i]])
             for k, n in enumerate(self.t2_speeds_rpm):
                 for i, fa in enumerate(self.loads):
                     w.writerow(["T2", "with_inertia", n, fa, self.t2[k, i] / 1e6, s["T2"]["stiffness"][k][i]])
@@ -130,8 +151,13 @@ class SpindleStudy:
         return path
 
 
-def run_study(bearing, fig_points: int = 57) -> SpindleStudy:
-    """Compute T1–T3 and Fig. 5 for ``bearing`` (default: the paper's 7011, estimated ball set)."""
+def run_study(bearing, fig_points: int = 57, rings: str = "rigid") -> SpindleStudy:
+    """Compute T1–T3 and Fig. 5 for ``bearing`` (default: the paper's 7011, estimated ball set); ``rings="fe"``
+    adds the axial stiffness with elastic rings at n = 0 (T3, next to the paper's FEM column)."""
+    from ..errors import InputError
+
+    if rings not in ("rigid", "fe"):
+        raise InputError("rings", f"unknown ring model {rings!r}", "use rigid or fe")
     seed = seed_tables()
     loads = np.array(seed["loads_N"], dtype=float)
     t1_without = np.empty(len(loads))
@@ -161,7 +187,19 @@ def run_study(bearing, fig_points: int = 57) -> SpindleStudy:
                 out[k, i] = r.axial_stiffness
         return out
 
+    t3_fe = desc = None
+    if rings == "fe":
+        from ..rings.coupling import ring_model
+        from ..rings.coupling import solve as solve_fe
+
+        model = ring_model(bearing)
+        desc = model.description
+        t3_fe = np.empty(len(loads))
+        for i, fa in enumerate(loads):
+            r = solve_fe(bearing, Loads(fa=fa), rings=model)
+            ok &= r.converged
+            t3_fe[i] = r.axial_stiffness
     t2_speeds = np.array(seed["T2"]["speeds_rpm"], dtype=float)
     fig_speeds = np.linspace(0.0, 11200.0, fig_points)
     return SpindleStudy(bearing, loads, t1_without, t1_with, t2_speeds, speed_sweep(t2_speeds), p_free, p_loaded,
-                        fig_speeds, speed_sweep(fig_speeds), bool(ok), seed)
+                        fig_speeds, speed_sweep(fig_speeds), bool(ok), seed, t3_fe, desc)
