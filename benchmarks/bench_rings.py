@@ -1,0 +1,91 @@
+"""Benchmark of the elastic-ring model (issue 16 item 5).
+
+(a) Influence coefficients of the SKF 7011 CDGA/HC rings (inner and outer, default settings): first computation
+    (an empty cache folder) and the cached read.  Target: ≤ 30 s per ring the first time.
+(b) A static solve with FE rings (coefficients cached) against the rigid-ring solve, same loads, alternating
+    (the shared machine's load varies), median of ``--repeat`` runs each.  Target: ≤ 10× the rigid solve.
+(c) A small map (10 loads × 5 speeds up to 10,000 rpm) with FE rings: the coefficients are read from the cache
+    once and reused for every point.
+
+Usage:  python benchmarks/bench_rings.py [--repeat 30] [--skip-first]
+The numba compilation is excluded (one warm-up solve each).  CPU seconds (process time) are printed next to
+the wall seconds: the steadier figure on a shared machine.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import tempfile
+import time
+
+import numpy as np
+
+
+def timed(fn):
+    t0, c0 = time.perf_counter(), time.process_time()
+    out = fn()
+    return out, time.perf_counter() - t0, time.process_time() - c0
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=30)
+    ap.add_argument("--skip-first", action="store_true", help="skip (a)'s first computation (use the user cache)")
+    args = ap.parse_args()
+
+    from bearingsim.io import load_bearing
+    from bearingsim.rings import influence as inf
+    from bearingsim.rings.coupling import ring_model, solve as solve_fe
+    from bearingsim.rings.section import estimate_sections
+    from bearingsim.statics.jones_harris import Loads, solve
+
+    b = load_bearing("skf-7011-cdga-hc")
+    inner, outer = estimate_sections(b)
+    tmp = None
+    if not args.skip_first:
+        tmp = tempfile.TemporaryDirectory()
+        os.environ[inf.CACHE_ENV] = tmp.name
+        for sec in (inner, outer):
+            r, wall, cpu = timed(lambda sec=sec: inf.compute_influence(
+                sec, b.ring_material.youngs_modulus, b.ring_material.poisson_ratio, b.ball_count))
+            print(f"(a) {sec.kind} ring coefficients, first time: {wall:6.1f} s wall, {cpu:6.1f} s CPU "
+                  f"({r.harmonics} harmonics, {r.meta['harmonics_solved']} solved, {r.meta['dofs']} dofs)")
+    rings, wall, cpu = timed(lambda: ring_model(b))
+    print(f"(a) both rings from the cache: {1e3 * wall:.1f} ms wall")
+
+    cases = {"Fa 1 kN": Loads(fa=1000.0), "Fa 5 kN": Loads(fa=5000.0),
+             "Fa 2 kN + Fr 1.5 kN + M 20 N·m": Loads(fa=2000.0, fr_y=1500.0, m_z=20.0)}
+    for name, loads in cases.items():
+        solve(b, loads)
+        solve_fe(b, loads, rings=rings)
+        tr, tf = [], []
+        for _ in range(args.repeat):  # alternating
+            tr.append(timed(lambda: solve(b, loads))[2])
+            tf.append(timed(lambda: solve_fe(b, loads, rings=rings))[2])
+        r0 = solve(b, loads)
+        r1 = solve_fe(b, loads, rings=rings)
+        ratio = np.median(tf) / np.median(tr)
+        print(f"(b) {name:32s} rigid {1e3 * np.median(tr):6.2f} ms CPU, FE rings {1e3 * np.median(tf):6.2f} ms CPU, "
+              f"ratio {ratio:5.1f}  (K_xx {r0.axial_stiffness / 1e6:6.1f} → {r1.axial_stiffness / 1e6:6.1f} N/µm, "
+              f"{r1.ring_iterations} ring iterations)")
+
+    def fe_map():
+        model = ring_model(b)  # read from the cache once, reused for every point
+        return [solve_fe(b, Loads(fa=fa), n * np.pi / 30.0, rings=model).axial_stiffness
+                for fa in np.linspace(500.0, 5000.0, 10) for n in np.linspace(0.0, 10000.0, 5)]
+
+    def rigid_map():
+        return [solve(b, Loads(fa=fa), n * np.pi / 30.0).axial_stiffness
+                for fa in np.linspace(500.0, 5000.0, 10) for n in np.linspace(0.0, 10000.0, 5)]
+
+    _, wr, cr = timed(rigid_map)
+    _, wf, cf = timed(fe_map)
+    print(f"(c) map 10 loads × 5 speeds: rigid {cr:.2f} s CPU, FE rings (coefficients read from the cache once) "
+          f"{cf:.2f} s CPU, ratio {cf / cr:.1f}")
+    if tmp is not None:
+        tmp.cleanup()
+
+
+if __name__ == "__main__":
+    main()
