@@ -168,6 +168,12 @@ def test_study_in_a_folder_resumes_from_finished_cells(tmp_path, standin, monkey
     assert again.to_dict()["cells"][0]["wh_deg"] == first.to_dict()["cells"][0]["wh_deg"]
     with pytest.raises(AssertionError, match="run again"):
         hd.run_study(CASE, out_dir=tmp_path, **(FAST | {"cycles": 3}))
+    # finished_only: the finished cells of a larger grid, nothing run, the others named
+    part = hd.run_study(CASE, out_dir=tmp_path, **(FAST | {"speeds_kmh": (100.0, 50.0)}), finished_only=True)
+    assert [(c.speed_kmh, c.frequency_hz) for c in part.cells] == [(100.0, 2000.0)]
+    assert "not run yet: 50 km/h 2000 Hz" in part.notes
+    with pytest.raises(InputError, match="no finished cell"):
+        hd.run_study(CASE, out_dir=tmp_path, **(FAST | {"cycles": 3}), finished_only=True)
 
 
 def test_study_json_fields(standin, fast_cell):

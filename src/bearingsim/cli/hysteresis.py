@@ -44,6 +44,8 @@ def reproduce_hub_hysteresis(
                                             help="Dask scheduler address tcp://host:port (one task per cell)"),
     worker_timeout: float = typer.Option(600.0, "--worker-timeout",
                                          help="with --scheduler: fail after this many seconds without workers"),
+    finished_only: bool = typer.Option(False, "--finished-only",
+                                       help="run nothing: analyse and report the cells already finished in --out"),
     json_out: bool = typer.Option(False, "--json", help="print the cells as JSON (SI except the *_deg fields)"),
     report: Optional[Path] = typer.Option(None, "--report", help="write an HTML report (report.html + figures) here"),
     out: HysteresisOut = Path("out"),
@@ -70,7 +72,8 @@ def reproduce_hub_hysteresis(
     announce_compilation()
     with writing("--out", out):
         study = run_study(case, v, f, cycles, startup, traction, out_dir=out, workers=workers, scheduler=scheduler,
-                          worker_timeout=worker_timeout, progress=not json_out, console=err)
+                          worker_timeout=worker_timeout, progress=not json_out, console=err,
+                          finished_only=finished_only)
     csv, png = write_study(study, out, "hub_hysteresis.csv", "hub_hysteresis_loops.png")
     data = study.to_dict()
     with atomic_output(out / "hub_hysteresis.json", "--out") as tmp:

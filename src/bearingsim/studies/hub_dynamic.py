@@ -508,7 +508,7 @@ def _warm_up(case) -> None:
 def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: int = 8,
               startup: int = STARTUP_CYCLES, traction: str | None = None, level: float = LEVEL, out_dir=None,
               workers: int | None = None, scheduler=None, worker_timeout: float = 600.0, progress: bool = False,
-              console=None, reduced: bool = True, on_cell=None) -> HysteresisStudy:
+              console=None, reduced: bool = True, on_cell=None, finished_only: bool = False) -> HysteresisStudy:
     """Run the hub case on the grid speeds [km/h] × frequencies [Hz] for ``startup + cycles`` load cycles each
     and analyse every cell (module docstring).
 
@@ -516,7 +516,8 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
     everything in memory.  ``workers``: local processes (default: one per cell up to the cores; 1 = this
     process); ``scheduler``: a Dask scheduler address or ``distributed.Client`` (one task per cell; overrides
     ``workers``).  ``progress``: a cell progress bar on ``console``.  ``on_cell(record)`` is called in this
-    process as each cell finishes (after it is stored).
+    process as each cell finishes (after it is stored).  ``finished_only``: run nothing; analyse the cells of
+    the grid already finished in ``out_dir`` (the others are named in the notes) — a report of a long grid so far.
     """
     from ..io import read_toml
     from ..sweep import _close, _connect, _QuietDistributed, run_tasks_locally, run_tasks_on_cluster
@@ -539,6 +540,16 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
                 records[vf] = rec
     todo = [vf for vf in grid if vf not in records]
     notes = []
+    if finished_only:
+        if folder is None:
+            raise InputError("--finished-only", "needs the folder of an earlier run", "give --out FOLDER")
+        if not records:
+            raise InputError("--finished-only", f"no finished cell of this grid in {folder}",
+                             "run the study first (same case, --cycles, --startup-cycles, --traction)")
+        if todo:
+            notes.append("not run yet: " + ", ".join(f"{v:g} km/h {f:g} Hz" for v, f in todo))
+        grid = [vf for vf in grid if vf in records]
+        todo = []
     if records:
         notes.append(f"{len(records)} of {len(grid)} cells taken from the earlier run in {folder}")
     t0 = time.perf_counter()
