@@ -190,17 +190,10 @@ def _graded(a: float, b: float, focus: float, h_min: float, n: int) -> np.ndarra
     return np.unique(np.round(np.array(pts, dtype=float), 15))
 
 
-def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_axial: int = 16, n_sleeve: int = 6):
-    """Structured quadrilateral mesh (skfem ``MeshQuad``) of ``section`` (and its seat sleeve) in (r, z) [m].
-
-    Nodes: axial positions graded from ``h_contact`` at the contact point (and including the groove edges) to
-    about B/n_axial; through the wall ``n_through`` layers graded from ``h_contact`` at the raceway; the sleeve
-    (if any) ``n_sleeve`` layers growing away from the seat.  Each axial line of nodes runs straight from the
-    seat to the raceway surface (the surface is followed at the nodes).  Boundaries named ``seat`` (the
-    rigidly held surface: the sleeve's far radius, or the ring's seat without a sleeve), ``raceway``,
-    ``face_minus``, ``face_plus``."""
-    from skfem import MeshQuad
-
+def section_grid(section: RingSection, h_contact: float, n_through: int = 8, n_axial: int = 16,
+                 n_sleeve: int = 6):
+    """The structured grid of :func:`mesh_section`: (t values, z values [m], r(t, z) [m]) with t ∈ [0, 1] from the
+    seat to the raceway in the ring and t ∈ [−1, 0) in the seat sleeve (if any)."""
     hw = section.half_width
     zc = float(section.contact_point[1])
     zs = _graded(-hw, hw, zc, h_contact, n_axial)
@@ -226,13 +219,33 @@ def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_a
         ts = -np.cumsum(steps[::-1])[::-1] / w  # in [−1, 0)
         ts[0] = -1.0
         t = np.concatenate([ts, t])
+    far = section.sleeve_radius if section.sleeve_radius is not None else section.seat_radius
+
+    def radius(tt, zz):
+        rsurf = section.surface_radius(zz)
+        return np.where(tt >= 0, section.seat_radius + tt * (rsurf - section.seat_radius),
+                        section.seat_radius - tt * (far - section.seat_radius))
+
+    return t, zs, radius
+
+
+def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_axial: int = 16, n_sleeve: int = 6):
+    """Structured quadrilateral mesh (skfem ``MeshQuad``) of ``section`` (and its seat sleeve) in (r, z) [m].
+
+    Nodes: axial positions graded from ``h_contact`` at the contact point (and including the groove edges) to
+    about B/n_axial; through the wall ``n_through`` layers graded from ``h_contact`` at the raceway; the sleeve
+    (if any) ``n_sleeve`` layers growing away from the seat.  Each axial line of nodes runs straight from the
+    seat to the raceway surface (the surface is followed at the nodes).  Boundaries named ``seat`` (the
+    rigidly held surface: the sleeve's far radius, or the ring's seat without a sleeve), ``raceway``,
+    ``face_minus``, ``face_plus``."""
+    from skfem import MeshQuad
+
+    t, zs, radius = section_grid(section, h_contact, n_through, n_axial, n_sleeve)
+    hw = section.half_width
+    far = section.sleeve_radius if section.sleeve_radius is not None else section.seat_radius
     mesh = MeshQuad.init_tensor(t, zs)
     tt, zz = mesh.p
-    rsurf = section.surface_radius(zz)
-    far = section.sleeve_radius if section.sleeve_radius is not None else section.seat_radius
-    rr = np.where(tt >= 0, section.seat_radius + tt * (rsurf - section.seat_radius),
-                  section.seat_radius - tt * (far - section.seat_radius))
-    mesh = MeshQuad(np.vstack([rr, zz]), mesh.t)
+    mesh = MeshQuad(np.vstack([radius(tt, zz), zz]), mesh.t)
     tol = 1e-9 * hw
     return mesh.with_boundaries({
         "seat": lambda x: np.abs(x[0] - far) < tol,
