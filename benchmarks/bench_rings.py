@@ -7,7 +7,13 @@
 (c) A small map (10 loads × 5 speeds up to 10,000 rpm) with FE rings: the coefficients are read from the cache
     once and reused for every point.
 
-Usage:  python benchmarks/bench_rings.py [--repeat 30] [--skip-first]
+(d) With ``--solid3d``: the harmonic ring model against the 3-D quarter-ring reference
+    (:class:`bearingsim.rings.solid3d.QuarterRing3D`, quadratic hexahedra) for both 7011 rings under four equal
+    ball loads of 1 kN along the contact normal (θ = 0, 90, 180, 270°; spread σ = 1.2 mm, σ_θ = 0.2 rad), same
+    section grid: (u_r, u_z) at the contact point and at depths 1.8 and 3.6 mm below it, under a ball (θ = 0) and
+    between two (θ = 45°).  Issue 16: ≤ 2 %.  Minutes (not in CI).
+
+Usage:  python benchmarks/bench_rings.py [--repeat 30] [--skip-first] [--solid3d] [--n-theta 8]
 The numba compilation is excluded (one warm-up solve each).  CPU seconds (process time) are printed next to
 the wall seconds: the steadier figure on a shared machine.
 """
@@ -32,7 +38,12 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=30)
     ap.add_argument("--skip-first", action="store_true", help="skip (a)'s first computation (use the user cache)")
+    ap.add_argument("--solid3d", action="store_true", help="only (d): harmonic model vs the 3-D reference")
+    ap.add_argument("--n-theta", type=int, default=8, help="(d): hexahedra over the quarter circumference")
     args = ap.parse_args()
+    if args.solid3d:
+        solid3d(args.n_theta)
+        return
 
     from bearingsim.io import load_bearing
     from bearingsim.rings import influence as inf
@@ -85,6 +96,57 @@ def main() -> None:
           f"{cf:.2f} s CPU, ratio {cf / cr:.1f}")
     if tmp is not None:
         tmp.cleanup()
+
+
+def solid3d(n_theta: int) -> None:
+    """(d) of the module docstring."""
+    import math
+
+    from bearingsim.io import load_bearing
+    from bearingsim.rings.axisymmetric import HarmonicRing
+    from bearingsim.rings.section import estimate_sections, mesh_section
+    from bearingsim.rings.solid3d import QuarterRing3D
+
+    b = load_bearing("skf-7011-cdga-hc")
+    e, nu = b.ring_material.youngs_modulus, b.ring_material.poisson_ratio
+    sig, sig_t, h, force = 1.2e-3, 0.2, 0.6e-3, 1000.0
+    worst = 0.0
+    for sec in estimate_sections(b):
+        p, nin = sec.contact_point, sec.inward_normal
+        pts = np.column_stack([p, p + 1.5 * sig * nin, p + 3.0 * sig * nin])
+        (s3, x), wall, cpu = timed(lambda sec=sec, p=p, nin=nin: _solve3d(sec, e, nu, h, n_theta, p, nin, sig, sig_t,
+                                                                         force))
+        face = "face_minus" if sec.support_face_z < 0 else "face_plus"
+        ring = HarmonicRing(mesh_section(sec, h, 5, 10), e, nu, radial_fixed=("seat",), axial_fixed=(face,),
+                            radial_harmonics=(1,))
+        fl = ring.point_load("raceway", p, -nin, sig)
+        probe = ring.probe(pts)
+        for th in (0.0, math.pi / 4):
+            uh = np.zeros((2, 3))
+            for n in range(0, 200, 4):  # four balls 90° apart: harmonics 0, 4, 8, …
+                gh = math.exp(-0.5 * (n * sig_t) ** 2)
+                if gh < 1e-10:
+                    break
+                v = probe @ ring.solve(n, force * gh * fl)
+                uh += 4.0 * math.cos(n * th) * np.vstack([v[0:3], v[3:6]])
+            u3 = s3.cylindrical(x, pts, th)
+            dev = (u3 - uh) / np.abs(uh).max()
+            worst = max(worst, float(np.abs(dev).max()))
+            print(f"(d) {sec.kind} θ = {math.degrees(th):4.0f}°  u_r [nm] 3-D {np.round(u3[0] * 1e9, 1)} harmonic "
+                  f"{np.round(uh[0] * 1e9, 1)} | u_z 3-D {np.round(u3[1] * 1e9, 1)} harmonic {np.round(uh[1] * 1e9, 1)}"
+                  f" | max dev {np.abs(dev).max():.2%}")
+        print(f"(d) {sec.kind}: 3-D {s3.dofs} unknowns, {wall:.0f} s wall, {cpu:.0f} s CPU")
+    print(f"(d) largest deviation of the harmonic model from the 3-D reference: {worst:.2%} (issue 16: ≤ 2 %)")
+
+
+def _solve3d(sec, e, nu, h, n_theta, p, nin, sig, sig_t, force):
+    import math
+
+    from bearingsim.rings.solid3d import QuarterRing3D
+
+    s3 = QuarterRing3D(sec, e, nu, h, n_theta=n_theta, n_through=5, n_axial=10)
+    f = s3.ball_load_vector(p, -nin, sig, sig_t, (-math.pi / 2, 0.0, math.pi / 2, math.pi), force=force)
+    return s3, s3.solve(f)
 
 
 if __name__ == "__main__":

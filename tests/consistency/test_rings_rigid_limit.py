@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 from bearingsim.io import load_bearing
-from bearingsim.rings.coupling import forces_at, ring_model, solve
+from bearingsim.rings.coupling import forces_at, result_dict, ring_model, solve
 from bearingsim.rings.influence import InfluenceSettings
 from bearingsim.statics import jones_harris as jh
 from bearingsim.statics.arrangements import make_system
@@ -91,4 +91,8 @@ def test_steel_rings_equilibrium(b7011, steel_rings, loads):
     np.testing.assert_allclose(off, el.ring_offsets, rtol=0, atol=1e-11)
     rigid = jh.solve(b7011, loads)
     assert np.max(np.abs(el.ring_offsets)) > 1e-8  # tens of nm: the rings deform
+    d = result_dict(el)  # the JSON names the ring model
+    assert d["rings"]["model"] == "fe" and d["rings"]["iterations"] == el.ring_iterations
+    assert d["rings"]["max_axial_offset_m"] == pytest.approx(np.max(np.abs(el.ring_offsets[:, 0])))
+    assert result_dict(solve(b7011, loads, rings="rigid"))["rings"] == {"model": "rigid"}
     assert not np.allclose(el.displacement, rigid.displacement, rtol=1e-4, atol=0)

@@ -395,15 +395,17 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
 
 
 def result_dict(res) -> dict:
-    """``res.to_dict()`` plus the ring model: ``rings`` = {model, iterations, residual_m, max_offset_m, ...}."""
-    d = res.to_dict() if getattr(res, "ring_model", "rigid") == "rigid" or res.rows is None else res.to_dict()
+    """``res.to_dict()`` (the ``static --json`` schema) plus ``rings``: the ring model ("rigid" or "fe") and, for
+    FE rings, the offset iterations, the last offset change [m], the largest offsets [m] and the model's
+    description (sections' assumptions, material, cache keys)."""
+    d = res.to_dict()
     model = getattr(res, "ring_model", "rigid")
     info = {"model": model}
     if model == "fe":
         off = res.ring_offsets
         info.update({"iterations": int(res.ring_iterations), "residual_m": float(res.ring_residual),
-                     "max_radial_offset_m": float(np.max(np.abs(off[:, 1]))) if len(off) else 0.0,
                      "max_axial_offset_m": float(np.max(np.abs(off[:, 0]))) if len(off) else 0.0,
+                     "max_radial_offset_m": float(np.max(np.abs(off[:, 1]))) if len(off) else 0.0,
                      "description": res.ring_description})
     d["rings"] = info
     return d
