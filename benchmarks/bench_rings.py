@@ -47,7 +47,8 @@ def main() -> None:
 
     from bearingsim.io import load_bearing
     from bearingsim.rings import influence as inf
-    from bearingsim.rings.coupling import ring_model, solve as solve_fe
+    from bearingsim.rings.coupling import ring_model
+    from bearingsim.rings.coupling import solve as solve_fe
     from bearingsim.rings.section import estimate_sections
     from bearingsim.statics.jones_harris import Loads, solve
 
@@ -105,7 +106,6 @@ def solid3d(n_theta: int) -> None:
     from bearingsim.io import load_bearing
     from bearingsim.rings.axisymmetric import HarmonicRing
     from bearingsim.rings.section import estimate_sections, mesh_section
-    from bearingsim.rings.solid3d import QuarterRing3D
 
     b = load_bearing("skf-7011-cdga-hc")
     e, nu = b.ring_material.youngs_modulus, b.ring_material.poisson_ratio
