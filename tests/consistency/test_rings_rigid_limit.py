@@ -96,3 +96,23 @@ def test_steel_rings_equilibrium(b7011, steel_rings, loads):
     assert d["rings"]["max_axial_offset_m"] == pytest.approx(np.max(np.abs(el.ring_offsets[:, 0])))
     assert result_dict(solve(b7011, loads, rings="rigid"))["rings"] == {"model": "rigid"}
     assert not np.allclose(el.displacement, rigid.displacement, rtol=1e-4, atol=0)
+
+
+@pytest.mark.parametrize(("loads", "speed", "control"), [(LOADS[1], 0.0, "outer"), (LOADS[0], 1200.0, "inner")])
+def test_stiffness_matches_central_differences(b7011, steel_rings, loads, speed, control):
+    """The linearised 5×5 stiffness with elastic rings against central differences (1 nm, 1 nm/(d_m/2)) of the
+    load recomputed at prescribed displacements with the ring offsets re-solved there (forces_at): 1e-6 of the
+    largest diagonal term (observed 5e-10 … 2e-8; the difference truncation is ~1e-7)."""
+    el = solve(b7011, loads, speed, control, rings=steel_rings)
+    assert el.converged, el.status
+    q = el.displacement
+    k = np.zeros((5, 5))
+    for c in range(5):
+        h = 1e-9 if c < 3 else 1e-9 / (0.5 * b7011.pitch_diameter)
+        qp, qm = q.copy(), q.copy()
+        qp[c] += h
+        qm[c] -= h
+        fp = forces_at(b7011, qp, speed, control, steel_rings, el.ring_offsets)[0]
+        fm = forces_at(b7011, qm, speed, control, steel_rings, el.ring_offsets)[0]
+        k[:, c] = (fp - fm) / (2 * h)
+    np.testing.assert_allclose(el.stiffness, k, rtol=0, atol=1e-6 * np.abs(np.diag(k)).max())

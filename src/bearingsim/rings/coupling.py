@@ -231,7 +231,16 @@ def linearisation(bearing, q, speed: float, control: str, rings: ElasticRings, o
         bdo[2 * j:2 * j + 2, 2 * j:2 * j + 2] = dfo[j]
     t_off = pi @ bdi - po @ bdo
     ta = _groove_gradients(rows_e, qv)  # [ball, (A1, A2), q]
-    t_q = pi @ np.matmul(dfi, ta).reshape(2 * nb, 5) - po @ np.matmul(dfo, ta).reshape(2 * nb, 5)
+    # the axial offset sits in P_AXOFF, which also moves the tilt arm of A₂: ∂A/∂off = [[1, 0], [c, 1]] with
+    # c = s (−sin ψ γ_y + cos ψ γ_z); ∂F/∂A = ∂F/∂off (∂A/∂off)⁻¹ for the q-path
+    psi = rows_e[:, kn.P_PSI0]
+    c = rows_e[:, kn.P_SIGN] * (-np.sin(psi) * qv[3] + np.cos(psi) * qv[4])
+    inv = np.zeros((nb, 2, 2))
+    inv[:, 0, 0] = 1.0
+    inv[:, 1, 1] = 1.0
+    inv[:, 1, 0] = -c
+    t_q = pi @ np.matmul(np.matmul(dfi, inv), ta).reshape(2 * nb, 5) \
+        - po @ np.matmul(np.matmul(dfo, inv), ta).reshape(2 * nb, 5)
     doff_dq = np.linalg.solve(np.eye(2 * nb) - t_off, t_q).reshape(nb, 2, 5)
     k = k_a + np.matmul(dg, doff_dq).sum(axis=0)
     return {"stiffness": k, "jacobian_offsets": t_off, "jacobian_q": t_q, "load_offsets": dg, "stiffness_fixed": k_a,
