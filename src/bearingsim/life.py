@@ -422,10 +422,10 @@ def _unit_data(bearing):
     if len(rows) > 2:
         return row_b.kind, nominal_contact_angle(row_b), 0, len(rows), row_b, \
             f"ISO 281 has no factors for a unit of {len(rows)} rows"
-    arr = getattr(bearing, "arrangement", "custom")
-    # ISO 281:2007: a pair face-to-face or back-to-back is rated as a double-row bearing; a tandem pair
-    # takes the single-row factors with the rating of the set
-    i_table = 1 if arr == "DT" else 2
+    # ISO 281:2007: a pair face-to-face or back-to-back (rows of opposite orientation) is rated as a double-row
+    # bearing; a tandem pair (same orientation) takes the single-row factors with the rating of the set
+    tandem = len(rows) == 1 or all(float(r.orientation) == float(rows[0].orientation) for r in rows)
+    i_table = 1 if tandem else 2
     return row_b.kind, nominal_contact_angle(row_b), i_table, len(rows), row_b, None
 
 
