@@ -27,7 +27,10 @@ def simulate(case: CaseArg,
              duration: Optional[str] = typer.Option(None, "--duration",
                                                     help="override the case duration, e.g. '2 ms'"),
              json_out: bool = typer.Option(False, "--json", help="print a JSON summary (SI)"),
-             quiet: bool = typer.Option(False, "--quiet", help="no progress bar")):
+             quiet: bool = typer.Option(False, "--quiet", help="no progress bar"),
+             threads: Optional[int] = typer.Option(
+                 None, "--threads", help="threads for the ball contacts (default: all cores, NUMBA_NUM_THREADS); "
+                 "the result is the same bit for bit")):
     """Run a dynamic simulation of rings, balls and cage in time."""
     import dataclasses
 
@@ -52,7 +55,7 @@ def simulate(case: CaseArg,
     announce_compilation()
     with writing("--out", out):  # a full disk while streaming: one line; the checkpoint (if any) allows --resume
         res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con,
-                      checkpoint_seconds=every)
+                      checkpoint_seconds=every, threads=threads)
     summary = dict(res.summary)
     summary["output"] = str(out)
     try:

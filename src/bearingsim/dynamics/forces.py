@@ -20,9 +20,11 @@ eccentricity of the cage beyond the land clearance.
 from __future__ import annotations
 
 import math
+import os
 
+import numba
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import layout as ly
@@ -64,9 +66,158 @@ A_PIN, A_POUT, A_PCAGE, A_PLAND, A_EPOT, A_ECAGE = range(6)
 NACC = 6
 
 
+#: work floats per ball in :func:`_one_ball` before race_contact's buffer (zero3, fb, mb, bp, g, gr, vg, tang,
+#: tmp: 3 each; res: 8)
+BALL_WORK = 35
+#: per-ball contributions: inner-ring force and moment, outer-ring force and moment (3 each), three unused, then
+#: the inner and outer power losses and the elastic energy (with diagnostics)
+NCONTRIB = 18
+
+
+@njit(cache=True)
+def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, wk, ck):
+    """Ball k on its two raceways and its Newton–Euler equations (the body of :func:`balls_on_raceways`).
+
+    ``wk``: this ball's work row (:data:`BALL_WORK` floats, then the Coulomb slice table); ``ck``
+    (:data:`NCONTRIB`, zeroed by the caller) ← its reactions on the inner ring (force, moment about c),
+    on the outer ring (force, moment), and with diagnostics its raceway power losses and elastic energy."""
+    alpha = gp[ly.G_ALPHA]
+    g0 = gp[ly.G_GX]
+    g1 = gp[ly.G_GX + 1]
+    g2 = gp[ly.G_GX + 2]
+    zero3 = wk[0:3]
+    for i in range(3):
+        zero3[i] = 0.0
+    fb = wk[3:6]
+    mb = wk[6:9]
+    bp = wk[9:12]
+    g = wk[12:15]
+    gr = wk[15:18]
+    vg = wk[18:21]
+    tang = wk[21:24]
+    tmp = wk[24:27]
+    res = wk[27:35]
+    tbuf = wk[35:]
+    fring = ck[0:3]
+    mring = ck[3:6]
+    fout = ck[6:9]
+    mout = ck[9:12]
+    r = ball_row[k]
+    par = rows[r]
+    o = ly.N_RING + ly.N_BALL * k
+    b = y[o:o + 3]
+    v = y[o + 3:o + 6]
+    w = y[o + 6:o + 9]
+    half_d = 0.5 * par[kn.P_D]
+    worb = (b[1] * v[2] - b[2] * v[1]) / (b[1] * b[1] + b[2] * b[2])
+    for i in range(3):
+        fb[i] = 0.0
+        mb[i] = 0.0
+    # ---- inner raceway: ball in the ring frame, groove centre in its meridian plane
+    for i in range(3):
+        tmp[i] = b[i] - c[i]
+    for i in range(3):
+        bp[i] = rm[0, i] * tmp[0] + rm[1, i] * tmp[1] + rm[2, i] * tmp[2]
+    rr = math.hypot(bp[1], bp[2])
+    cps = bp[1] / rr
+    sps = bp[2] / rr
+    xgi = rowx[r, ly.X_XGI]
+    ric = par[kn.P_RIC]
+    for i in range(3):
+        gr[i] = rm[i, 0] * xgi + rm[i, 1] * ric * cps + rm[i, 2] * ric * sps
+        g[i] = c[i] + gr[i]
+        tang[i] = -rm[i, 1] * sps + rm[i, 2] * cps
+    _cross(wtilt, gr, vg)
+    for i in range(3):
+        vg[i] += cd[i]
+    race_contact(b, v, w, g, vg, worb, c, cd, wring, par[kn.P_KI], par[kn.P_RI], half_d, alpha, lubs[2 * r], gp,
+                 rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang, fb, mb, fring, mring, res, tbuf)
+    qi = res[0]
+    di = res[1]
+    if want:
+        s = par[kn.P_SIGN]
+        ua = res[2] * ax[0] + res[3] * ax[1] + res[4] * ax[2]
+        urr = 0.0
+        for i in range(3):
+            urr += res[2 + i] * (rm[i, 1] * cps + rm[i, 2] * sps)
+        diag[k, ly.D_QI] = qi
+        diag[k, ly.D_DI] = di
+        diag[k, ly.D_AI] = math.atan2(-s * ua, -urr)
+        diag[k, ly.D_SRI] = res[5]
+        diag[k, ly.D_PI] = res[6]
+        ck[15] += res[6]
+        if di > 0.0:
+            ck[17] += 0.4 * par[kn.P_KI] * di ** 2.5
+    # ---- outer raceway (fixed)
+    rr = math.hypot(b[1], b[2])
+    cps = b[1] / rr
+    sps = b[2] / rr
+    rgo = rowx[r, ly.X_RGO]
+    g[0] = rowx[r, ly.X_XGO]
+    g[1] = rgo * cps
+    g[2] = rgo * sps
+    tang[0] = 0.0
+    tang[1] = -sps
+    tang[2] = cps
+    race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
+                 lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang, fb, mb, fout,
+                 mout, res, tbuf)
+    if want:
+        s = par[kn.P_SIGN]
+        diag[k, ly.D_QO] = res[0]
+        diag[k, ly.D_DO] = res[1]
+        diag[k, ly.D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
+        diag[k, ly.D_SRO] = res[5]
+        diag[k, ly.D_PO] = res[6]
+        ck[16] += res[6]
+        if res[1] > 0.0:
+            ck[17] += 0.4 * par[kn.P_KO] * res[1] ** 2.5
+        # orbital speed and spin relative to the orbiting frame
+        r2 = b[1] * b[1] + b[2] * b[2]
+        wm = (b[1] * v[2] - b[2] * v[1]) / r2
+        diag[k, ly.D_WM] = wm
+        wx = w[0] - wm
+        wrad = w[1] * cps + w[2] * sps
+        wtan = -w[1] * sps + w[2] * cps
+        mag = math.sqrt(wx * wx + wrad * wrad + wtan * wtan)
+        sg = 1.0 if wx >= 0.0 else -1.0
+        diag[k, ly.D_WR] = sg * mag
+        diag[k, ly.D_BETA] = math.atan2(-s * wrad * sg, wx * sg)
+        diag[k, ly.D_QC] = 0.0
+        diag[k, ly.D_PC] = 0.0
+    # ---- the ball: ṙ = v, m v̇ = F + m g, J ω̇ = M
+    mass = par[kn.P_MASS]
+    jb = par[kn.P_JB]
+    dy[o] = v[0]
+    dy[o + 1] = v[1]
+    dy[o + 2] = v[2]
+    dy[o + 3] = fb[0] / mass + g0
+    dy[o + 4] = fb[1] / mass + g1
+    dy[o + 5] = fb[2] / mass + g2
+    dy[o + 6] = mb[0] / jb
+    dy[o + 7] = mb[1] / jb
+    dy[o + 8] = mb[2] / jb
+
+
+# numba's threading layer: "workqueue" unless the user chose one (NUMBA_THREADING_LAYER).  It ships with every
+# numba wheel (omp needs libgomp, tbb the tbb package), and on a shared, oversubscribed machine it measured
+# 0.44 ms per hub right-hand side on 2 threads against 1.9 ms for omp, whose idle threads spin (load 14 on
+# 2 cores, issue 14).  Set before the first parallel region runs; the result does not depend on it.
+if "NUMBA_THREADING_LAYER" not in os.environ:
+    numba.config.THREADING_LAYER = "workqueue"
+
+
+@njit(cache=True, parallel=True)
+def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work, contrib):
+    """:func:`_one_ball` for every ball in a numba ``prange`` (threads: ``numba.set_num_threads``)."""
+    for k in prange(ball_row.shape[0]):
+        _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work[k],
+                  contrib[k])
+
+
 @njit(cache=True)
 def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc):
+                      diag, acc, threads=False):
     """Every ball on its two raceways, and Newton–Euler for every ball.
 
     Inner raceway: the groove-curvature centre g in the ball's meridian plane of the tilted, displaced
@@ -81,123 +232,42 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
     outer atan2(s u_x, u·e_r)), slide-roll ratios, power losses, the orbital speed ω_m = (r × v)_x/r²,
     the spin ω_R relative to the orbiting frame (Jones sign: positive along +x) and pitch angle
     β = atan2(−s ω_rad, ω_x) (Jones 1960); acc ← raceway power losses and elastic energies (2/5) K δ^2.5.
+
+    Threads (issue 14): the balls are independent given the rings' state, so they run in a numba
+    ``prange`` when ``threads`` is true (:func:`_one_ball`, each with its own work row; the count is
+    ``numba.set_num_threads``) and write their reactions on the rings into a per-ball array, which is
+    then summed serially in ball order: the result does not depend on the number of threads nor on
+    ``threads``, bit for bit.
     """
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
-    alpha = gp[ly.G_ALPHA]
-    g0 = gp[ly.G_GX]
-    g1 = gp[ly.G_GX + 1]
-    g2 = gp[ly.G_GX + 2]
-    zero3 = np.zeros(3)
-    fb = np.empty(3)
-    mb = np.empty(3)
-    bp = np.empty(3)
-    g = np.empty(3)
-    gr = np.empty(3)
-    vg = np.empty(3)
-    tang = np.empty(3)
-    res = np.empty(8)
-    tmp = np.empty(3)
-    # work array of race_contact, followed by the slices of the Coulomb stand-in (the same for every contact)
+    # work rows of race_contact, followed by the slices of the Coulomb stand-in (the same for every contact)
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
-    tbuf = np.empty(44 + 2 * nsl)
-    slice_table(nsl, tbuf[44:])
+    work = np.empty((nb, BALL_WORK + 44 + 2 * nsl))
+    slice_table(nsl, work[0, BALL_WORK + 44:])
+    for k in range(1, nb):
+        for i in range(2 * nsl):
+            work[k, BALL_WORK + 44 + i] = work[0, BALL_WORK + 44 + i]
+    contrib = np.zeros((nb, NCONTRIB))
+    if threads:
+        _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work,
+                        contrib)
+    else:  # one thread: the same per-ball code without the parallel region's overhead
+        for k in range(nb):
+            _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work[k],
+                      contrib[k])
+    # the reduction, serially in ball order (independent of the thread count)
     for k in range(nb):
-        r = ball_row[k]
-        par = rows[r]
-        o = ly.N_RING + ly.N_BALL * k
-        b = y[o:o + 3]
-        v = y[o + 3:o + 6]
-        w = y[o + 6:o + 9]
-        half_d = 0.5 * par[kn.P_D]
-        worb = (b[1] * v[2] - b[2] * v[1]) / (b[1] * b[1] + b[2] * b[2])
+        ck = contrib[k]
         for i in range(3):
-            fb[i] = 0.0
-            mb[i] = 0.0
-        # ---- inner raceway: ball in the ring frame, groove centre in its meridian plane
-        for i in range(3):
-            tmp[i] = b[i] - c[i]
-        for i in range(3):
-            bp[i] = rm[0, i] * tmp[0] + rm[1, i] * tmp[1] + rm[2, i] * tmp[2]
-        rr = math.hypot(bp[1], bp[2])
-        cps = bp[1] / rr
-        sps = bp[2] / rr
-        xgi = rowx[r, ly.X_XGI]
-        ric = par[kn.P_RIC]
-        for i in range(3):
-            gr[i] = rm[i, 0] * xgi + rm[i, 1] * ric * cps + rm[i, 2] * ric * sps
-            g[i] = c[i] + gr[i]
-            tang[i] = -rm[i, 1] * sps + rm[i, 2] * cps
-        _cross(wtilt, gr, vg)
-        for i in range(3):
-            vg[i] += cd[i]
-        race_contact(b, v, w, g, vg, worb, c, cd, wring, par[kn.P_KI], par[kn.P_RI], half_d, alpha, lubs[2 * r], gp,
-                     rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang, fb, mb, fring, mring, res, tbuf)
-        qi = res[0]
-        di = res[1]
+            fring[i] += ck[i]
+            mring[i] += ck[3 + i]
+            fout[i] += ck[6 + i]
+            mout[i] += ck[9 + i]
         if want:
-            s = par[kn.P_SIGN]
-            ua = res[2] * ax[0] + res[3] * ax[1] + res[4] * ax[2]
-            urr = 0.0
-            for i in range(3):
-                urr += res[2 + i] * (rm[i, 1] * cps + rm[i, 2] * sps)
-            diag[k, ly.D_QI] = qi
-            diag[k, ly.D_DI] = di
-            diag[k, ly.D_AI] = math.atan2(-s * ua, -urr)
-            diag[k, ly.D_SRI] = res[5]
-            diag[k, ly.D_PI] = res[6]
-            acc[A_PIN] += res[6]
-            if di > 0.0:
-                acc[A_EPOT] += 0.4 * par[kn.P_KI] * di ** 2.5
-        # ---- outer raceway (fixed)
-        rr = math.hypot(b[1], b[2])
-        cps = b[1] / rr
-        sps = b[2] / rr
-        rgo = rowx[r, ly.X_RGO]
-        g[0] = rowx[r, ly.X_XGO]
-        g[1] = rgo * cps
-        g[2] = rgo * sps
-        tang[0] = 0.0
-        tang[1] = -sps
-        tang[2] = cps
-        race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
-                     lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang, fb, mb, fout,
-                     mout, res, tbuf)
-        if want:
-            s = par[kn.P_SIGN]
-            diag[k, ly.D_QO] = res[0]
-            diag[k, ly.D_DO] = res[1]
-            diag[k, ly.D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
-            diag[k, ly.D_SRO] = res[5]
-            diag[k, ly.D_PO] = res[6]
-            acc[A_POUT] += res[6]
-            if res[1] > 0.0:
-                acc[A_EPOT] += 0.4 * par[kn.P_KO] * res[1] ** 2.5
-            # orbital speed and spin relative to the orbiting frame
-            r2 = b[1] * b[1] + b[2] * b[2]
-            wm = (b[1] * v[2] - b[2] * v[1]) / r2
-            diag[k, ly.D_WM] = wm
-            wx = w[0] - wm
-            wrad = w[1] * cps + w[2] * sps
-            wtan = -w[1] * sps + w[2] * cps
-            mag = math.sqrt(wx * wx + wrad * wrad + wtan * wtan)
-            sg = 1.0 if wx >= 0.0 else -1.0
-            diag[k, ly.D_WR] = sg * mag
-            diag[k, ly.D_BETA] = math.atan2(-s * wrad * sg, wx * sg)
-            diag[k, ly.D_QC] = 0.0
-            diag[k, ly.D_PC] = 0.0
-        # ---- the ball: ṙ = v, m v̇ = F + m g, J ω̇ = M
-        mass = par[kn.P_MASS]
-        jb = par[kn.P_JB]
-        dy[o] = v[0]
-        dy[o + 1] = v[1]
-        dy[o + 2] = v[2]
-        dy[o + 3] = fb[0] / mass + g0
-        dy[o + 4] = fb[1] / mass + g1
-        dy[o + 5] = fb[2] / mass + g2
-        dy[o + 6] = mb[0] / jb
-        dy[o + 7] = mb[1] / jb
-        dy[o + 8] = mb[2] / jb
+            acc[A_PIN] += ck[15]
+            acc[A_POUT] += ck[16]
+            acc[A_EPOT] += ck[17]
 
 
 @njit(cache=True, inline="always")
@@ -549,7 +619,7 @@ def global_diagnostics(gdiag, loads, mring, ax, mout, acc, omega):
 
 
 @njit(cache=True)
-def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag):
+def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, threads=False):
     """Time derivative of the state (equations of motion, inertial frame).
 
     The equations, one helper each: balls on the raceways (:func:`ball_inner_raceway`,
@@ -583,6 +653,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
     lubs (2 n_rows × L_SIZE): lubrication parameters of the inner (2r) and outer (2r+1)
     contacts of row r for the sliced-ellipse kernel.
     diag (n_balls × NDB) and gdiag (NDG) receive output quantities when diag has rows.
+    threads: the balls in parallel (:func:`balls_on_raceways`; same result bit for bit).
     """
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
@@ -618,7 +689,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
     loads_at(t, loadspec, loads)
     # ---- balls on the raceways
     balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc)
+                      diag, acc, threads)
     # ---- cages: pockets (with elastic modes), land guidance, equations
     oc0 = ly.N_RING + ly.N_BALL * nb
     rmc = np.empty((3, 3))
@@ -668,13 +739,13 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag)
         global_diagnostics(gdiag, loads, mring, ax, mout, acc, omega)
 
 
-def evaluate(model, t, y, loadspec, want_diag=True):
-    """Python helper: (dy, diag, gdiag) at (t, y)."""
+def evaluate(model, t, y, loadspec, want_diag=True, threads=False):
+    """Python helper: (dy, diag, gdiag) at (t, y) (threads: :func:`rhs`)."""
     dy = np.zeros_like(y)
     diag = np.zeros((model.n_balls if want_diag else 0, ly.NDB))
     gdiag = np.zeros(ly.NDG)
     rhs(t, y, dy, model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.cage_modes, model.lub_array(),
-        loadspec, diag, gdiag)
+        loadspec, diag, gdiag, bool(threads))
     return dy, diag, gdiag
 
 
@@ -682,6 +753,12 @@ def evaluate(model, t, y, loadspec, want_diag=True):
 def rhs_args(t, y, dy, a):
     """:func:`rhs` with its arrays in one tuple (the integrator's calling convention)."""
     rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9])
+
+
+@njit(cache=True)
+def rhs_args_threaded(t, y, dy, a):
+    """:func:`rhs_args` with the balls on ``numba.get_num_threads()`` threads (the same result, bit for bit)."""
+    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], True)
 
 
 def args_of(model, loadspec, diag=None, gdiag=None):

@@ -89,7 +89,7 @@ def _note(console, text: str) -> None:
 
 
 def simulate(case, out: str | Path | None = None, resume: bool = False, progress: bool = False,
-             console=None, checkpoint_seconds: float | None = None) -> Results:
+             console=None, checkpoint_seconds: float | None = None, threads: int | None = None) -> Results:
     """Run a dynamic case.
 
     Parameters
@@ -108,6 +108,8 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     console : a ``rich`` console for the progress bar and notes
     checkpoint_seconds : wall-clock interval between checkpoints [s] (default: the case's
         ``checkpoint_every = "… s"``, else :data:`CHECKPOINT_SECONDS`)
+    threads : threads for the ball contacts of the right-hand side (None: all cores, i.e.
+        NUMBA_NUM_THREADS; the trajectory is the same bit for bit for any count, :class:`Stepper`)
 
     Returns :class:`Results`.  On a diverging step or when every ball has separated
     the data so far are saved and :class:`SimulationError` is raised.
@@ -122,10 +124,13 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
             not (0 < checkpoint_seconds < math.inf):
         raise InputError("checkpoint_every", f"must be a positive wall-clock time, got {checkpoint_seconds!r} s",
                          'e.g. "30 s"')
+    from .stepper import resolve_threads
+
+    threads = resolve_threads(threads)  # (bad input fails before the start is solved)
     model, loadspec, y0, static = build(case)
     fp = case.fingerprint()
     stepper = Stepper(model, loadspec, y0, tol=case.tolerance, h=min(1e-7, case.output_interval),
-                      method=case.method)
+                      method=case.method, threads=threads)
     attrs = {"title": "bearingsim dynamic simulation", "bearing": model.names.get("bearing", ""),
              "traction": case.traction, "tolerance": case.tolerance, "case_fingerprint": fp,
              "conventions": "x bearing axis, outer ring fixed, psi = 0 on +y, SI units",

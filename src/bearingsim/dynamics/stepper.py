@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import numba
 import numpy as np
 
 from ..errors import BearingSimError, InputError
@@ -58,6 +59,9 @@ class Stepper:
     jac_every: int = 20  #: steps between Jacobian refreshes (also after two rejections in a row)
     ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
     max_steps_per_interval: int = 10_000_000
+    #: threads for the ball contacts of the right-hand side (None: all of numba's, NUMBA_NUM_THREADS, i.e. the
+    #: cores; 1: serial).  The result is the same bit for bit (:func:`.forces.balls_on_raceways`).
+    threads: int | None = None
     steps: int = 0
     rejected: int = 0
     atol: np.ndarray = field(default=None, repr=False)
@@ -81,7 +85,9 @@ class Stepper:
             self._bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
         # the ROS34PW2 Jacobian lives from one call to the next (and in checkpoints)
         self._ws = ig.ros34_workspace(m.n_balls, md.N_BALL, self._rmass.shape[0] == 5)
-        self.workspace = ig.Workspace(fo.rhs_args, self._args, self.y, self.atol, self.rtol, blk=self._blk,
+        self.threads = resolve_threads(self.threads)
+        fun = fo.rhs_args_threaded if self.threads > 1 else fo.rhs_args
+        self.workspace = ig.Workspace(fun, self._args, self.y, self.atol, self.rtol, blk=self._blk,
                                       nbk=md.N_BALL, rmass=self._rmass, bmass=self._bmass, jacobian=self._ws,
                                       info=self._info)
 
@@ -94,6 +100,8 @@ class Stepper:
         ws.t, ws.h, ws.h_min = self.t, self.h, self.h_min
         ws.max_steps, ws.jac_every = self.max_steps_per_interval, self.jac_every
         ws.steps, ws.rejected = self.steps, self.rejected
+        if self.threads > 1:
+            numba.set_num_threads(self.threads)
         status = ig.METHODS[self.method].advance(ws, float(t_end))
         self.steps, self.rejected = ws.steps, ws.rejected
         self.t = ws.t
@@ -122,6 +130,18 @@ class Stepper:
                 self.model.lubs[:] = saved
             out["power_loss_rolling"] = (gd[fo.GD_PI] + gd[fo.GD_PO]) - (gd2[fo.GD_PI] + gd2[fo.GD_PO])
         return out
+
+
+def resolve_threads(threads) -> int:
+    """The thread count of a run: None → numba's (NUMBA_NUM_THREADS, by default the cores); else an integer
+    in 1..NUMBA_NUM_THREADS (InputError otherwise)."""
+    top = numba.config.NUMBA_NUM_THREADS
+    if threads is None:
+        return int(top)
+    if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 1 <= threads <= top:
+        raise InputError("threads", f"must be an integer in 1..{top} (NUMBA_NUM_THREADS), got {threads!r}",
+                         "e.g. --threads 1 for one core; set NUMBA_NUM_THREADS for more")
+    return int(threads)
 
 
 def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: np.ndarray) -> dict:

@@ -1,0 +1,86 @@
+"""Threads in the dynamic right-hand side (issue 14, lever 3): the balls' contacts run in a numba prange and
+their reactions on the rings are summed serially in ball order, so any thread count gives the same result
+bit for bit.  The suite runs with NUMBA_NUM_THREADS=1 (tests/conftest.py); the two-thread evaluations run
+in a subprocess with NUMBA_NUM_THREADS=2 on states of a serial run of this process (the integrator is the
+same code for any thread count: equal right-hand sides give the same trajectory)."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from bearingsim.dynamics.stepper import resolve_threads
+from bearingsim.errors import InputError
+
+ROOT = Path(__file__).resolve().parents[2]
+CASES = (("hub-moment-50hz.toml", "slices"), ("spindle-7011.toml", "coulomb"))
+
+_SCRIPT = textwrap.dedent("""
+    import dataclasses, sys, numba, numpy as np
+    from bearingsim.dynamics import forces as fo, run as R
+    from bearingsim.dynamics.case import load_case
+    assert numba.config.NUMBA_NUM_THREADS == 2
+    numba.set_num_threads(2)
+    d = np.load(sys.argv[1])
+    for name, trac in %r:
+        m, ls, _, _ = R.build(dataclasses.replace(load_case("examples/" + name), traction=trac))
+        for i, y in enumerate(d[name + ":y"]):
+            for part, v in zip(("dy", "diag", "gdiag"), fo.evaluate(m, 0.0, y, ls, threads=True)):
+                ref = d[f"{name}:{part}{i}"]
+                assert np.array_equal(v, ref), (name, i, part, np.abs(v - ref).max())
+    print("bitwise ok")
+""" % (CASES,))
+
+
+def test_two_threads_give_the_one_thread_result_bit_for_bit(tmp_path):
+    import dataclasses
+
+    from bearingsim.dynamics import forces as fo
+    from bearingsim.dynamics import run as R
+    from bearingsim.dynamics.case import load_case
+
+    data = {}
+    for name, trac in CASES:
+        case = dataclasses.replace(load_case(ROOT / "examples" / name), traction=trac)
+        m, ls, y0, _ = R.build(case)
+        states = [y0, y0 * (1.0 + 1e-4 * np.sin(np.arange(y0.size)))]  # the start, and one where all contacts slide
+        if trac == "slices":  # and states of a serial ROS34PW2 run (contacts loaded, traction developing)
+            st = R.Stepper(m, ls, y0.copy(), tol=case.tolerance, method=case.method, threads=1)
+            for t in (1e-5, 2e-5):
+                st.advance(t)
+                states.append(st.y.copy())
+        data[name + ":y"] = np.array(states)
+        for i, y in enumerate(states):
+            out = fo.evaluate(m, 0.0, y, ls, threads=False)
+            assert np.abs(out[0]).max() > 0 and out[1][:, 0].max() > 0
+            for part, v in zip(("dy", "diag", "gdiag"), out):
+                data[f"{name}:{part}{i}"] = v
+    np.savez(tmp_path / "ref.npz", **data)
+    env = dict(os.environ, NUMBA_NUM_THREADS="2")
+    r = subprocess.run([sys.executable, "-c", _SCRIPT, str(tmp_path / "ref.npz")], cwd=ROOT, env=env,
+                       capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, r.stderr[-3000:]
+    assert "bitwise ok" in r.stdout
+
+
+def test_thread_count_is_checked():
+    assert resolve_threads(1) == 1
+    assert resolve_threads(None) >= 1
+    for bad in (0, -1, 10_000, 1.5, True):
+        with pytest.raises(InputError, match="threads"):
+            resolve_threads(bad)
+
+
+def test_cli_rejects_a_bad_thread_count_in_one_line(tmp_path):
+    r = subprocess.run(["bearingsim", "simulate", str(ROOT / "examples" / "spindle-7011.toml"), "--out",
+                        str(tmp_path / "x.nc"), "--threads", "0", "--quiet"], capture_output=True, text=True,
+                       timeout=300)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and "threads" in lines[0], r.stderr
