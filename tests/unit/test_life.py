@@ -6,6 +6,8 @@ from types import SimpleNamespace
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.special import gamma
 
 from bearingsim import life
@@ -271,3 +273,18 @@ def test_row_ratings_of_a_set_combine_to_the_system():
     np.testing.assert_allclose(sum(x ** (-10 / 9) for x in lives) ** -0.9, r.reference_rating_life, rtol=1e-12)
     assert lives[0] != lives[1]
     assert r.rating["static_safety_factor_pressure"] == min(x["static_safety_factor_pressure"] for x in rows)
+
+
+
+@settings(max_examples=12, deadline=None)
+@given(fr=st.floats(200.0, 8000.0), k=st.floats(1.2, 3.0), psi0=st.floats(0.0, 0.7))
+def test_pressure_safety_scales_inversely_with_load_at_zero_clearance(fr, k, psi0):
+    """Zero clearance, pure radial load at rest: the ball loads are self-similar in the load (Q_j ∝ F_r), so
+    p_max ∝ F_r^(1/3) and s0 = (4200 MPa/p_max)³ ∝ 1/F_r whatever the load direction; and P0 = F_r."""
+    b = _deep_groove(0.0, static_load_rating=7.8e3, geometry_factor_f0=14.0)
+    loads = [jh.Loads(fr_y=f * math.cos(psi0), fr_z=f * math.sin(psi0)) for f in (fr, k * fr)]
+    r1, r2 = (jh.solve(b, ld) for ld in loads)
+    assert r1.converged and r2.converged
+    s1, s2 = r1.rating["static_safety_factor_pressure"], r2.rating["static_safety_factor_pressure"]
+    np.testing.assert_allclose(s1 / s2, k, rtol=1e-6)
+    np.testing.assert_allclose(r1.rating["equivalent_static_load_N"], fr, rtol=1e-12)
