@@ -233,6 +233,10 @@ def bearing_report(bearing, loads, speed: float = 0.0, *, out_dir, lubricant=Non
     if lubricant is not None and temperature is None:
         raise InputError("temperature", "a lubricant needs its operating temperature", 'e.g. --temperature "60 degC"')
     res = solve(b, loads, speed, control)
+    if lubricant is not None and res.converged:  # the modified rating lives need the lubricant (bearingsim.life)
+        from ..life import apply_rating
+
+        apply_rating(res, lubricant, temperature)
     d = res.to_dict()
     fr = None
     if lubricant is not None:
