@@ -115,7 +115,7 @@ def static_table(bearing, speed: float, off=None, amp=None, n: int = 25, control
     Returns s[n], moment[n] [N m], tilt[n] [rad], compliance[n] [rad/(N m)], inner load Q[n, balls] [N],
     inner contact angle alpha[n, balls] [rad], azimuth[balls] [rad], row[balls], orbital speed [rad/s],
     converged[n].  ``off``/``amp`` the load channels' offsets and amplitudes (default: the hub tie of
-    :mod:`.hub_static`).  Cached per (bearing, speed, loads).
+    :mod:`.hub_static`).  Cached per (bearing (by its repr), speed, loads).
     """
     from ..statics.jones_harris import solve
 
@@ -124,9 +124,11 @@ def static_table(bearing, speed: float, off=None, amp=None, n: int = 25, control
         lo_v = np.array([lo.fa, lo.fr_y, lo.fr_z, lo.m_y, lo.m_z])
         hi_v = np.array([hi.fa, hi.fr_y, hi.fr_z, hi.m_y, hi.m_z])
         off, amp = 0.5 * (hi_v + lo_v), 0.5 * (hi_v - lo_v)
-    key = (id(bearing), round(float(speed), 9), tuple(np.round(off, 9)), tuple(np.round(amp, 9)), n, control)
+    key = (repr(bearing), round(float(speed), 9), tuple(np.round(off, 9)), tuple(np.round(amp, 9)), n, control)
     if key in _TABLES:
         return _TABLES[key]
+    if len(_TABLES) > 64:  # a long-running session: keep the cache bounded
+        _TABLES.clear()
     s = np.linspace(-1.0, 1.0, n)
     order = np.argsort(np.abs(s), kind="stable")
     res_by = {}
@@ -265,7 +267,7 @@ def reduced_wh(case_or_bearing, speed_kmh: float, frequency_hz: float, level: fl
         e_eff = effective_modulus(b0.ball_material.youngs_modulus, b0.ball_material.poisson_ratio,
                                   b0.ring_material.youngs_modulus, b0.ring_material.poisson_ratio)
         # κ on the table's moments (per ball of the pattern), then interpolated
-        key = ("kappa", id(tab), str(lubricant), temperature)
+        key = ("kappa", id(tab), repr(lubricant), temperature)
         if key not in _TABLES:
             k = film_creep_slope(lubricant, temperature if temperature is not None else 313.15, tab["Q"],
                                  tab["alpha"], u_tab, float(d[0]), float(dm[0]), float(fi[0]), e_eff)
