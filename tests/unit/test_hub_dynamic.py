@@ -181,7 +181,7 @@ def test_study_json_fields(standin, fast_cell):
     case = hd.cell_case(data, CASE.parent, 100.0, 2000.0, 3)
     cell = hd.analyse_cell(fast_cell, case, reduced=False)
     study = hd.HysteresisStudy([cell], cycles=2, startup=1, case=str(CASE))
-    d = json.loads(json.dumps(study.to_dict()))  # serialisable
+    d = json.loads(json.dumps(study.to_dict(), allow_nan=False))  # serialisable, no NaN (not JSON)
     (c,) = d["cells"]
     for k in ("vehicle_speed_kmh", "frequency_hz", "wh_deg", "wh_ci95_deg", "cycles_used", "loop_area_J",
               "phase_lag_deg", "compliance_deg_per_kNm", "static_compliance_deg_per_kNm", "reduced_model_wh_deg",
@@ -192,6 +192,8 @@ def test_study_json_fields(standin, fast_cell):
     assert c["seed_wh_deg"] is None  # 2000 Hz is no pair of the paper
     assert c["reduced_model_wh_deg"] is None and c["bound_wh_deg"] is None
     assert d["estimator"] == "stand-in"
+    cell.estimate.loop_area = math.nan  # a number that does not exist is null
+    assert study.to_dict()["cells"][0]["loop_area_J"] is None
 
 
 def test_static_compliance_is_the_fundamental_of_the_hub_static_load_path(hub):

@@ -77,7 +77,7 @@ def reproduce_hub_hysteresis(
     csv, png = write_study(study, out, "hub_hysteresis.csv", "hub_hysteresis_loops.png")
     data = study.to_dict()
     with atomic_output(out / "hub_hysteresis.json", "--out") as tmp:
-        tmp.write_text(json.dumps(data, indent=1))
+        tmp.write_text(json.dumps(data, indent=1, allow_nan=False))
     html = None
     if report is not None:
         from ..studies.hub_report import write_report
@@ -87,7 +87,7 @@ def reproduce_hub_hysteresis(
     if json_out:
         if html is not None:
             data["report"] = str(html)
-        typer.echo(json.dumps(data))
+        typer.echo(json.dumps(data, allow_nan=False))
         return
     study.print_table(con)
     con.print(f"wrote {csv}, {png} and {out / 'hub_hysteresis.json'}" + (f"; report {html}" if html else ""))

@@ -398,12 +398,13 @@ class HysteresisStudy:
     notes: list = field(default_factory=list)
 
     def to_dict(self) -> dict:
-        """The study's JSON (``--json``)."""
-        return {"case": self.case, "level_N_m": self.level, "cycles": self.cycles, "startup_cycles": self.startup,
+        """The study's JSON (``--json``); a number that does not exist (NaN) is null."""
+        return _finite({
+                "case": self.case, "level_N_m": self.level, "cycles": self.cycles, "startup_cycles": self.startup,
                 "traction": self.traction or "case file", "wall_seconds": self.wall_seconds,
                 "estimator": self._criterion(), "cells": [c.to_dict() for c in self.cells], "notes": self.notes,
                 "seed_readings": "seed_wh_deg: SEED_FIG9, seed_wh_alt_deg: SEED_FIG9_ALT "
-                                 "(bearingsim/studies/hub_dynamic.py)"}
+                                 "(bearingsim/studies/hub_dynamic.py)"})
 
     def _criterion(self) -> str | None:
         for c in self.cells:
@@ -482,6 +483,17 @@ class HysteresisStudy:
         fig.savefig(path, dpi=120)
         plt.close(fig)
         return Path(path)
+
+
+def _finite(x):
+    """``x`` with every non-finite float (NaN, ±inf) replaced by None, through dicts and lists (valid JSON)."""
+    if isinstance(x, dict):
+        return {k: _finite(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_finite(v) for v in x]
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    return x
 
 
 def _x1e3(x):
