@@ -56,9 +56,12 @@ def frictionless():
 def test_frictionless_undamped_run_is_flagged_not_periodic(frictionless):
     """Finding (issue 13 item 6): the frictionless, undamped hub model is NOT a zero reference.  The varying load
     does work on it in every cycle (loop area ∮ M dγ = 6–22 mJ per cycle at 100 km/h, 50 Hz, full Table 2 loads;
-    also at a third of the loads, 0.1–1.4 mJ) and nothing dissipates it: the ring's vibration grows (residual
-    of the harmonic fit 0.4 → 4.8·10⁻³ ° rms over 8 cycles) — the balls, free of traction, are pushed along
-    their free (orbital, transverse) motions.  So the response never becomes periodic, and the estimator
+    also at a third of the loads, 0.1–1.4 mJ; and at shaft speed 0, 10–23 mJ, W_H +0.64·10⁻³ ° over cycles
+    1–5) and nothing dissipates it: the ring's vibration grows (residual of the harmonic fit 0.4 → 4.8·10⁻³ °
+    rms over 8 cycles).  Energy balance of a 4-cycle run (100 km/h): at equal load phase the balls' orbital
+    kinetic energy rose 118 → 131 mJ and the contact potential energy 104 → 133 mJ, ≈ 10 mJ per cycle, the
+    loop area: the work is stored, not lost to the integrator.  Balls free of traction are pushed along
+    their free directions (along the groove, against the cage pockets) by the tilting ring and rattle.  So the response never becomes periodic, and the estimator
     must say so rather than report an interval: its periodicity criterion (fitted mean and fundamental change
     by ≤ 10⁻³ of the fundamental per cycle, twice in a row) never holds (changes 1.3–15·10⁻³ in the runs
     made; the trajectory is chaotic, so the exact values move with any change of the engine); forced over
