@@ -337,7 +337,8 @@ def hysteresis_estimate(t, load, response, frequency: float, level: float, n_har
     load = np.asarray(load, dtype=float)
     response = np.asarray(response, dtype=float)
     if not (t.ndim == 1 and t.shape == load.shape == response.shape and len(t) > 1):
-        raise InputError("t, load, response", "need three 1-D arrays of the same length (> 1)", "pass samples of one run")
+        raise InputError("t, load, response", "need three 1-D arrays of the same length (> 1)",
+                         "pass samples of one run")
     if not np.all(np.diff(t) > 0):
         raise InputError("t", "times must increase strictly", "pass the samples in time order without repeats")
     if not (isinstance(frequency, (int, float)) and math.isfinite(frequency) and frequency > 0):

@@ -231,8 +231,8 @@ def reduced_wh(case_or_bearing, speed_kmh: float, frequency_hz: float, level: fl
     ``saturated_fraction`` (share of ball-steps at the μ_max cap), ``dissipated`` [J] (sliding work of the model
     over the cycle read, ∮ −Σ T (v + ė) dt), ``tilt_work`` [J] (∮ −Σ T v dt, the part that passes through the
     tilt and must equal ``loop_area`` to first order; the rest, ∮ Σ k_t e ė dt = −∮ Σ ½ e² dk_t, is exchanged with
-    the varying normal loads, which the model does not feed back to the ring), ``compliance`` [rad/(N m)] at ``level``, ``cycles``
-    (integrated), ``settled`` (exp(−t/τ_max) left of the start-up at the last cycle), ``wall_seconds``.
+    the varying normal loads, which the model does not feed back to the ring), ``compliance`` [rad/(N m)] at
+    ``level``, ``cycles`` (integrated), ``settled`` (exp(−t/τ_max) left of the start-up at the last cycle), ``wall_seconds``.
     """
     t_wall = time.perf_counter()
     for name, v in (("speed_kmh", speed_kmh), ("frequency_hz", frequency_hz)):
@@ -359,10 +359,12 @@ def reduced_wh(case_or_bearing, speed_kmh: float, frequency_hz: float, level: fl
             "tau": tau_med, "tau_rows": tau_rows, "omega_tau": 2.0 * math.pi * frequency_hz * tau_med,
             "creep_slope": float(np.median(kappa[cyc][loaded[cyc]])) if tau_loaded.size else math.nan,
             "mu_max": float(mu_max), "bound_force": bound_force, "bound_energy": bound_energy,
-            "sliding_work": sliding_work, "dissipated": dissipated, "tilt_work": tilt_work, "saturated_fraction": sat / max(int(np.count_nonzero(loaded[first + 1:])), 1),
+            "sliding_work": sliding_work, "dissipated": dissipated, "tilt_work": tilt_work,
+            "saturated_fraction": sat / max(int(np.count_nonzero(loaded[first + 1:])), 1),
             "compliance": c_l, "shaft_speed": omega, "cage_speed": w_c,
             "static_converged": bool(np.all(tab["converged"])), "cycles": cycles,
-            "settled": math.exp(-(cycles - 1) / (frequency_hz * tau_max)) if tau_max > 0 else 0.0, "wall_seconds": time.perf_counter() - t_wall}
+            "settled": math.exp(-(cycles - 1) / (frequency_hz * tau_max)) if tau_max > 0 else 0.0,
+            "wall_seconds": time.perf_counter() - t_wall}
 
 
 @njit(cache=True)
