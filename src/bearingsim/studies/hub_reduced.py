@@ -232,7 +232,8 @@ def reduced_wh(case_or_bearing, speed_kmh: float, frequency_hz: float, level: fl
     over the cycle read, ∮ −Σ T (v + ė) dt), ``tilt_work`` [J] (∮ −Σ T v dt, the part that passes through the
     tilt and must equal ``loop_area`` to first order; the rest, ∮ Σ k_t e ė dt = −∮ Σ ½ e² dk_t, is exchanged with
     the varying normal loads, which the model does not feed back to the ring), ``compliance`` [rad/(N m)] at
-    ``level``, ``cycles`` (integrated), ``settled`` (exp(−t/τ_max) left of the start-up at the last cycle), ``wall_seconds``.
+    ``level``, ``cycles`` (integrated), ``settled`` (exp(−t/τ_max) left of the start-up at the last cycle),
+    ``wall_seconds``.
     """
     t_wall = time.perf_counter()
     for name, v in (("speed_kmh", speed_kmh), ("frequency_hz", frequency_hz)):
