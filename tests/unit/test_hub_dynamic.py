@@ -97,6 +97,11 @@ def test_traction_curve_has_the_shape_of_the_papers_fig4():
     assert mu[0] == pytest.approx(0.0, abs=1e-12)
     assert s[np.argmax(mu)] == pytest.approx(0.01, abs=1e-5) and mu.max() == pytest.approx(0.08, rel=1e-6)
     assert 0.07 < mu[-1] < 0.08
+    # its small-slip slope, given to the reduced model for --traction curve
+    data = read_toml(CASE, "case")
+    slope = hd.curve_creep_slope(hd.cell_case(data, CASE.parent, 10.0, 50.0, 3, "curve"))
+    assert slope == pytest.approx((mu[1] - mu[0]) / (s[1] - s[0]), rel=2e-2)  # forward difference, step 1e-5
+    assert hd.curve_creep_slope(hd.cell_case(data, CASE.parent, 10.0, 50.0, 3, "physical")) is None
 
 
 def _standin_estimate(t, load, response, frequency, level, **kw):

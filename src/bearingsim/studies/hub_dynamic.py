@@ -288,6 +288,19 @@ def static_compliance(case, frequency_hz: float, points: int = 64) -> float:
     return g1 / m1 if m1 > 0 else math.nan
 
 
+def curve_creep_slope(case) -> float | None:
+    """dμ/ds at s = 0 [-] of the case's four-parameter fluid curve (``[lubrication] fluid_model = "curve"``):
+    μ = (A + B s) e^(−C s) + D gives B − A C (contact/traction.py); None for the physical film law (the reduced
+    model then takes the film-elastic slope per ball)."""
+    lub = getattr(case, "lubrication", None) or {}
+    if lub.get("fluid_model") != "curve" or lub.get("fluid_curve") is None:
+        return None
+    from ..contact.traction import fit_four_parameter
+
+    a, b, c, _ = fit_four_parameter(*lub["fluid_curve"])
+    return float(b - a * c)
+
+
 @dataclass
 class CellResult:
     """One analysed cell (SI; rad, J, N·m)."""
@@ -377,7 +390,8 @@ def analyse_cell(record: dict, case, level: float = LEVEL, reduced: bool = True)
             out.notes.append("reduced model (studies.hub_reduced.reduced_wh) not available")
         else:
             try:
-                out.reduced = reduced_wh(case, record["speed_kmh"], record["frequency_hz"], level=level)
+                out.reduced = reduced_wh(case, record["speed_kmh"], record["frequency_hz"], level=level,
+                                         creep_slope=curve_creep_slope(case))
             except Exception as exc:  # noqa: BLE001 - a failing side model must not lose hours of runs
                 out.notes.append(f"reduced model failed: {type(exc).__name__}: {exc}")
     return out
@@ -612,5 +626,5 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
 
 
 __all__ = ["LEVEL", "SEED_FIG4_CURVE", "SEED_FIG9", "SEED_FIG9_ALT", "STARTUP_CYCLES", "TRACTIONS", "TYRE_RADIUS",
-           "CellResult", "HysteresisStudy", "analyse_cell", "cell_case", "cell_name", "last_cycle", "load_cell",
-           "run_cell", "run_study", "save_cell", "seed_value", "static_compliance", "traction_model"]
+           "CellResult", "HysteresisStudy", "analyse_cell", "cell_case", "cell_name", "curve_creep_slope", "last_cycle",
+           "load_cell", "run_cell", "run_study", "save_cell", "seed_value", "static_compliance", "traction_model"]
