@@ -12,7 +12,7 @@ from bearingsim.rings import influence as inf
 from bearingsim.rings.coupling import ElasticRings, offsets_from_forces, ring_forces, ring_model, solve
 from bearingsim.rings.influence import InfluenceSettings, compute_influence, half_space_on_axis
 from bearingsim.rings.section import RingSection, estimate_sections, mesh_section
-from bearingsim.statics import _kernels as kn
+from bearingsim.statics import layout as kn
 from bearingsim.statics.jones_harris import Loads
 
 E, NU = 208e9, 0.3

@@ -1,7 +1,7 @@
 """Jones–Harris quasi-static equilibrium with elastic rings.
 
 Model.  The rigid-ring model of :mod:`bearingsim.statics.jones_harris` places the inner groove-curvature centre
-of ball j at (A₁, A₂) from the outer one (row frame ξ, r; :mod:`bearingsim.statics._kernels`).  With elastic
+of ball j at (A₁, A₂) from the outer one (row frame ξ, r; :mod:`bearingsim.statics.layout`).  With elastic
 rings each groove centre is further displaced by the rings' structural deformation under all ball forces:
 
     A₁,j ← A₁,j + u_ξ,j(inner) − u_ξ,j(outer),    A₂,j ← A₂,j + u_r,j(inner) − u_r,j(outer),
@@ -38,8 +38,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from ..statics import _kernels as kn
 from ..statics import jones_harris as jh
+from ..statics import layout as kn
 from .influence import InfluenceSettings, RingInfluence, compute_influence
 from .section import estimate_sections
 
@@ -108,7 +108,7 @@ def expand_rows(rows0: np.ndarray, offsets: np.ndarray) -> np.ndarray:
 
 def ring_forces(ballout: np.ndarray, lam: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per ball (expanded rows), the forces (F_r, F_ξ) [N] of the ball on the inner and on the outer ring
-    (control weights λ_i, λ_o = (1, 1) for inner control, (0, 2) for outer: :func:`._kernels.control_weights`)."""
+    (control weights λ_i, λ_o = (1, 1) for inner control, (0, 2) for outer: Harris, as in the kernel)."""
     bo = ballout[:, 0, :]
     inner = lam[:, 0] == 1
     li = np.where(inner, 1.0, 0.0)
@@ -162,12 +162,8 @@ def _assemble(rows_e, qv, omega, control):
     """At fixed q for the one-ball rows ``rows_e``: ball forces on the rings (F_i, F_o) [N], the load each ball
     carries (generalized, float[n, 5], :func:`bearingsim.statics.jones_harris._row_loads`) and the ring forces."""
     nb = rows_e.shape[0]
-    lam = np.full((nb, 1), 1 if control == "inner" else 0, dtype=np.int64)
-    res = np.zeros(5)
-    kmat = np.zeros((5, 5))
     ballout = np.zeros((nb, 1, 12))
-    kn.ring_assemble(rows_e, qv, omega, jh.CONTROLS[control], lam, np.zeros((nb, 1, 2)), np.zeros(5), res, kmat,
-                     ballout, jh.TOL_BALL, jh.MAXIT_BALL)
+    res, kmat, lam = jh.assemble_at(rows_e, qv, omega, control, ballout)
     carried = np.zeros((nb, 5))
     jh._row_loads(rows_e, qv, ballout, lam, carried)
     fi, fo = ring_forces(ballout, lam)
@@ -176,7 +172,7 @@ def _assemble(rows_e, qv, omega, control):
 
 def _groove_gradients(rows_e, qv) -> np.ndarray:
     """Per one-ball row: d(A₁, A₂)/dq, float[n, 2, 5] (the small-rotation gradients of
-    :func:`bearingsim.statics._kernels._groove_offsets`, vectorised)."""
+    :func:`bearingsim.statics.layout` row frame, the kernel's small-rotation gradients, vectorised)."""
     psi = rows_e[:, kn.P_PSI0]
     cp, sp = np.cos(psi), np.sin(psi)
     s = rows_e[:, kn.P_SIGN]

@@ -80,6 +80,22 @@ def _row_loads(rows, qv, ballout, lam, out):
                 out[r, k] += fx * ta1[k] + fr * ta2[k] - mpsi * gw[k]
 
 
+def assemble_at(rows: np.ndarray, q: np.ndarray, omega: float, control: str, ballout: np.ndarray):
+    """Every ball of ``rows`` solved at the prescribed inner-ring displacement ``q`` [m, rad] and inner-ring speed
+    ``omega`` [rad/s], without a ring equilibrium: fills ``ballout`` (float[nrow, zmax, 12], the ball table of
+    :func:`._kernels.ring_assemble`) and returns (Σ ball forces on the inner ring float[5] [N, N·m], the stiffness
+    −d(that)/dq at fixed row parameters float[5, 5], the control state int[nrow, zmax]).  The public entry of the
+    kernel's per-ball solve for models built on the rigid-ring kernel (:mod:`bearingsim.rings.coupling`)."""
+    nrow = rows.shape[0]
+    zmax = int(rows[:, kn.P_Z].max())
+    lam = np.full((nrow, zmax), 1 if control == "inner" else 0, dtype=np.int64)
+    res = np.zeros(5)
+    kmat = np.zeros((5, 5))
+    kn.ring_assemble(rows, np.asarray(q, dtype=float), float(omega), CONTROLS[control], lam,
+                     np.zeros((nrow, zmax, 2)), np.zeros(5), res, kmat, ballout, TOL_BALL, MAXIT_BALL)
+    return res, kmat, lam
+
+
 def _number(value, field: str) -> float:
     """A real number (not bool, not str) → float; InputTypeError/InputError naming ``field`` otherwise."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
