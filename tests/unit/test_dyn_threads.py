@@ -84,3 +84,28 @@ def test_cli_rejects_a_bad_thread_count_in_one_line(tmp_path):
     assert r.returncode == 2, (r.stdout, r.stderr)
     lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
     assert len(lines) == 1 and "threads" in lines[0], r.stderr
+
+
+def test_serial_loop_is_the_per_ball_function_written_out():
+    """The one-thread loop of balls_on_raceways is the body of _one_ball written out (a call per ball cost 13 %
+    of the right-hand side): the two texts must stay the same statement for statement, or the one- and
+    many-thread results would drift apart."""
+    import inspect
+    import re
+    import textwrap as tw
+
+    from bearingsim.dynamics import forces as fo
+
+    one = inspect.getsource(fo._one_ball.py_func)
+    body = one[one.index("    r = ball_row[k]\n"):]
+    for old, new in (("fring", "fr"), ("mring", "mr"), ("fout", "fo"), ("mout", "mo")):
+        body = re.sub(r"\b%s\b" % old, new, body)
+    drv = inspect.getsource(fo.balls_on_raceways.py_func)
+    copy = drv[drv.index("# ---- BEGIN copy"):drv.index("# ---- END copy")]
+    copy = copy[copy.index("\n") + 1:]
+
+    def norm(text):
+        return [ln.strip() for ln in tw.dedent(text).splitlines() if ln.strip()]
+
+    assert norm(copy) == norm(body)
+    assert len(norm(body)) > 80

@@ -69,39 +69,30 @@ NACC = 6
 #: work floats per ball in :func:`_one_ball` before race_contact's buffer (zero3, fb, mb, bp, g, gr, vg, tang,
 #: tmp: 3 each; res: 8)
 BALL_WORK = 35
-#: per-ball contributions: inner-ring force and moment, outer-ring force and moment (3 each), three unused, then
-#: the inner and outer power losses and the elastic energy (with diagnostics)
-NCONTRIB = 18
+#: per-ball contributions: inner-ring force and moment, outer-ring force and moment (3 each), then the inner and
+#: outer power losses and the elastic energy (with diagnostics)
+NCONTRIB = 15
 
 
 @njit(cache=True)
-def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, wk, ck):
+def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, zero3, fb, mb, bp,
+              g, gr, vg, tang, tmp, res, tbuf, fring, mring, fout, mout, ex):
     """Ball k on its two raceways and its Newton–Euler equations (the body of :func:`balls_on_raceways`).
 
-    ``wk``: this ball's work row (:data:`BALL_WORK` floats, then the Coulomb slice table); ``ck``
-    (:data:`NCONTRIB`, zeroed by the caller) ← its reactions on the inner ring (force, moment about c),
-    on the outer ring (force, moment), and with diagnostics its raceway power losses and elastic energy."""
+    zero3 … tbuf: work arrays (3 floats each, res 8, tbuf race_contact's buffer with the Coulomb slice table
+    at 44:); fring, mring, fout, mout ← this ball's reactions on the inner ring (force, moment about c) and on
+    the outer ring; ex ← with diagnostics its inner and outer raceway power losses and elastic energy."""
     alpha = gp[ly.G_ALPHA]
     g0 = gp[ly.G_GX]
     g1 = gp[ly.G_GX + 1]
     g2 = gp[ly.G_GX + 2]
-    zero3 = wk[0:3]
     for i in range(3):
         zero3[i] = 0.0
-    fb = wk[3:6]
-    mb = wk[6:9]
-    bp = wk[9:12]
-    g = wk[12:15]
-    gr = wk[15:18]
-    vg = wk[18:21]
-    tang = wk[21:24]
-    tmp = wk[24:27]
-    res = wk[27:35]
-    tbuf = wk[35:]
-    fring = ck[0:3]
-    mring = ck[3:6]
-    fout = ck[6:9]
-    mout = ck[9:12]
+        fring[i] = 0.0
+        mring[i] = 0.0
+        fout[i] = 0.0
+        mout[i] = 0.0
+        ex[i] = 0.0
     r = ball_row[k]
     par = rows[r]
     o = ly.N_RING + ly.N_BALL * k
@@ -145,9 +136,9 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
         diag[k, ly.D_AI] = math.atan2(-s * ua, -urr)
         diag[k, ly.D_SRI] = res[5]
         diag[k, ly.D_PI] = res[6]
-        ck[15] += res[6]
+        ex[0] += res[6]
         if di > 0.0:
-            ck[17] += 0.4 * par[kn.P_KI] * di ** 2.5
+            ex[2] += 0.4 * par[kn.P_KI] * di ** 2.5
     # ---- outer raceway (fixed)
     rr = math.hypot(b[1], b[2])
     cps = b[1] / rr
@@ -169,9 +160,9 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
         diag[k, ly.D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
         diag[k, ly.D_SRO] = res[5]
         diag[k, ly.D_PO] = res[6]
-        ck[16] += res[6]
+        ex[1] += res[6]
         if res[1] > 0.0:
-            ck[17] += 0.4 * par[kn.P_KO] * res[1] ** 2.5
+            ex[2] += 0.4 * par[kn.P_KO] * res[1] ** 2.5
         # orbital speed and spin relative to the orbiting frame
         r2 = b[1] * b[1] + b[2] * b[2]
         wm = (b[1] * v[2] - b[2] * v[1]) / r2
@@ -209,10 +200,14 @@ if "NUMBA_THREADING_LAYER" not in os.environ:
 
 @njit(cache=True, parallel=True)
 def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work, contrib):
-    """:func:`_one_ball` for every ball in a numba ``prange`` (threads: ``numba.set_num_threads``)."""
+    """:func:`_one_ball` for every ball in a numba ``prange`` (threads: ``numba.set_num_threads``), each with
+    its own work row; contrib[k] ← its reactions and diagnostics (layout of :func:`balls_on_raceways`)."""
     for k in prange(ball_row.shape[0]):
-        _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work[k],
-                  contrib[k])
+        wk = work[k]
+        ck = contrib[k]
+        _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, wk[0:3],
+                  wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21], wk[21:24], wk[24:27], wk[27:35],
+                  wk[35:], ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15])
 
 
 @njit(cache=True)
@@ -243,19 +238,136 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
     want = diag.shape[0] > 0
     # work rows of race_contact, followed by the slices of the Coulomb stand-in (the same for every contact)
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
-    work = np.empty((nb, BALL_WORK + 44 + 2 * nsl))
-    slice_table(nsl, work[0, BALL_WORK + 44:])
-    for k in range(1, nb):
-        for i in range(2 * nsl):
-            work[k, BALL_WORK + 44 + i] = work[0, BALL_WORK + 44 + i]
-    contrib = np.zeros((nb, NCONTRIB))
+    contrib = np.empty((nb, NCONTRIB))
     if threads:
+        work = np.empty((nb, BALL_WORK + 44 + 2 * nsl))
+        slice_table(nsl, work[0, BALL_WORK + 44:])
+        for k in range(1, nb):
+            for i in range(2 * nsl):
+                work[k, BALL_WORK + 44 + i] = work[0, BALL_WORK + 44 + i]
         _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work,
                         contrib)
-    else:  # one thread: the same per-ball code without the parallel region's overhead
+    else:
+        # one thread: the body of _one_ball written out in the loop (one set of work arrays, no parallel region,
+        # no call per ball: the call cost 13 % of a hub right-hand side, measured in one process, 40 paired
+        # rounds; written out: 1 %).  The same statements, so bitwise the same result as the threaded path
+        # (tests/unit/test_dyn_threads.py compares the two texts and the results).
+        wk = np.empty(BALL_WORK + 44 + 2 * nsl)
+        slice_table(nsl, wk[BALL_WORK + 44:])
+        ck = np.empty(NCONTRIB)
+        zero3, fb, mb, bp, g, gr, vg, tang, tmp = (wk[0:3], wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18],
+                                                   wk[18:21], wk[21:24], wk[24:27])
+        res = wk[27:35]
+        tbuf = wk[35:]
+        fr, mr, fo, mo, ex = ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15]
+        alpha = gp[ly.G_ALPHA]
+        g0 = gp[ly.G_GX]
+        g1 = gp[ly.G_GX + 1]
+        g2 = gp[ly.G_GX + 2]
+        for i in range(3):
+            zero3[i] = 0.0
         for k in range(nb):
-            _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work[k],
-                      contrib[k])
+            for i in range(NCONTRIB):
+                ck[i] = 0.0
+            # ---- BEGIN copy of the body of _one_ball (kept identical: bitwise the same as the threaded path)
+            r = ball_row[k]
+            par = rows[r]
+            o = ly.N_RING + ly.N_BALL * k
+            b = y[o:o + 3]
+            v = y[o + 3:o + 6]
+            w = y[o + 6:o + 9]
+            half_d = 0.5 * par[kn.P_D]
+            worb = (b[1] * v[2] - b[2] * v[1]) / (b[1] * b[1] + b[2] * b[2])
+            for i in range(3):
+                fb[i] = 0.0
+                mb[i] = 0.0
+            # ---- inner raceway: ball in the ring frame, groove centre in its meridian plane
+            for i in range(3):
+                tmp[i] = b[i] - c[i]
+            for i in range(3):
+                bp[i] = rm[0, i] * tmp[0] + rm[1, i] * tmp[1] + rm[2, i] * tmp[2]
+            rr = math.hypot(bp[1], bp[2])
+            cps = bp[1] / rr
+            sps = bp[2] / rr
+            xgi = rowx[r, ly.X_XGI]
+            ric = par[kn.P_RIC]
+            for i in range(3):
+                gr[i] = rm[i, 0] * xgi + rm[i, 1] * ric * cps + rm[i, 2] * ric * sps
+                g[i] = c[i] + gr[i]
+                tang[i] = -rm[i, 1] * sps + rm[i, 2] * cps
+            _cross(wtilt, gr, vg)
+            for i in range(3):
+                vg[i] += cd[i]
+            race_contact(b, v, w, g, vg, worb, c, cd, wring, par[kn.P_KI], par[kn.P_RI], half_d, alpha, lubs[2 * r], gp,
+                         rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang, fb, mb, fr, mr, res, tbuf)
+            qi = res[0]
+            di = res[1]
+            if want:
+                s = par[kn.P_SIGN]
+                ua = res[2] * ax[0] + res[3] * ax[1] + res[4] * ax[2]
+                urr = 0.0
+                for i in range(3):
+                    urr += res[2 + i] * (rm[i, 1] * cps + rm[i, 2] * sps)
+                diag[k, ly.D_QI] = qi
+                diag[k, ly.D_DI] = di
+                diag[k, ly.D_AI] = math.atan2(-s * ua, -urr)
+                diag[k, ly.D_SRI] = res[5]
+                diag[k, ly.D_PI] = res[6]
+                ex[0] += res[6]
+                if di > 0.0:
+                    ex[2] += 0.4 * par[kn.P_KI] * di ** 2.5
+            # ---- outer raceway (fixed)
+            rr = math.hypot(b[1], b[2])
+            cps = b[1] / rr
+            sps = b[2] / rr
+            rgo = rowx[r, ly.X_RGO]
+            g[0] = rowx[r, ly.X_XGO]
+            g[1] = rgo * cps
+            g[2] = rgo * sps
+            tang[0] = 0.0
+            tang[1] = -sps
+            tang[2] = cps
+            race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
+                         lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang, fb, mb, fo,
+                         mo, res, tbuf)
+            if want:
+                s = par[kn.P_SIGN]
+                diag[k, ly.D_QO] = res[0]
+                diag[k, ly.D_DO] = res[1]
+                diag[k, ly.D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
+                diag[k, ly.D_SRO] = res[5]
+                diag[k, ly.D_PO] = res[6]
+                ex[1] += res[6]
+                if res[1] > 0.0:
+                    ex[2] += 0.4 * par[kn.P_KO] * res[1] ** 2.5
+                # orbital speed and spin relative to the orbiting frame
+                r2 = b[1] * b[1] + b[2] * b[2]
+                wm = (b[1] * v[2] - b[2] * v[1]) / r2
+                diag[k, ly.D_WM] = wm
+                wx = w[0] - wm
+                wrad = w[1] * cps + w[2] * sps
+                wtan = -w[1] * sps + w[2] * cps
+                mag = math.sqrt(wx * wx + wrad * wrad + wtan * wtan)
+                sg = 1.0 if wx >= 0.0 else -1.0
+                diag[k, ly.D_WR] = sg * mag
+                diag[k, ly.D_BETA] = math.atan2(-s * wrad * sg, wx * sg)
+                diag[k, ly.D_QC] = 0.0
+                diag[k, ly.D_PC] = 0.0
+            # ---- the ball: ṙ = v, m v̇ = F + m g, J ω̇ = M
+            mass = par[kn.P_MASS]
+            jb = par[kn.P_JB]
+            dy[o] = v[0]
+            dy[o + 1] = v[1]
+            dy[o + 2] = v[2]
+            dy[o + 3] = fb[0] / mass + g0
+            dy[o + 4] = fb[1] / mass + g1
+            dy[o + 5] = fb[2] / mass + g2
+            dy[o + 6] = mb[0] / jb
+            dy[o + 7] = mb[1] / jb
+            dy[o + 8] = mb[2] / jb
+            # ---- END copy
+            for i in range(NCONTRIB):
+                contrib[k, i] = ck[i]
     # the reduction, serially in ball order (independent of the thread count)
     for k in range(nb):
         ck = contrib[k]
@@ -265,9 +377,9 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
             fout[i] += ck[6 + i]
             mout[i] += ck[9 + i]
         if want:
-            acc[A_PIN] += ck[15]
-            acc[A_POUT] += ck[16]
-            acc[A_EPOT] += ck[17]
+            acc[A_PIN] += ck[12]
+            acc[A_POUT] += ck[13]
+            acc[A_EPOT] += ck[14]
 
 
 @njit(cache=True, inline="always")
