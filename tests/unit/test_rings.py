@@ -128,7 +128,7 @@ def test_coefficients_scale_with_compliance(b7011, inner_coeffs):
 def test_disk_cache(tmp_path, monkeypatch, b7011):
     monkeypatch.setenv(inf.CACHE_ENV, str(tmp_path))
     inner, _ = estimate_sections(b7011)
-    st = coarse(inner, ghat_min=1e-2, decay_min=1e-2)
+    st = coarse(inner, ghat_min=1e-2, decay_min=1e-2, n_through=3, n_axial=6)
     first = compute_influence(inner, E, NU, b7011.ball_count, st)
     files = list(tmp_path.glob("*.npz"))
     assert [f.name for f in files] == [f"{first.key}.npz"] and not first.meta["cached"]
