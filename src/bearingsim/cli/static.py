@@ -12,6 +12,7 @@ from typing import Optional
 
 import typer
 
+from ..errors import InputError
 from . import options
 from .console import announce_compilation, make_console
 from .options import (
@@ -47,6 +48,8 @@ def static(
         "typical, severe, very_severe) or the factor e_C (0-1)"),
     reliability: float = typer.Option(90.0, "--reliability", help="Reliability in % for the modified life "
                                       "(ISO 281 reliability table: 90, 95, 96, 97, 98, 99 ... 99.95)"),
+    rings: str = typer.Option("rigid", "--rings", help="Ring model: rigid, or fe (elastic rings and seats by "
+                              "finite elements, coefficients cached on disk; docs/rings.md)"),
     as_json: JsonOpt = False,
 ):
     """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment), with the ISO 281
@@ -62,23 +65,42 @@ def static(
     lub, t = _operating_lubricant(lubricant, temperature)
     ec = _contamination(contamination)
     reliability_factor(reliability, "--reliability")
-    res = solve(b, loads, omega, control)
+    rings = _ring_model(rings)
+    if rings == "fe":
+        from ..rings.coupling import solve as solve_fe
+
+        res = solve_fe(b, loads, omega, control, rings="fe")
+    else:
+        res = solve(b, loads, omega, control)
     friction = None
     if res.converged:
         apply_rating(res, lub, t, ec, reliability)
         if lub is not None:
             friction = _friction(res, lub, t)
     if as_json:
-        d = res.to_dict()
+        from ..rings.coupling import result_dict
+
+        d = result_dict(res)  # the static schema plus "rings": the ring model (and its iterations for fe)
         if friction is not None:
             d["friction"] = friction
             d["friction_torque_N_m"] = friction.get("friction_torque_N_m")
             d["power_loss_W"] = friction.get("power_loss_W")
         typer.echo(json.dumps(d))
     else:
+        if rings == "fe":
+            make_console().print(f"rings: elastic (finite elements, docs/rings.md): {res.ring_iterations} offset "
+                                 f"iterations, last change {res.ring_residual * 1e9:.2g} nm")
         print_static(res, friction)
     if not res.converged:
         raise typer.Exit(1)
+
+
+def _ring_model(value: str) -> str:
+    """``--rings``: ``rigid`` or ``fe``; anything else is one line naming the option."""
+    v = str(value).strip().lower()
+    if v not in ("rigid", "fe"):
+        raise InputError("--rings", f"unknown ring model {value!r}", "use rigid or fe")
+    return v
 
 
 def _operating_lubricant(lubricant, temperature):
@@ -243,6 +265,8 @@ SpindleOut = out_option("Folder for the CSV and the Fig. 5 plot")
 def reproduce_spindle(
     out: SpindleOut = Path("out"),
     bearing: str = typer.Option("skf-7011-cdga-hc", "--bearing", help="Bearing to use (catalogue or TOML)"),
+    rings: str = typer.Option("rigid", "--rings", help="rigid, or fe: adds the axial stiffness with elastic (FE) "
+                              "rings next to the paper's FEM column (T3)"),
 ):
     """Axial stiffness of the SKF 7011 spindle bearing vs load and speed ([S0] in docs/references.md): tables
     T1–T3 side by side with the paper, its Fig. 5 as a plot, and a CSV."""
@@ -250,9 +274,10 @@ def reproduce_spindle(
     from ..studies.spindle import run_study
     from .output import output_folder, write_study
 
+    rings = _ring_model(rings)
     announce_compilation()
     out = output_folder(out, "--out")
-    study = run_study(load_bearing(bearing))
+    study = run_study(load_bearing(bearing), rings=rings)
     con = make_console()
     study.print_tables(con)
     csv, png = write_study(study, out, "spindle_axial_stiffness.csv", "spindle_axial_stiffness_fig5.png")
