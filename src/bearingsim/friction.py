@@ -76,12 +76,8 @@ _P_ATM = 101325.0  # [Pa]
 
 
 def _row_bearings(bearing) -> list:
-    """Single-row geometries of a bearing (the rows protocol of :mod:`bearingsim.geometry`; a plain
-    BallBearing without it is one row)."""
-    rows = getattr(bearing, "rows", None)
-    if rows:
-        return [getattr(r, "bearing", r) for r in rows]
-    return [bearing]
+    """Single-row geometries of a bearing (the rows protocol of :mod:`bearingsim.geometry`)."""
+    return [r.bearing for r in bearing.rows]
 
 
 def _static_equivalent_load(fr: float, fa: float, kind: str, contact_angle: float) -> float:

@@ -108,8 +108,8 @@ def _combine(lives) -> float:
 
 def _rows_and_ratings(bearing):
     """[(row bearing, row rating C [N])] of a bearing or a bearing system (0 when unknown)."""
-    rows = getattr(bearing, "rows", None)
-    if rows is None or (len(rows) == 1 and getattr(rows[0], "bearing", None) is bearing):
+    rows = bearing.rows  # the rows protocol (bearingsim.geometry): a BallBearing is one row of itself
+    if len(rows) == 1 and rows[0].bearing is bearing:
         return [(bearing, float(bearing.dynamic_load_rating))]
     c_unit = float(getattr(bearing, "dynamic_load_rating", 0.0) or 0.0)
     out = []
@@ -415,8 +415,8 @@ def fatigue_load_limit_estimate(c0: float, pitch_diameter: float) -> float:
 # ---- the summary of a solved operating point --------------------------------------------------------------
 def _unit_data(bearing):
     """(kind, nominal angle [rad], rows i for table 3, number of rows, row bearing, reason or None)."""
-    rows = getattr(bearing, "rows", None)
-    if rows is None or (len(rows) == 1 and getattr(rows[0], "bearing", None) is bearing):
+    rows = bearing.rows  # the rows protocol (bearingsim.geometry)
+    if len(rows) == 1 and rows[0].bearing is bearing:
         return bearing.kind, nominal_contact_angle(bearing), 1, 1, bearing, None
     row_b = rows[0].bearing
     if len(rows) > 2:

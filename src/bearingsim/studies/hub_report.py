@@ -350,11 +350,8 @@ def _assumptions(study) -> list[str]:
         from ..io import load_bearing
 
         b = load_bearing(d.get("bearing"))
-        rows = getattr(b, "rows", [b])
-        r0 = getattr(rows[0], "bearing", rows[0])
-        fi, fo = getattr(r0, "fi", None), getattr(r0, "fo", None)
-        if fi is not None:
-            items.append(f"groove curvature ratios f_i = {fi:.4f}, f_o = {fo:.4f}")
+        r0 = b.rows[0].bearing  # the rows protocol (bearingsim.geometry)
+        items.append(f"groove curvature ratios f_i = {r0.inner_conformity:.4f}, f_o = {r0.outer_conformity:.4f}")
     except Exception:  # noqa: BLE001
         pass
     items.append("load path: Fa, Fr and M in phase, Fa = 1890 N · M/600 N·m, Fr = 2785 N + 965 N · M/600 N·m "
