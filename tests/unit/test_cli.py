@@ -3,21 +3,10 @@ with exit status 2."""
 
 import json
 import math
-import shutil
-import subprocess
 
 import numpy as np
 import pytest
-
-SCRIPT = shutil.which("bearingsim")
-
-
-def run(*args, check=True):
-    assert SCRIPT is not None, "the console script `bearingsim` is not installed (pip install -e .)"
-    p = subprocess.run([SCRIPT, *args], capture_output=True, text=True)
-    if check:
-        assert p.returncode == 0, p.stderr
-    return p
+from _cli import run  # tests/unit/_cli.py: the installed console script
 
 
 @pytest.fixture(scope="module")

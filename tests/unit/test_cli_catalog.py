@@ -2,22 +2,11 @@
 estimate flags, --json against the API, unknown names with 'did you mean'."""
 
 import json
-import shutil
-import subprocess
 
 import pytest
+from _cli import run  # tests/unit/_cli.py: the installed console script
 
 from bearingsim import io
-
-SCRIPT = shutil.which("bearingsim")
-
-
-def run(*args, check=True):
-    assert SCRIPT is not None, "the console script `bearingsim` is not installed (pip install -e .)"
-    p = subprocess.run([SCRIPT, *args], capture_output=True, text=True)
-    if check:
-        assert p.returncode == 0, p.stderr
-    return p
 
 
 def test_list_shows_every_entry_with_its_columns():

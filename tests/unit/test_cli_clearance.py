@@ -2,23 +2,12 @@
 statics.clearance.OperatingClearance unchanged (JSON vs API), two closed forms of the model, one-line errors."""
 
 import json
-import shutil
-import subprocess
 
 import pytest
+from _cli import run  # tests/unit/_cli.py: the installed console script
 
 from bearingsim import io
 from bearingsim.statics.clearance import OperatingClearance
-
-SCRIPT = shutil.which("bearingsim")
-
-
-def run(*args, check=True):
-    assert SCRIPT is not None, "the console script `bearingsim` is not installed (pip install -e .)"
-    p = subprocess.run([SCRIPT, *args], capture_output=True, text=True)
-    if check:
-        assert p.returncode == 0, p.stderr
-    return p
 
 
 def test_json_equals_the_api_and_the_screen_shows_um():
