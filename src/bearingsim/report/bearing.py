@@ -83,6 +83,16 @@ def _input_rows(bearing) -> list:
     return out
 
 
+def _save(fig, path: Path, caption: str) -> tuple[str, str]:
+    """Write ``fig`` to ``path`` (PNG beside the page) and close it; (file name, caption)."""
+    import matplotlib.pyplot as plt
+
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path.name, caption
+
+
 def _figures(res, d: dict, out: Path, stem: str) -> list[tuple[str, str]]:
     """Write the figures; return (file name, caption) pairs."""
     import matplotlib
@@ -107,11 +117,8 @@ def _figures(res, d: dict, out: Path, stem: str) -> list[tuple[str, str]]:
             ax.plot(np.append(psi[m][order], psi[m][order][:1]), np.append(q, q[:1]), "o-", ms=3, label=lab)
         ax.set_title(f"row {r}: ball load Q [N]", fontsize=10)
         ax.legend(fontsize=7, loc="lower right")
-    fig.tight_layout()
-    name = f"{stem}_load_distribution.png"
-    fig.savefig(out / name, dpi=110)
-    plt.close(fig)
-    figs.append((name, "Ball load Q(ψ) per row (inner and outer contact) [N]; ψ = 0 along +y"))
+    figs.append(_save(fig, out / f"{stem}_load_distribution.png",
+                      "Ball load Q(ψ) per row (inner and outer contact) [N]; ψ = 0 along +y"))
 
     # 2 contact angles and 3 pressure vs azimuth
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 3.8))
@@ -131,12 +138,9 @@ def _figures(res, d: dict, out: Path, stem: str) -> list[tuple[str, str]]:
     a2.set_xlabel("azimuth ψ [deg]")
     a2.set_ylabel("maximum contact pressure [MPa]")
     a2.legend(fontsize=7)
-    fig.tight_layout()
-    name = f"{stem}_angles_pressure.png"
-    fig.savefig(out / name, dpi=110)
-    plt.close(fig)
-    figs.append((name, "Contact angles and maximum contact pressure against the azimuth; dotted: the 4200 MPa "
-                       "reference of ISO 76 (the pressure behind the static load rating C₀)"))
+    figs.append(_save(fig, out / f"{stem}_angles_pressure.png",
+                      "Contact angles and maximum contact pressure against the azimuth; dotted: the 4200 MPa "
+                      "reference of ISO 76 (the pressure behind the static load rating C₀)"))
 
     # 4 contact ellipse on the groove: the angular extent α ± a/(f D) of the most loaded ball's ellipse
     fig, ax = plt.subplots(figsize=(5.5, 3.8))
@@ -157,13 +161,10 @@ def _figures(res, d: dict, out: Path, stem: str) -> list[tuple[str, str]]:
     ax.set_xlabel("azimuth ψ [deg]")
     ax.set_ylabel("groove angle covered by the ellipse [deg]")
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    name = f"{stem}_ellipse.png"
-    fig.savefig(out / name, dpi=110)
-    plt.close(fig)
-    figs.append((name, "Angular extent of the contact ellipse on the groove (centre α, half-width a/(f·D)); the "
-                       "shoulder angle is not part of the bearing file, so truncation cannot be judged here — "
-                       "compare the upper edge with the groove's shoulder angle from the drawing"))
+    figs.append(_save(fig, out / f"{stem}_ellipse.png",
+                      "Angular extent of the contact ellipse on the groove (centre α, half-width a/(f·D)); the "
+                      "shoulder angle is not part of the bearing file, so truncation cannot be judged here — "
+                      "compare the upper edge with the groove's shoulder angle from the drawing"))
     return figs
 
 
@@ -208,13 +209,10 @@ def _map_figure(map_file: Path, out: Path, stem: str):
                 ax.plot(ds["speed"].values * sf, k.values * kf, "o-", ms=3)
             ax.set_xlabel(f"speed [{su}]")
             ax.set_ylabel(f"{lab} [{ku}]")
-        fig.tight_layout()
-        name = f"{stem}_map_stiffness.png"
-        fig.savefig(out / name, dpi=110)
-        plt.close(fig)
+        return _save(fig, out / f"{stem}_map_stiffness.png",
+                     f"Stiffness against speed per load, from {Path(map_file).name}")
     finally:
         ds.close()
-    return name, f"Stiffness against speed per load, from {Path(map_file).name}"
 
 
 def bearing_report(bearing, loads, speed: float = 0.0, *, out_dir, lubricant=None, temperature: float | None = None,
