@@ -13,8 +13,8 @@ from pathlib import Path
 import pytest
 from hypothesis import settings
 
-# the dynamic engine runs its ball contacts on all cores by default (issue 14): tests use one thread (set before
-# numba is imported — the fixtures import bearingsim lazily; inherited by the CLI subprocesses).
+# the dynamic engine can run its ball contacts on threads (issue 14): tests use one thread whatever the default
+# (set before numba is imported — the fixtures import bearingsim lazily; inherited by the CLI subprocesses).
 # tests/unit/test_dyn_threads.py runs its two-thread checks in a subprocess of its own.
 os.environ.setdefault("NUMBA_NUM_THREADS", "1")
 

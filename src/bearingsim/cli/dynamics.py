@@ -29,8 +29,8 @@ def simulate(case: CaseArg,
              json_out: bool = typer.Option(False, "--json", help="print a JSON summary (SI)"),
              quiet: bool = typer.Option(False, "--quiet", help="no progress bar"),
              threads: Optional[int] = typer.Option(
-                 None, "--threads", help="threads for the ball contacts (default: all cores, NUMBA_NUM_THREADS); "
-                 "the result is the same bit for bit")):
+                 None, "--threads", help="threads for the ball contacts (default 1; at most NUMBA_NUM_THREADS, "
+                 "the cores); the result is the same bit for bit")):
     """Run a dynamic simulation of rings, balls and cage in time."""
     import dataclasses
 

@@ -108,8 +108,9 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     console : a ``rich`` console for the progress bar and notes
     checkpoint_seconds : wall-clock interval between checkpoints [s] (default: the case's
         ``checkpoint_every = "… s"``, else :data:`CHECKPOINT_SECONDS`)
-    threads : threads for the ball contacts of the right-hand side (None: all cores, i.e.
-        NUMBA_NUM_THREADS; the trajectory is the same bit for bit for any count, :class:`Stepper`)
+    threads : threads for the ball contacts of the right-hand side (None: 1; at most
+        NUMBA_NUM_THREADS; the trajectory is the same bit for bit for any count; serial by default
+        because the threads did not pay on 2 cores, :attr:`Stepper.threads`)
 
     Returns :class:`Results`.  On a diverging step or when every ball has separated
     the data so far are saved and :class:`SimulationError` is raised.

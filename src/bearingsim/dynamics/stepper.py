@@ -59,8 +59,11 @@ class Stepper:
     jac_every: int = 20  #: steps between Jacobian refreshes (also after two rejections in a row)
     ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
     max_steps_per_interval: int = 10_000_000
-    #: threads for the ball contacts of the right-hand side (None: all of numba's, NUMBA_NUM_THREADS, i.e. the
-    #: cores; 1: serial).  The result is the same bit for bit (:func:`.forces.balls_on_raceways`).
+    #: threads for the ball contacts of the right-hand side (None or 1: serial; up to NUMBA_NUM_THREADS).  The
+    #: result is the same bit for bit (:func:`.forces.balls_on_raceways`).  Serial by default: on this 2-core
+    #: machine 2 threads ran the hub case at 206–252 wall s per simulated s against 142–146 on one (numba's
+    #: workqueue layer wakes its threads for every right-hand side, ~50 µs against ~100–300 µs of work; the omp
+    #: layer was far slower still), so the threads do not pay at this grain (issue 14).
     threads: int | None = None
     steps: int = 0
     rejected: int = 0
@@ -133,11 +136,11 @@ class Stepper:
 
 
 def resolve_threads(threads) -> int:
-    """The thread count of a run: None → numba's (NUMBA_NUM_THREADS, by default the cores); else an integer
-    in 1..NUMBA_NUM_THREADS (InputError otherwise)."""
+    """The thread count of a run: None → 1 (serial, :attr:`Stepper.threads`); else an integer in
+    1..NUMBA_NUM_THREADS (InputError otherwise)."""
     top = numba.config.NUMBA_NUM_THREADS
     if threads is None:
-        return int(top)
+        return 1
     if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 1 <= threads <= top:
         raise InputError("threads", f"must be an integer in 1..{top} (NUMBA_NUM_THREADS), got {threads!r}",
                          "e.g. --threads 1 for one core; set NUMBA_NUM_THREADS for more")
