@@ -35,6 +35,11 @@ _PUBLIC = {
     "solve_many": ("bearingsim.statics.jones_harris", "solve_many"),
     "StaticResult": ("bearingsim.statics.jones_harris", "StaticResult"),
     "solve_thrust": ("bearingsim.statics.axial", "solve_thrust"),
+    # lives, safety, friction, elastic rings, report
+    "rating_summary": ("bearingsim.life", "rating_summary"),
+    "friction_summary": ("bearingsim.friction", "friction_summary"),
+    "solve_elastic_rings": ("bearingsim.rings.coupling", "solve"),
+    "bearing_report": ("bearingsim.report.bearing", "bearing_report"),
     # sweeps
     "map_grid": ("bearingsim.sweep", "map_grid"),
     # lubrication
@@ -42,6 +47,8 @@ _PUBLIC = {
     # dynamics
     "load_case": ("bearingsim.io", "load_case"),
     "simulate": ("bearingsim.dynamics.run", "simulate"),
+    "hysteresis_estimate": ("bearingsim.dynamics.analysis", "hysteresis_estimate"),
+    "reduced_wh": ("bearingsim.studies.hub_reduced", "reduced_wh"),
     # errors
     "BearingSimError": ("bearingsim.errors", "BearingSimError"),
     "InputError": ("bearingsim.errors", "InputError"),
