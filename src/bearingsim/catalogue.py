@@ -327,6 +327,7 @@ def fit_interference(fit: str, diameter: float, seat: str) -> tuple[float, float
     return imin * 1e-6, 0.5 * (imin + imax) * 1e-6, imax * 1e-6
 
 
-__all__ = ["B_M", "FC_TABLE", "F0_TABLE", "CN_CLEARANCE", "INCH_BALLS", "METRIC_BALLS", "STANDARD_BALLS", "INNER_CONFORMITY",
+__all__ = ["B_M", "FC_TABLE", "F0_TABLE", "CN_CLEARANCE", "INCH_BALLS", "METRIC_BALLS", "STANDARD_BALLS",
+           "INNER_CONFORMITY",
            "OUTER_CONFORMITY", "BallSetEstimate", "factor_fc", "factor_f0", "dynamic_load_rating",
            "static_load_rating", "cn_clearance", "estimate_ball_set", "fit_interference"]

@@ -94,10 +94,8 @@ def _list_table(rows: list[dict]):
 def entry_details(name: str) -> dict:
     """One catalogue entry (or bearing file) in SI with its sources: the ``--json`` object of
     ``bearingsim catalog NAME``."""
-    from ..io import load_bearing, resolve_bearing_data
-
     from ..geometry import BallBearing
-    from ..io import catalog_names
+    from ..io import catalog_names, load_bearing, resolve_bearing_data
 
     data = resolve_bearing_data(name)
     b = load_bearing(name)

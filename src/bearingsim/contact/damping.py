@@ -24,7 +24,8 @@ in this work and are *not* used):
    its thickness h_c and no flow through it at these frequencies — and outside, the gap is h_c plus the Hertz
    separation g_H(r).  For a small extra approach dδ at (to first order) fixed contact size, the surfaces outside
    move as under a flat punch: dg = −dδ (1 − (2/π) asin(a/r)) (Johnson 1985, *Contact Mechanics*, ch. 3: the
-   surface displacements of the rigid flat punch's pressure and of the Hertz pressure outside the loaded circle), so the squeeze rate vanishes at the contact edge
+   surface displacements of the rigid flat punch's pressure and of the Hertz pressure outside the loaded circle),
+   so the squeeze rate vanishes at the contact edge
    and tends to δ̇ far away.  Axisymmetric Reynolds with no flux at r = a:
    r h³ p′ = −12 η δ̇ ∫_a^r f(s) s ds, f = 1 − (2/π) asin(a/s), p(∞) = 0; c = ∫ p 2πr dr / δ̇
    (:func:`squeeze_flattened_circle`, a quadrature).  As a → 0 it tends to the rigid 6 π η R₀²/h.

@@ -411,6 +411,7 @@ def rolling_resistance(regime_name: str, eta0: float, alpha: float, e_eff: float
 __all__ = ["four_parameter", "fit_four_parameter", "traction_curve", "mixed_weight", "mixed_coefficient",
            "roelands_viscosity", "limiting_shear_stress", "fluid_shear_stress", "elastic_plastic_mean_stress",
            "rolling_resistance_zh",
-           "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING", "KALKER_C11_A_OVER_B", "KALKER_C11_B_OVER_A",
+           "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING", "KALKER_C11_A_OVER_B",
+           "KALKER_C11_B_OVER_A",
            "kalker_c11", "solid_creep_stiffness", "film_creep_stiffness", "series_stiffness", "creep_slope",
            "solids_in_series_factor", "dyson_shear_modulus"]

@@ -247,4 +247,5 @@ def _bearing_from_dict(data: dict) -> BallBearing:
     )
 
 
-__all__ = ["catalog_names", "catalog_entries", "catalog_summary", "resolve_bearing_data", "load_bearing", "bearing_from_dict"]
+__all__ = ["catalog_names", "catalog_entries", "catalog_summary", "resolve_bearing_data", "load_bearing",
+           "bearing_from_dict"]
