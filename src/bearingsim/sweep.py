@@ -481,12 +481,18 @@ def run_tasks_locally(fn, args: list, keys: list, done, nworkers: int, what: str
     ctx = mp.get_context("spawn")
 
     with ProcessPoolExecutor(max_workers=min(nworkers, len(args)), mp_context=ctx) as ex:
-        futs = {ex.submit(fn, *a): k for k, a in zip(keys, args)}
+        futs = {}
+        n_done = 0
         try:
+            # submitting inside the try: a worker that dies while tasks are still being submitted breaks the
+            # pool there (BrokenProcessPool from submit), which is the same failure as one seen in a result
+            for k, a in zip(keys, args):
+                futs[ex.submit(fn, *a)] = k
             for f in cf_completed(list(futs)):
                 done(futs.pop(f), f.result())  # pop: the result is released once written
+                n_done += 1
         except BrokenProcessPool as exc:
-            raise MapError(f"a worker process of {job} died ({exc}); {len(futs)} of {len(args)} "
+            raise MapError(f"a worker process of {job} died ({exc}); {len(args) - n_done} of {len(args)} "
                            f"{what} unfinished (out of memory? try fewer --workers)") from None
         except BaseException:
             for f in futs:
