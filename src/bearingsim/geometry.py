@@ -127,13 +127,11 @@ class Row:
         if not isinstance(self.bearing, BallBearing):
             raise InputError("rows.bearing", f"expected a single-row bearing, got {type(self.bearing).__name__}",
                              "give a catalogue name or a single-row TOML file for every row")
-        if self.orientation not in (1.0, -1.0, 1, -1):
+        for name in ("position", "orientation", "axial_offset", "first_ball_azimuth"):  # a finite SI float each
+            object.__setattr__(self, name, _real(getattr(self, name), f"rows.{name}"))
+        if self.orientation not in (1.0, -1.0):
             raise InputError("rows.orientation", f"must be +1 or -1, got {self.orientation!r}",
                              "+1: contact angle as defined, -1: mirrored")
-        for name in ("position", "axial_offset", "first_ball_azimuth"):
-            v = getattr(self, name)
-            if not math.isfinite(v):
-                raise InputError(f"rows.{name}", f"must be finite, got {v!r}", "give a finite value")
 
     def vector(self, load_point: float = 0.0) -> np.ndarray:
         """Kernel parameter vector of this row (layout :mod:`bearingsim.statics.layout`), origin at

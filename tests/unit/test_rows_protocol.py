@@ -65,6 +65,9 @@ def test_row_checks_name_the_field(b7011):
         Row("skf-7011-cdga-hc")
     with pytest.raises(InputError, match="rows.position"):
         Row(b7011, position=float("nan"))
+    with pytest.raises(InputError, match="rows.axial_offset"):
+        Row(b7011, axial_offset="2 um")  # a string is refused by name (was a TypeError from math.isfinite)
+    assert Row(b7011, orientation=-1).orientation == -1.0 and isinstance(Row(b7011, position=1).position, float)
 
 
 def test_dynamic_row_extras_read_each_rows_bearing(mixed_pair):
