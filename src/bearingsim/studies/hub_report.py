@@ -391,24 +391,22 @@ def write_report(study: HysteresisStudy, folder) -> Path:
         "a factor 2 of the paper (SEED_FIG9 reading)."), "verdicts-section"))
     # figures
     figs = []
-    at50 = sorted((c for c in study.cells if c.frequency_hz == 50.0 and c.estimate is not None),
-                  key=lambda c: c.speed_kmh)
-    if at50:
-        _loops_figure(at50, lambda c: f"{c.speed_kmh:g} km/h", folder / "fig6_loops_50Hz.png",
-                      "loops at 50 Hz, one per vehicle speed ([S1] Fig. 6)")
-        figs.append(H.figure("fig6_loops_50Hz.png", "[S1] Fig. 6 analogue: tilt against moment at 50 Hz for each "
-                             "vehicle speed (thin: last simulated cycle; thick: mean loop of the cycles used)"))
-    else:
-        figs.append(H.paragraph("[S1] Fig. 6 analogue: no analysed cell at 50 Hz.", "note"))
-    at10 = sorted((c for c in study.cells if c.speed_kmh == 10.0 and c.estimate is not None),
-                  key=lambda c: c.frequency_hz)
-    if at10:
-        _loops_figure(at10, lambda c: f"{c.frequency_hz:g} Hz", folder / "fig7_loops_10kmh.png",
-                      "loops at 10 km/h, one per load frequency ([S1] Fig. 7)")
-        figs.append(H.figure("fig7_loops_10kmh.png", "[S1] Fig. 7 analogue: tilt against moment at 10 km/h for "
-                             "each load frequency"))
-    else:
-        figs.append(H.paragraph("[S1] Fig. 7 analogue: no analysed cell at 10 km/h.", "note"))
+    # [S1] Figs. 6 and 7: the loops at 50 Hz per vehicle speed, and at 10 km/h per load frequency
+    for pick, order, label, name, title, caption, none in (
+            (lambda c: c.frequency_hz == 50.0, lambda c: c.speed_kmh, lambda c: f"{c.speed_kmh:g} km/h",
+             "fig6_loops_50Hz.png", "loops at 50 Hz, one per vehicle speed ([S1] Fig. 6)",
+             "[S1] Fig. 6 analogue: tilt against moment at 50 Hz for each vehicle speed (thin: last simulated "
+             "cycle; thick: mean loop of the cycles used)", "[S1] Fig. 6 analogue: no analysed cell at 50 Hz."),
+            (lambda c: c.speed_kmh == 10.0, lambda c: c.frequency_hz, lambda c: f"{c.frequency_hz:g} Hz",
+             "fig7_loops_10kmh.png", "loops at 10 km/h, one per load frequency ([S1] Fig. 7)",
+             "[S1] Fig. 7 analogue: tilt against moment at 10 km/h for each load frequency",
+             "[S1] Fig. 7 analogue: no analysed cell at 10 km/h.")):
+        cells = sorted((c for c in study.cells if pick(c) and c.estimate is not None), key=order)
+        if cells:
+            _loops_figure(cells, label, folder / name, title)
+            figs.append(H.figure(name, caption))
+        else:
+            figs.append(H.paragraph(none, "note"))
     analysed = [c for c in study.cells if c.estimate is not None]
     if analysed:
         c8 = _pick(analysed, 10.0, 50.0)
