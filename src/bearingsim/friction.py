@@ -52,8 +52,9 @@ import numpy as np
 
 from .errors import InputError
 
-#: Palmgren's f0 by bearing type and lubrication method (Harris & Kotzalas 2007, after Palmgren 1959; values as
-#: recalled from the book's table, not re-checked against it in this session — docs/friction.md):
+#: Palmgren's f0 by bearing type and lubrication method (Harris & Kotzalas 2007, after Palmgren 1959).  STILL AS
+#: RECALLED: a search of 2026-11 (docs/friction.md, "Sources") found no primary reproduction of the table; an open
+#: code takes f0 = 0.75–2 for an oil-lubricated deep-groove bearing (no source given), nothing for angular contact:
 #: (low, high) of the tabulated range; the mean is used.  "oil_jet" is the column "oil bath, vertical
 #: shaft, or oil jet".  Paired / double-row angular contact sets use twice the single-row values (the
 #: table's double-row column), which is what summing two single rows gives.
@@ -62,8 +63,10 @@ PALMGREN_F0 = {
     "angular_contact": {"grease": (2.0, 2.0), "oil_mist": (1.7, 1.7), "oil_bath": (3.3, 3.3),
                         "oil_jet": (6.6, 6.6)},
 }
-#: Palmgren's f1 = z (P0/C0)^y: (z_low, z_high, y) per bearing type (Harris & Kotzalas 2007, after Palmgren 1959;
-#: as recalled, not re-checked in this session)
+#: Palmgren's f1 = z (P0/C0)^y: (z_low, z_high, y) per bearing type (Harris & Kotzalas 2007, after Palmgren 1959).
+#: STILL AS RECALLED (no primary reproduction found, docs/friction.md "Sources"); a second published variant for deep
+#: groove, f1 = 0.0007 (P0/C0)^0.5 (older SKF catalogue form, used by an open code), gives 1.5–1.8 × our f1 at
+#: P0/C0 = 0.2–0.01
 PALMGREN_F1 = {"deep_groove": (0.0004, 0.0006, 0.55), "angular_contact": (0.001, 0.001, 0.33)}
 METHODS = tuple(PALMGREN_F0["deep_groove"])
 MODELS = ("both", "palmgren", "physical")

@@ -159,19 +159,33 @@ def reference_rating_life(result) -> float | None:
 
 
 # ---- ISO 281:2007 table 3: X, Y, e ------------------------------------------------------------------
-#: relative axial load f₀F_a/C₀r of the rows below [-] (deep groove and 5°).  The table goes back to the axial
-#: load per ball F_a/(i Z D_w²) = 25, 50, 100, 150, 200, 300, 500, 750, 1000 lbf/in² (0.172 … 6.89 N/mm², ISO/TR
-#: 1281-1); since C₀r = f₀ i Z D_w² cos α (ISO 76), f₀F_a/C₀r = F_a/(i Z D_w² cos α) and the 10° and 15° columns
-#: are those loads divided by cos α, as ISO 281:2007 prints them (_REL_LOAD_BY_ANGLE)
+#: Sources of the values below (checked 2026-11, primary text of ISO 281:2007 not available to the project):
+#: deep-groove rows — the ANSI/ABMA 9 table reproduced in "Rules of Thumb for Mechanical Engineers" (table 7a,
+#: F_a/(iZD²) = 24.92 … 999.05 lbf/in², e 0.19 … 0.44, Y 2.30 … 1.00, X 0.56) and five independent open
+#: transcriptions (docs/life.md lists them); 20°–45° rows — NSK "New 40° angular contact ball bearings" leaflet
+#: (e 1.14, X 0.35, Y 0.57; pair 1/0.55 and 0.57/0.93) and the same transcriptions; 5°, 10°, 15° rows (single and
+#: double row, e) — two independent open transcriptions of ISO 281:2007 table 3 that agree value for value with the
+#: values below (docs/life.md).  The standard's text for the 5° single-row cell ("use the X, Y and e values
+#: applicable to single row radial contact groove ball bearings") is followed: a single-row 5° bearing takes the
+#: deep-groove e as well (before 2026-11 it took the 5° double-row e column, 0.23 … 0.52).
+#: Relative axial load f₀F_a/C₀r of the rows below [-] (deep groove).  The table goes back to the axial load per
+#: ball F_a/(i Z D_w²) = 25, 50, 100, 150, 200, 300, 500, 750, 1000 lbf/in² (0.172 … 6.89 N/mm², ISO/TR 1281-1);
+#: since C₀r = f₀ i Z D_w² cos α (ISO 76), f₀F_a/C₀r = F_a/(i Z D_w² cos α) and the 5°, 10° and 15° columns are
+#: those loads divided by cos α, as ISO 281:2007 prints them (_REL_LOAD_BY_ANGLE: 0.173 … 6.92 at 5°).  For
+#: angular contact bearings the column is i f₀F_a/C₀r (only one row of a double-row bearing or a face-to-face /
+#: back-to-back pair carries the axial load: per ball F_a/(Z D_w²)); NSK prints the same rule ("for i, use 2 for DB
+#: or DF, and 1 for DT").
 _REL_LOAD = (0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89)
-_REL_LOAD_BY_ANGLE = {5: _REL_LOAD, 10: (0.175, 0.350, 0.700, 1.05, 1.40, 2.10, 3.50, 5.25, 7.00),
+_REL_LOAD_BY_ANGLE = {5: (0.173, 0.346, 0.692, 1.04, 1.38, 2.08, 3.46, 5.19, 6.92),
+                      10: (0.175, 0.350, 0.700, 1.05, 1.40, 2.10, 3.50, 5.25, 7.00),
                       15: (0.178, 0.357, 0.714, 1.07, 1.43, 2.14, 3.57, 5.35, 7.14)}
 #: radial contact groove (deep-groove) ball bearings: e and Y (X = 0.56) for F_a/F_r > e, single and double row
 _DG_E = (0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44)
 _DG_Y = (2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00)
 #: angular contact groove ball bearings, nominal angle [deg] -> (e, (X, Y) single row F_a/F_r > e,
 #: (X1, Y1) double row / pair F_a/F_r ≤ e, (X2, Y2) double row / pair F_a/F_r > e); Y and e vary with the
-#: relative axial load for 5°, 10° and 15° (tuples over _REL_LOAD), X does not
+#: relative axial load for 5°, 10° and 15° (tuples over _REL_LOAD_BY_ANGLE), X does not.  The e of the 5° row
+#: is that of the double-row bearing (single row: the deep-groove values, :func:`_angular_entry`)
 _AC_SMALL = {
     5: ((0.23, 0.26, 0.30, 0.34, 0.36, 0.40, 0.45, 0.50, 0.52),
         (0.56, (2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00)),
@@ -216,13 +230,18 @@ def _at_load(values, rel_load: float, loads=_REL_LOAD) -> float:
 
 
 def _angular_entry(deg: int, rel_load: float | None):
-    """(e, (X, Y) single, (X1, Y1), (X2, Y2)) of the tabulated angle ``deg`` at the relative axial load."""
+    """(e, (X, Y) single, (X1, Y1), (X2, Y2)) of the tabulated angle ``deg`` at the relative axial load; for the
+    5°–15° rows e is the pair (e single row, e double row), which differ only at 5°."""
     if deg in _AC_LARGE:
         return _AC_LARGE[deg]
     e, (xs, ys), (x1, y1), (x2, y2) = _AC_SMALL[deg]
     col = _REL_LOAD_BY_ANGLE[deg]
-    return (_at_load(e, rel_load, col), (xs, _at_load(ys, rel_load, col)), (x1, _at_load(y1, rel_load, col)),
-            (x2, _at_load(y2, rel_load, col)))
+    e_pair = _at_load(e, rel_load, col)
+    if deg == 5:  # single row: "use the X, Y and e values applicable to single row radial contact groove ball bearings"
+        e_single, y_single = _at_load(_DG_E, rel_load), _at_load(_DG_Y, rel_load)
+    else:
+        e_single, y_single = e_pair, _at_load(ys, rel_load, col)
+    return ((e_single, e_pair), (xs, y_single), (x1, _at_load(y1, rel_load, col)), (x2, _at_load(y2, rel_load, col)))
 
 
 def needs_static_rating(contact_angle: float, kind: str = "angular_contact") -> bool:
@@ -236,8 +255,9 @@ def xy_factors(fr: float, fa: float, contact_angle: float, rows: int = 1, kind: 
 
     ``kind`` "deep_groove" or "angular_contact" (nominal ``contact_angle`` [rad], 5°–45°; between tabulated
     angles X, Y and e are interpolated linearly); ``rows`` 1 (single row, or a tandem set) or 2 (double
-    row, or a pair mounted face-to-face/back-to-back); ``rel_load`` = f₀F_a/C₀r [-], needed for deep-groove
-    bearings and angles below 20° (clamped to the table's 0.172–6.89).  ``None`` when the table has no
+    row, or a pair mounted face-to-face/back-to-back); ``rel_load`` [-] = f₀F_a/C₀r for deep-groove bearings and
+    i f₀F_a/C₀r for angular contact bearings (i = ``rows``, C₀r of the whole unit), needed for deep-groove bearings
+    and angles below 20° (clamped to the table's range, 0.172–6.89 for deep groove).  ``None`` when the table has no
     answer (angle outside 5°–45° for an angular contact bearing, or the relative load missing)."""
     fr, fa = abs(fr), abs(fa)
     ratio = fa / fr if fr > 0 else math.inf
@@ -262,7 +282,12 @@ def xy_factors(fr: float, fa: float, contact_angle: float, rows: int = 1, kind: 
     def mix(u, v):
         return (1.0 - t) * u + t * v
 
-    e = mix(a[0], b[0])
+    k_e = 0 if rows == 1 else 1
+
+    def e_of(entry):
+        return entry[0][k_e] if isinstance(entry[0], tuple) else entry[0]
+
+    e = mix(e_of(a), e_of(b))
     if rows == 1:
         x, y = (1.0, 0.0) if ratio <= e else (mix(a[1][0], b[1][0]), mix(a[1][1], b[1][1]))
     else:
@@ -521,10 +546,12 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
     if why:
         notes.append(why)
     else:
-        rel = f0 * fa / c0 if needs_static_rating(alpha, kind) else None
+        # ISO 281:2007 table 3: f₀F_a/C₀r (radial contact groove), i f₀F_a/C₀r (angular contact: one row of a pair
+        # face-to-face / back-to-back carries the axial load)
+        rel = (f0 * fa / c0 * (1 if kind == "deep_groove" else i_table)) if needs_static_rating(alpha, kind) else None
         rel_max = _REL_LOAD[-1] / math.cos(alpha)  # 6.89 (deep groove) … 7.14 (15°)
         if rel is not None and rel > rel_max * (1 + 1e-3):
-            notes.append(f"relative axial load f0·Fa/C0 = {rel:.3g} exceeds ISO 281 table 3 ({rel_max:.3g}): the "
+            notes.append(f"relative axial load (i)·f0·Fa/C0 = {rel:.3g} exceeds ISO 281 table 3 ({rel_max:.3g}): the "
                          "bearing is loaded beyond its permissible axial load; factors of the last row used")
         p = equivalent_dynamic_load(fr, fa, alpha, i_table, kind, rel)
         if p is None:
@@ -599,6 +626,53 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
     out["estimated"] = estimated
     out["life_notes"] = notes
     return out
+
+
+def _table3_columns(alpha: float, kind: str, rows: int, needs_rel: bool):
+    """The ISO 281 table-3 factors of one bearing as piecewise-linear columns in the relative axial load:
+    (grid, e, X_high, Y_high, X_low, Y_low) [-], exact for :func:`xy_factors` at this angle (every column's
+    breakpoints are in ``grid``; np.interp clamps like the table)."""
+    if needs_rel:
+        grid = sorted(set(_REL_LOAD) | {v for col in _REL_LOAD_BY_ANGLE.values() for v in col})
+    else:
+        grid = [1.0]
+    cols = []
+    for rel in grid:
+        r = rel if needs_rel else None
+        x_hi, y_hi, e = xy_factors(1.0, 1e9, alpha, rows, kind, r)
+        x_lo, y_lo, _ = xy_factors(1.0, 0.0, alpha, rows, kind, r)
+        cols.append((e, x_hi, y_hi, x_lo, y_lo))
+    return (np.asarray(grid),) + tuple(np.asarray(c) for c in zip(*cols))
+
+
+def basic_rating_life_arrays(bearing, fr, fa, speed) -> tuple[np.ndarray, np.ndarray]:
+    """ISO 281:2007 basic rating life of one bearing (or bearing set) over arrays of operating points:
+    (L10 [10^6 rev], L10h [h]), broadcast over ``fr`` (radial load magnitude [N]), ``fa`` (axial load [N]) and
+    ``speed`` [rad/s].  Same rules as :func:`rating_summary` (P = X F_r + Y F_a of table 3 with f₀F_a/C₀r, or
+    i f₀F_a/C₀r for angular contact, C₀ and f₀ from the bearing file or estimated, L10 = (C/P)^3,
+    L10h = 10^6 L10/(60 n)); moments are not part of ISO 281's P.  L10 is +inf where P = 0, NaN where ISO 281
+    gives no life (no C, angle outside table 3, more than two rows); L10h is NaN at speed 0."""
+    fr, fa, speed = np.broadcast_arrays(np.abs(np.asarray(fr, float)), np.abs(np.asarray(fa, float)),
+                                        np.abs(np.asarray(speed, float)))
+    kind, alpha, i_table, _, _, why, c, c0, f0, _, _, _ = _bearing_ratings(bearing)
+    nan = np.full(fr.shape, np.nan)
+    if why or not c > 0:
+        return nan, nan.copy()
+    needs_rel = needs_static_rating(alpha, kind)
+    if kind != "deep_groove" and xy_factors(1.0, 1.0, alpha, i_table, kind, 1.0) is None:
+        return nan, nan.copy()
+    grid, e_c, xh_c, yh_c, xl_c, yl_c = _table3_columns(alpha, kind, i_table, needs_rel)
+    rel = f0 * fa / c0 * (1 if kind == "deep_groove" else i_table) if needs_rel else np.ones(fr.shape)
+    e = np.interp(rel, grid, e_c)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        high = np.where(fr > 0, fa / np.where(fr > 0, fr, 1.0) > e, fa > 0)
+        x = np.where(high, np.interp(rel, grid, xh_c), np.interp(rel, grid, xl_c))
+        y = np.where(high, np.interp(rel, grid, yh_c), np.interp(rel, grid, yl_c))
+        p = x * fr + y * fa
+        l10 = np.where(p > 0, (c / np.where(p > 0, p, 1.0)) ** 3, np.inf)
+        n = speed * 30.0 / math.pi
+        l10h = np.where(n > 0, l10 * 1e6 / (60.0 * np.where(n > 0, n, 1.0)), np.nan)
+    return l10, l10h
 
 
 def iso281_life(result) -> float | None:

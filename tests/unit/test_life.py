@@ -220,7 +220,9 @@ def test_pairs_use_double_row_factors_and_tandem_single_row(b7011):
         pair = ar.make_system(b, arr, preload=200.0 if arr != "DT" else None)
         r = jh.solve(pair, jh.Loads(fr_y=fr, fa=fa), 3000 * math.pi / 30)
         assert r.converged
-        rel = 14.0 * fa / (2 * 17.3e3)
+        # ISO 281:2007 table 3 for angular contact bearings: i f0 Fa / C0r with C0r of the pair (i = 2 face-to-face
+        # or back-to-back, 1 tandem; NSK "for i, use 2 for DB or DF, and 1 for DT"); before 2026-11 i was left out
+        rel = rows * 14.0 * fa / (2 * 17.3e3)
         np.testing.assert_allclose(r.rating["equivalent_dynamic_load_N"],
                                    life.equivalent_dynamic_load(fr, fa, b.contact_angle, rows, "angular_contact", rel),
                                    rtol=1e-12, err_msg=f"ISO 281 6.1: {arr} pair")
