@@ -48,8 +48,9 @@ def static(
         "typical, severe, very_severe) or the factor e_C (0-1)"),
     reliability: float = typer.Option(90.0, "--reliability", help="Reliability in % for the modified life "
                                       "(ISO 281 reliability table: 90, 95, 96, 97, 98, 99 ... 99.95)"),
-    rings: str = typer.Option("rigid", "--rings", help="Ring model: rigid, or fe (elastic rings and seats by "
-                              "finite elements, coefficients cached on disk; docs/rings.md)"),
+    rings: Optional[str] = typer.Option(None, "--rings", help="Ring model: rigid, or fe (elastic rings and seats by "
+                                        "finite elements, coefficients cached on disk; docs/rings.md); default: "
+                                        "the bearing file's [rings] model (rigid without one)"),
     as_json: JsonOpt = False,
 ):
     """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment), with the ISO 281
@@ -65,7 +66,7 @@ def static(
     lub, t = _operating_lubricant(lubricant, temperature)
     ec = _contamination(contamination)
     reliability_factor(reliability, "--reliability")
-    rings = _ring_model(rings)
+    rings = _ring_model(rings, b)
     if rings == "fe":
         from ..rings.coupling import solve as solve_fe
 
@@ -95,8 +96,13 @@ def static(
         raise typer.Exit(1)
 
 
-def _ring_model(value: str) -> str:
-    """``--rings``: ``rigid`` or ``fe``; anything else is one line naming the option."""
+def _ring_model(value, bearing=None) -> str:
+    """``--rings``: ``rigid`` or ``fe``; anything else is one line naming the option.  None: the model of the
+    bearing file's ``[rings]`` table (:func:`bearingsim.rings.spec.model_of`; rigid without one)."""
+    if value is None:
+        from ..rings.spec import model_of
+
+        return model_of(bearing)
     v = str(value).strip().lower()
     if v not in ("rigid", "fe"):
         raise InputError("--rings", f"unknown ring model {value!r}", "use rigid or fe")

@@ -14,11 +14,11 @@ from ..errors import InputError
 from ..geometry import BallBearing
 from ..statics.arrangements import BearingSystem, Row, make_system, offset_for_preload
 from ..units import parse_quantity
-from .bearing import bearing_from_dict, load_bearing
+from .bearing import bearing_from_dict, check_sleeves, load_bearing, rings_from_dict
 from .clearance import operating_clearance_from_dict
 
 _KEYS = {"name", "description", "type", "arrangement", "row", "bearing", "rows", "row_spacing", "preload",
-         "preload_offset", "load_point", "dynamic_load_rating", "sources", "clearance"}
+         "preload_offset", "load_point", "dynamic_load_rating", "sources", "clearance", "rings"}
 _ROW_KEYS = {"bearing", "position", "orientation", "axial_offset", "first_ball_azimuth"}
 
 
@@ -54,6 +54,9 @@ def arrangement_from_dict(data: dict) -> BearingSystem:
         orientation = 1
         axial_offset = "10 um"
 
+    An optional ``[rings]`` table (:mod:`bearingsim.rings.spec`: ring model, seat sleeves, the boundary dimensions
+    of a double-row unit's shared outer ring and of its inner rings) is kept in ``notes["rings"]``.
+
     An optional ``[clearance]`` table (:func:`bearingsim.io.clearance.operating_clearance_from_dict`:
     fits, temperatures, speed) is applied after the preload: the preload of the file is the preload of
     the set as supplied (unmounted, at the reference temperature); the operating preload before and after
@@ -66,6 +69,8 @@ def arrangement_from_dict(data: dict) -> BearingSystem:
     notes = dict(data.get("sources", {}))
     if "description" in data:
         notes["description"] = data["description"]
+    if "rings" in data:  # ring model, seat sleeves and the shared ring dimensions of a unit (rings.spec)
+        notes["rings"] = rings_from_dict(data["rings"], unit=True)
     load_point = parse_quantity(data["load_point"], "length", "load_point") if "load_point" in data else 0.0
     rating = parse_quantity(data["dynamic_load_rating"], "force", "dynamic_load_rating") \
         if "dynamic_load_rating" in data else None
@@ -123,6 +128,11 @@ def arrangement_from_dict(data: dict) -> BearingSystem:
         b = _row_bearing(spec, "row")
         spacing = parse_quantity(data["row_spacing"], "length", "row_spacing") if "row_spacing" in data else None
         system = make_system(b, data["arrangement"], spacing, preload, offset, load_point, name, rating, notes)
+    if "rings" in notes:
+        spec = notes["rings"]
+        od = spec.outer_ring[0] or max(r.bearing.outside_diameter for r in system.rows)
+        bore = spec.inner_rings[0] or min(r.bearing.bore if r.bearing.bore > 0 else float("inf") for r in system.rows)
+        check_sleeves(spec, 0.0 if bore == float("inf") else bore, od)
     if clearance_change is not None:
         system = clearance_change.apply(system)
     return system

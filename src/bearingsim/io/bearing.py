@@ -26,8 +26,11 @@ _BEARING_KEYS = {
     "outer_groove_radius", "inner_conformity", "outer_conformity", "contact_angle",
     "diametral_clearance", "ball_material", "ring_material", "bore", "outside_diameter", "width",
     "dynamic_load_rating", "limiting_speed", "description", "sources",
-    "static_load_rating", "geometry_factor_f0", "fatigue_load_limit",
+    "static_load_rating", "geometry_factor_f0", "fatigue_load_limit", "rings",
 }
+_RINGS_KEYS = {"model", "housing", "shaft"}
+_RINGS_UNIT_KEYS = {"outer_ring", "inner_rings"}  # arrangement files (double-row units) only
+_SLEEVE_KEYS = {"housing": "outer_diameter", "shaft": "inner_diameter"}
 
 
 
@@ -147,6 +150,104 @@ def _material(value, field: str) -> Material:
                      'write ball_material = "silicon_nitride" or a [ball_material] table')
 
 
+def _sleeve(value, field: str):
+    """``[rings.housing]`` / ``[rings.shaft]`` → :class:`bearingsim.rings.spec.Sleeve` (SI)."""
+    from ..rings.spec import Sleeve
+
+    key = _SLEEVE_KEYS[field.rsplit(".", 1)[1]]
+    if not isinstance(value, dict):
+        raise InputError(field, f"expected a table, got {value!r}"[:120],
+                         f'write [{field}] with {key} = "... mm" (and optionally material)')
+    known = {key, "material", "youngs_modulus", "poisson_ratio", "rigid"}
+    unknown = sorted(set(value) - known)
+    if unknown:
+        raise InputError(f"{field}.{unknown[0]}", "unknown key", f"[{field}] takes {', '.join(sorted(known))}")
+    rigid = value.get("rigid", False)
+    if not isinstance(rigid, bool):
+        raise InputError(f"{field}.rigid", f"expected true or false, got {rigid!r}", "rigid = true (a rigid seat)")
+    if rigid:
+        extra = sorted(set(value) - {"rigid"})
+        if extra:
+            raise InputError(f"{field}.{extra[0]}", "a rigid seat has no sleeve dimensions or material",
+                             f"remove {extra[0]} or rigid = true")
+        return Sleeve(rigid=True)
+    if key not in value:
+        raise InputError(f"{field}.{key}", "missing", f'give {key} = "... mm"'
+                         + (' ("0 mm" for a solid shaft)' if key == "inner_diameter" else "") + " or rigid = true")
+    dia = parse_quantity(value[key], "length", f"{field}.{key}")
+    if not (math.isfinite(dia) and dia >= 0 and (dia > 0 or key == "inner_diameter")):
+        raise InputError(f"{field}.{key}", f"must be a positive length, got {value[key]!r}", 'e.g. "120 mm"')
+    e = nu = None
+    name = ""
+    if "material" in value:
+        mat = get_material(value["material"], f"{field}.material")
+        e, nu, name = mat.youngs_modulus, mat.poisson_ratio, mat.name
+    if "youngs_modulus" in value:
+        e = parse_quantity(value["youngs_modulus"], "pressure", f"{field}.youngs_modulus")
+        if not (math.isfinite(e) and e > 0):
+            raise InputError(f"{field}.youngs_modulus", f"must be positive, got {value['youngs_modulus']!r}",
+                             'e.g. "208 GPa"')
+        name = name or "user input"
+    if "poisson_ratio" in value:
+        pr = value["poisson_ratio"]
+        if isinstance(pr, bool) or not isinstance(pr, (int, float)) or not 0.0 <= pr < 0.5:
+            raise InputError(f"{field}.poisson_ratio", f"expected a number in [0, 0.5), got {pr!r}", "e.g. 0.3")
+        nu = float(pr)
+    return Sleeve(float(dia), e, nu, False, name)
+
+
+def rings_from_dict(value, field: str = "rings", unit: bool = False):
+    """The ``[rings]`` table of a bearing file (``unit``: of an arrangement file, which may also give the shared
+    ring dimensions ``[rings.outer_ring]`` and ``[rings.inner_rings]``) → :class:`bearingsim.rings.spec.RingSpec`
+    (SI).  Format: :mod:`bearingsim.rings.spec`; unknown keys and wrong units are an :class:`InputError` naming
+    the field."""
+    from ..rings.spec import RING_MODELS, RingSpec
+
+    if not isinstance(value, dict):
+        raise InputError(field, f"expected a table, got {value!r}"[:120], '[rings] with model = "fe" or "rigid"')
+    known = _RINGS_KEYS | (_RINGS_UNIT_KEYS if unit else set())
+    unknown = sorted(set(value) - known)
+    if unknown:
+        fix = f"[{field}] takes {', '.join(sorted(known))}"
+        if unknown[0] in _RINGS_UNIT_KEYS:
+            fix = f"{unknown[0]} belongs in an arrangement file (double-row unit); " + fix
+        raise InputError(f"{field}.{unknown[0]}", "unknown key", fix)
+    model = value.get("model", "rigid")
+    if model not in RING_MODELS:
+        raise InputError(f"{field}.model", f"unknown ring model {model!r}", 'use model = "rigid" or "fe"')
+    housing = _sleeve(value["housing"], f"{field}.housing") if "housing" in value else None
+    shaft = _sleeve(value["shaft"], f"{field}.shaft") if "shaft" in value else None
+    dims = {}
+    for key, names in (("outer_ring", ("outside_diameter", "width")), ("inner_rings", ("bore", "width"))):
+        t = value.get(key, {})
+        f = f"{field}.{key}"
+        if not isinstance(t, dict):
+            raise InputError(f, f"expected a table, got {t!r}"[:120], f"write [{f}] with {' and '.join(names)}")
+        bad = sorted(set(t) - set(names))
+        if bad:
+            raise InputError(f"{f}.{bad[0]}", "unknown key", f"[{f}] takes {', '.join(names)}")
+        vals = []
+        for n in names:
+            v = parse_quantity(t[n], "length", f"{f}.{n}") if n in t else 0.0
+            if not (math.isfinite(v) and v >= 0 and (v > 0 or n not in t)):
+                raise InputError(f"{f}.{n}", f"must be a positive length, got {t[n]!r}", 'e.g. "40 mm"')
+            vals.append(float(v))
+        dims[key] = tuple(vals)
+    return RingSpec(model, housing, shaft, dims["outer_ring"], dims["inner_rings"])
+
+
+def check_sleeves(spec, bore: float, outside_diameter: float, field: str = "rings") -> None:
+    """The sleeves of ``spec`` lie beyond the ring seats (housing outside diameter > D, shaft bore < d) [m]."""
+    h, s = spec.housing, spec.shaft
+    if h is not None and not h.rigid and outside_diameter > 0 and not h.diameter > outside_diameter:
+        raise InputError(f"{field}.housing.outer_diameter", f"{h.diameter * 1e3:.4g} mm is not larger than the "
+                         f"bearing's outside diameter {outside_diameter * 1e3:.4g} mm",
+                         "give the housing's outside diameter (larger than the bearing's)")
+    if s is not None and not s.rigid and bore > 0 and not s.diameter < bore:
+        raise InputError(f"{field}.shaft.inner_diameter", f"{s.diameter * 1e3:.4g} mm is not smaller than the "
+                         f"bearing's bore {bore * 1e3:.4g} mm", 'give the shaft\'s bore ("0 mm": solid shaft)')
+
+
 def _conformity(data: dict, side: str, ball_diameter: float) -> float:
     kr, kc = f"{side}_groove_radius", f"{side}_conformity"
     if kr in data and kc in data:
@@ -235,6 +336,9 @@ def _bearing_from_dict(data: dict) -> BallBearing:
     notes = dict(src) if isinstance(src, dict) else {"sources": str(src)}
     if "description" in data:
         notes["description"] = str(data["description"])
+    if "rings" in data:
+        notes["rings"] = rings_from_dict(data["rings"])
+        check_sleeves(notes["rings"], opt("bore", "length"), opt("outside_diameter", "length"))
     return BallBearing(
         name=str(data.get("name", "bearing")), kind=kind, ball_diameter=d, ball_count=z, pitch_diameter=dm,
         inner_conformity=fi, outer_conformity=fo, contact_angle=alpha,
@@ -248,4 +352,4 @@ def _bearing_from_dict(data: dict) -> BallBearing:
 
 
 __all__ = ["catalog_names", "catalog_entries", "catalog_summary", "resolve_bearing_data", "load_bearing",
-           "bearing_from_dict"]
+           "bearing_from_dict", "rings_from_dict", "check_sleeves"]

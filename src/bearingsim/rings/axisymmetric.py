@@ -66,10 +66,12 @@ class HarmonicRing:
     radial_harmonics : None (the radial seat holds every harmonic) or the harmonics it holds, e.g. (1,): the
         far surface of a seat sleeve follows the shaft's rigid translation and tilt (harmonic 1, where U and W
         are held there) and is free for the other harmonics
+    second_material : None, or (mask, E₂ [Pa], ν₂): the points x (2 × n, [m]) where ``mask(x)`` is true have the
+        second material (a seat sleeve of another material; element boundaries must follow the interface)
     """
 
     def __init__(self, mesh, youngs_modulus: float, poisson_ratio: float, radial_fixed=(), axial_fixed=(),
-                 free: bool = False, radial_harmonics=None):
+                 free: bool = False, radial_harmonics=None, second_material=None):
         from skfem import Basis, BilinearForm, ElementQuad2, ElementVector, asm
 
         e, nu = float(youngs_modulus), float(poisson_ratio)
@@ -89,24 +91,47 @@ class HarmonicRing:
         self.free = bool(free)
         lam = e * nu / ((1 + nu) * (1 - 2 * nu))
         mu = e / (2 * (1 + nu))
+        if second_material is not None:
+            mask, e2, nu2 = second_material
+            e2, nu2 = float(e2), float(nu2)
+            if not (math.isfinite(e2) and e2 > 0 and 0.0 <= nu2 < 0.5):
+                raise InputError("second_material", f"E = {e2!r} Pa, ν = {nu2!r} is not an elastic material",
+                                 "give E > 0 and 0 ≤ ν < 0.5")
+            lam1, mu1 = lam, mu
+            lam2, mu2 = e2 * nu2 / ((1 + nu2) * (1 - 2 * nu2)), e2 / (2 * (1 + nu2))
+
+            def lam(x):
+                return np.where(mask(x), lam2, lam1)
+
+            def mu(x):
+                return np.where(mask(x), mu2, mu1)
+        else:
+            lam_c, mu_c = lam, mu
+
+            def lam(x):
+                return lam_c
+
+            def mu(x):
+                return mu_c
         self.basis = Basis(mesh, ElementVector(ElementQuad2(), 3), intorder=5)
         self.scalar_basis = Basis(mesh, ElementQuad2(), intorder=5)
 
         @BilinearForm
         def a00(u, v, w):
             r = w.x[0]
-            return _energy(_strains(u, r, 0), _strains(v, r, 0), lam, mu) * r
+            return _energy(_strains(u, r, 0), _strains(v, r, 0), lam(w.x), mu(w.x)) * r
 
         @BilinearForm
         def a01(u, v, w):
             r = w.x[0]
-            return (_energy(_strains(u, r, 0), _strains(v, r, 1), lam, mu)
-                    + _energy(_strains(u, r, 1), _strains(v, r, 0), lam, mu)) * r
+            la, m = lam(w.x), mu(w.x)
+            return (_energy(_strains(u, r, 0), _strains(v, r, 1), la, m)
+                    + _energy(_strains(u, r, 1), _strains(v, r, 0), la, m)) * r
 
         @BilinearForm
         def a11(u, v, w):
             r = w.x[0]
-            return _energy(_strains(u, r, 1), _strains(v, r, 1), lam, mu) * r
+            return _energy(_strains(u, r, 1), _strains(v, r, 1), lam(w.x), mu(w.x)) * r
 
         self.a00, self.a01, self.a11 = (asm(f, self.basis).tocsr() for f in (a00, a01, a11))
         comp = self.basis.split_indices()  # dofs of U, W, V; index k of each = scalar dof k

@@ -42,8 +42,7 @@ from ..statics import jones_harris as jh
 from ..statics import layout as kn
 from .influence import InfluenceSettings, RingInfluence, compute_influence
 from .section import estimate_sections
-
-RING_MODELS = ("rigid", "fe")
+from .spec import RING_MODELS  # ("rigid", "fe")
 
 
 @dataclass
@@ -70,18 +69,33 @@ class ElasticRings:
 def ring_model(bearing, youngs_modulus: float | None = None, poisson_ratio: float | None = None,
                settings: InfluenceSettings | None = None, shoulder_fraction: float = 0.25,
                shaft_bore_fraction: float | None = 0.5, housing_od_factor: float | None = 1.5,
-               cache: bool = True) -> ElasticRings:
+               cache: bool = True, housing="file", shaft="file") -> ElasticRings:
     """Influence coefficients of the rings of every row of ``bearing`` (ring material of each row's bearing unless
     ``youngs_modulus`` [Pa] / ``poisson_ratio`` are given; sections from :func:`.section.estimate_sections` with
-    the given seat sleeves; coefficients from the disk cache when present)."""
+    the given seat sleeves; coefficients from the disk cache when present).
+
+    Seats: ``housing`` / ``shaft`` are a :class:`.spec.Sleeve`, None (the sleeve from ``housing_od_factor`` /
+    ``shaft_bore_fraction``; None there: a rigid seat) or ``"file"`` (default): the sleeve of the bearing file's
+    ``[rings]`` table (:func:`.spec.spec_of`) when it gives one, else the fraction."""
+    from .spec import spec_of
+
+    spec = spec_of(bearing)
+    if housing == "file":
+        housing = spec.housing if spec is not None else None
+    if shaft == "file":
+        shaft = spec.shaft if spec is not None else None
     rows = []
     desc = {"model": "fe", "shoulder_fraction": shoulder_fraction, "shaft_bore_fraction": shaft_bore_fraction,
             "housing_od_factor": housing_od_factor, "rows": []}
+    if housing is not None or shaft is not None:
+        desc["housing"] = None if housing is None else _sleeve_desc(housing)
+        desc["shaft"] = None if shaft is None else _sleeve_desc(shaft)
     for row in bearing.rows:
         b = row.bearing
         e = float(youngs_modulus) if youngs_modulus is not None else b.ring_material.youngs_modulus
         nu = float(poisson_ratio) if poisson_ratio is not None else b.ring_material.poisson_ratio
-        inner, outer = estimate_sections(b, shoulder_fraction, shaft_bore_fraction, housing_od_factor)
+        inner, outer = estimate_sections(b, shoulder_fraction, shaft_bore_fraction, housing_od_factor,
+                                         housing=housing, shaft=shaft)
         ci = compute_influence(inner, e, nu, b.ball_count, settings, cache)
         co = compute_influence(outer, e, nu, b.ball_count, settings, cache)
         rows.append((ci, co))
@@ -90,6 +104,11 @@ def ring_model(bearing, youngs_modulus: float | None = None, poisson_ratio: floa
                              "seconds": ci.seconds + co.seconds, "cached": bool(ci.meta.get("cached")
                                                                                 and co.meta.get("cached"))})
     return ElasticRings(rows, desc)
+
+
+def _sleeve_desc(s) -> dict:
+    return {"rigid": bool(s.rigid), "diameter_m": float(s.diameter), "youngs_modulus_Pa": s.youngs_modulus,
+            "poisson_ratio": s.poisson_ratio, "material": s.material}
 
 
 def expand_rows(rows0: np.ndarray, offsets: np.ndarray) -> np.ndarray:

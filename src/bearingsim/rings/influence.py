@@ -140,7 +140,9 @@ def cache_dir() -> Path:
 def cache_key(section: RingSection, youngs_modulus: float, poisson_ratio: float, ball_count: int,
               settings: dict) -> str:
     """sha256 of every input of the computation (section, material, Z, resolved settings, version)."""
-    payload = {"version": CACHE_VERSION, "section": asdict(section), "E": float(youngs_modulus),
+    sec = {k: v for k, v in asdict(section).items()
+           if not (k in ("sleeve_youngs_modulus", "sleeve_poisson_ratio") and v is None)}  # keys of v2 files kept
+    payload = {"version": CACHE_VERSION, "section": sec, "E": float(youngs_modulus),
                "nu": float(poisson_ratio), "Z": int(ball_count), "settings": settings}
     return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
 
@@ -171,8 +173,16 @@ def compute_influence(section: RingSection, youngs_modulus: float, poisson_ratio
     face = "face_minus" if section.support_face_z < 0 else "face_plus"
     # a rigid seat holds every harmonic; the far surface of a seat sleeve (a hollow shaft's bore, a housing's
     # outside) only follows the rigid translation and tilt of the shaft/housing (harmonic 1)
+    second = None
+    if section.sleeve_radius is not None and (section.sleeve_youngs_modulus is not None
+                                              or section.sleeve_poisson_ratio is not None):
+        # the seat sleeve of another material: the elements beyond the ring's seat radius
+        es = section.sleeve_youngs_modulus if section.sleeve_youngs_modulus is not None else youngs_modulus
+        nus = section.sleeve_poisson_ratio if section.sleeve_poisson_ratio is not None else poisson_ratio
+        seat, sgn = section.seat_radius, section.sign
+        second = (lambda x: sgn * (x[0] - seat) < 0.0, es, nus)
     ring = HarmonicRing(mesh, youngs_modulus, poisson_ratio, radial_fixed=("seat",), axial_fixed=(face,),
-                        radial_harmonics=None if section.sleeve_radius is None else (1,))
+                        radial_harmonics=None if section.sleeve_radius is None else (1,), second_material=second)
     p = section.contact_point
     nin = section.inward_normal
     tan = np.array([-nin[1], nin[0]])

@@ -49,6 +49,7 @@ class RingSection:
     half_width : B/2
     contact_angle : nominal contact angle α₀ [rad] (where the unit loads act)
     sleeve_radius : far radius of the seat sleeve (shaft bore or housing outside radius), None for a rigid seat
+    sleeve_youngs_modulus [Pa], sleeve_poisson_ratio [-] : the sleeve's material, None: the ring's
     """
 
     kind: str
@@ -59,6 +60,8 @@ class RingSection:
     half_width: float
     contact_angle: float
     sleeve_radius: float | None = None
+    sleeve_youngs_modulus: float | None = None
+    sleeve_poisson_ratio: float | None = None
 
     def __post_init__(self):
         if self.kind not in ("inner", "outer"):
@@ -142,10 +145,14 @@ class RingSection:
 
 
 def estimate_sections(bearing, shoulder_fraction: float = 0.25, shaft_bore_fraction: float | None = 0.5,
-                      housing_od_factor: float | None = 1.5) -> tuple[RingSection, RingSection]:
+                      housing_od_factor: float | None = 1.5, housing=None,
+                      shaft=None) -> tuple[RingSection, RingSection]:
     """(inner, outer) :class:`RingSection` of a single-row ``bearing`` from its bore, outside diameter and width
     (see the module docstring for the estimate) [m].  ``shaft_bore_fraction`` (shaft bore / d) and
     ``housing_od_factor`` (housing outside diameter / D) size the seat sleeves; None gives a rigid seat.
+    ``housing`` / ``shaft`` (:class:`bearingsim.rings.spec.Sleeve`, e.g. from the bearing file's ``[rings]``
+    table) replace the fraction of that side: absolute diameter (a shaft bore of 0 is a solid shaft,
+    :data:`bearingsim.rings.spec.SOLID_SHAFT_BORE_FRACTION`), material, or a rigid seat.
     InputError when the boundary dimensions are unknown."""
     for name in ("bore", "outside_diameter", "width"):
         if not getattr(bearing, name, 0.0) > 0:
@@ -166,13 +173,28 @@ def estimate_sections(bearing, shoulder_fraction: float = 0.25, shaft_bore_fract
     if housing_od_factor is not None and not 1.1 <= housing_od_factor <= 4.0:
         raise InputError("housing_od_factor", f"{housing_od_factor!r} is not a housing / bearing outside diameter",
                          "use 1.1–4, or None for a rigid seat")
+    si = None if shaft_bore_fraction is None else 0.5 * bearing.bore * shaft_bore_fraction
+    so = None if housing_od_factor is None else 0.5 * bearing.outside_diameter * housing_od_factor
+    si, ei, nui = _sleeve(shaft, si, 0.5 * bearing.bore)
+    so, eo, nuo = _sleeve(housing, so, 0.5 * bearing.outside_diameter)
     inner = RingSection("inner", 0.5 * bearing.bore, rbi + h, rbi, bearing.inner_conformity * dw,
-                        0.5 * bearing.width, alpha,
-                        None if shaft_bore_fraction is None else 0.5 * bearing.bore * shaft_bore_fraction)
+                        0.5 * bearing.width, alpha, si, ei, nui)
     outer = RingSection("outer", 0.5 * bearing.outside_diameter, rbo - h, rbo, bearing.outer_conformity * dw,
-                        0.5 * bearing.width, alpha,
-                        None if housing_od_factor is None else 0.5 * bearing.outside_diameter * housing_od_factor)
+                        0.5 * bearing.width, alpha, so, eo, nuo)
     return inner, outer
+
+
+def _sleeve(sleeve, radius, seat_radius):
+    """(sleeve radius or None, E or None, ν or None) [m, Pa] of a :class:`bearingsim.rings.spec.Sleeve` (None:
+    ``radius`` from the fractions, the ring's material)."""
+    if sleeve is None:
+        return radius, None, None
+    if sleeve.rigid:
+        return None, None, None
+    from .spec import SOLID_SHAFT_BORE_FRACTION
+
+    r = 0.5 * sleeve.diameter if sleeve.diameter > 0 else SOLID_SHAFT_BORE_FRACTION * seat_radius
+    return r, sleeve.youngs_modulus, sleeve.poisson_ratio
 
 
 def _graded(a: float, b: float, focus: float, h_min: float, n: int) -> np.ndarray:
