@@ -51,6 +51,12 @@ def static(
     rings: Optional[str] = typer.Option(None, "--rings", help="Ring model: rigid, or fe (elastic rings and seats by "
                                         "finite elements, coefficients cached on disk; docs/rings.md); default: "
                                         "the bearing file's [rings] model (rigid without one)"),
+    tilt: str = typer.Option("free", "--tilt", help="Inner-ring tilt: free (moment equilibrium: the ring tilts under "
+                             "Fr + Fa, the moment loads are the only moments) or fixed (tilt held at --misalignment, "
+                             "a stiff shaft in a stiff housing; the reaction moment is reported; docs/life.md)"),
+    misalignment: Optional[str] = typer.Option(
+        None, "--misalignment", help='With --tilt fixed: tilt of the inner ring about z (the axis of --moment), '
+        'e.g. "0.5 mrad" (default 0)'),
     as_json: JsonOpt = False,
 ):
     """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment), with the ISO 281
@@ -67,12 +73,15 @@ def static(
     ec = _contamination(contamination)
     reliability_factor(reliability, "--reliability")
     rings = _ring_model(rings, b)
+    tilt, gamma = _tilt_options(tilt, misalignment)
     if rings == "fe":
+        if tilt != "free":
+            raise InputError("--tilt", "a held tilt is not available with --rings fe", "use --rings rigid")
         from ..rings.coupling import solve as solve_fe
 
         res = solve_fe(b, loads, omega, control, rings="fe")
     else:
-        res = solve(b, loads, omega, control)
+        res = solve(b, loads, omega, control, tilt=tilt, misalignment=gamma)
     friction = None
     if res.converged:
         apply_rating(res, lub, t, ec, reliability)
@@ -94,6 +103,20 @@ def static(
         print_static(res, friction)
     if not res.converged:
         raise typer.Exit(1)
+
+
+def _tilt_options(tilt, misalignment) -> tuple[str, tuple[float, float]]:
+    """``--tilt`` free|fixed and ``--misalignment`` (an angle about z, only with fixed) → (mode, (γy, γz) [rad])."""
+    from ..units import parse_quantity
+
+    t = str(tilt).strip().lower()
+    if t not in ("free", "fixed"):
+        raise InputError("--tilt", f"unknown tilt control {tilt!r}", "use free or fixed")
+    if misalignment is None:
+        return t, (0.0, 0.0)
+    if t != "fixed":
+        raise InputError("--misalignment", "a misalignment needs the tilt held", "add --tilt fixed")
+    return t, (0.0, parse_quantity(misalignment, "angle", "--misalignment"))
 
 
 def _ring_model(value, bearing=None) -> str:
@@ -233,6 +256,10 @@ def print_static(res, friction=None) -> None:
               f"({res.status}; {res.iterations} iterations, residual {res.residual:.2e} N)")
     con.print(f"displacement: δx = {d[0] * 1e6:.4f} µm, δy = {d[1] * 1e6:.4f} µm, δz = {d[2] * 1e6:.4f} µm, "
               f"γy = {d[3] * 1e3:.5f} mrad, γz = {d[4] * 1e3:.5f} mrad")
+    if getattr(res, "tilt_mode", "free") == "fixed" and res.reaction_moment is not None:
+        m = res.reaction_moment
+        con.print(f"tilt held at γy = {res.misalignment[0] * 1e3:.4g} mrad, γz = {res.misalignment[1] * 1e3:.4g} mrad "
+                  f"(--tilt fixed): reaction moment M_y = {m[0]:.4g} N·m, M_z = {m[1]:.4g} N·m")
     con.print(f"axial stiffness K_xx = {res.axial_stiffness / 1e6:.2f} N/µm;  cage speed "
               f"{res.cage_speed * 30 / math.pi:.1f} rpm")
     c = getattr(res, "clearance", {})

@@ -164,6 +164,15 @@ class StaticResult:
     #: displacements at the row plane, loaded balls, peak pressures; :func:`~.arrangements.row_results` and
     #: :meth:`to_dict` add each row's ball table), else None
     rows: list | None = field(repr=False, default=None)
+    #: control of the inner ring's tilt (γy, γz): "free" (moment equilibrium, the default) or "fixed" (tilt held at
+    #: ``misalignment``, the moment that holds it reported in ``reaction_moment``) — :func:`solve`
+    tilt_mode: str = "free"
+    #: prescribed tilt (γy, γz) of the inner ring for tilt_mode "fixed" [rad]
+    misalignment: np.ndarray | None = field(repr=False, default=None)
+    #: tilt_mode "fixed": the moment (M_y, M_z) [N·m] that the shaft (the constraint) applies to the inner ring, in
+    #: addition to ``loads``, to hold the tilt — the bearing's moment reaction; solving with tilt "free" under
+    #: ``loads`` plus this moment gives the same equilibrium
+    reaction_moment: np.ndarray | None = field(repr=False, default=None)
 
     @property
     def clearance(self) -> dict:
@@ -216,6 +225,12 @@ class StaticResult:
         out["reference_rating_life_million_revolutions"] = self.reference_rating_life
         if self.rating is not None:
             out.update(self.rating)
+        out["tilt"] = {"mode": self.tilt_mode}
+        if self.tilt_mode == "fixed":
+            out["tilt"].update(
+                misalignment_rad=[float(v) for v in self.misalignment],
+                reaction_moment_N_m=[float(v) for v in self.reaction_moment] if self.reaction_moment is not None
+                else None)
         if self.rows is not None:
             rowof = self.balls["row"]
             out["rows"] = [{**d, "balls": [balls[j] for j in np.nonzero(rowof == d["row"])[0]]} for d in self.rows]
@@ -469,8 +484,124 @@ def _alternative_starts(bearing, loads, speed, control, initial, q_first, rows, 
     yield batch_ramp
 
 
+TILT_MODES = ("free", "fixed")
+#: fixed tilt: at most this many outer (moment) iterations
+MAXIT_TILT = 40
+
+
+def _check_tilt(tilt, misalignment) -> tuple[str, np.ndarray]:
+    if not isinstance(tilt, str) or tilt not in TILT_MODES:
+        raise InputError("tilt", f"unknown tilt control {tilt!r}", "use free or fixed")
+    try:
+        g = np.array(misalignment if misalignment is not None else (0.0, 0.0), dtype=float).reshape(-1)
+    except (TypeError, ValueError):
+        raise InputTypeError("misalignment", f"must be two numbers (γy, γz) [rad], got {misalignment!r}",
+                             "pass e.g. (0.0, 0.0005)") from None
+    if g.shape != (2,) or not np.all(np.isfinite(g)):
+        raise InputError("misalignment", f"must be two finite numbers (γy, γz) [rad], got {misalignment!r}",
+                         "pass e.g. (0.0, 0.0005)")
+    if tilt == "free" and np.any(g != 0):
+        raise InputError("misalignment", "a misalignment needs the tilt held (tilt='fixed')",
+                         "pass tilt='fixed' (CLI: --tilt fixed)")
+    return tilt, g
+
+
+def _translations_at_tilt(rows, la, omega, control, t, gamma, scale, maxit: int = 60):
+    """Newton's method with backtracking on the translations t = (δx, δy, δz) [m] of the inner ring at the held
+    tilt ``gamma`` [rad]: the force balance la[:3] + Σ ball forces (:func:`assemble_at`) = 0, Jacobian −K_tt of
+    the kernel's tangent stiffness → (t, converged, iterations)."""
+    nrow, zmax = rows.shape[0], int(rows[:, kn.P_Z].max())
+    ballout = np.zeros((nrow, zmax, 12))
+
+    def resid(tv):
+        f, k, _ = assemble_at(rows, np.r_[tv, gamma], omega, control, ballout)
+        return la[:3] + f[:3], k[:3, :3]
+
+    t = np.array(t, dtype=float)
+    r, k = resid(t)
+    nr = float(np.max(np.abs(r)))
+    for it in range(maxit):
+        if nr <= TOL_RING * scale:
+            return t, True, it
+        dt = np.linalg.lstsq(k, r, rcond=None)[0]
+        step = 1.0
+        for _ in range(30):
+            r1, k1 = resid(t + step * dt)
+            n1 = float(np.max(np.abs(r1)))
+            if np.isfinite(n1) and n1 < (1.0 - 1e-4 * step) * nr:
+                break
+            step *= 0.5
+        else:
+            return t, False, it
+        t, r, k, nr = t + step * dt, r1, k1, n1
+    return t, nr <= TOL_RING * scale, maxit
+
+
+def _solve_fixed_tilt(bearing, loads: Loads, speed: float, control: str, initial, gamma: np.ndarray) -> StaticResult:
+    """The equilibrium of the translations (δx, δy, δz) with the inner ring's tilt held at ``gamma`` [rad]
+    (displacement control of γy, γz).  Path: from the free equilibrium (its tilt γ_f, or the default start) the
+    tilt is moved to ``gamma`` in steps of at most 0.25 mrad, the translations re-balanced at each step by
+    :func:`_translations_at_tilt` (tangent predictor −K_tt⁻¹ K_tγ Δγ; a failed step is halved).  Displacement
+    control follows the moment–tilt curve through its unstable part (a deep-groove ring under F_a snaps between
+    tilted states under a prescribed moment).  The moment M that holds the tilt, −(M_ext + Σ ball moments), is
+    ``reaction_moment``; the point is then handed to :func:`solve` under loads + M (a verified equilibrium: every
+    ball re-solved from a cold start, TOL_VERIFY) for the ball table and checks, so that ``converged`` keeps its
+    meaning.  Not converged (status 1) when the path stalls or the verified solve leaves the held tilt."""
+    rows = bearing.row_vectors()
+    scale = _scale(loads, rows)
+    la = loads.as_array()
+    omega = float(abs(speed))
+    if initial is not None:
+        q = _check_initial(initial).copy()
+    else:
+        free = solve(bearing, loads, speed, control)
+        q = free.displacement.copy() if free.converged else np.array(initial_guess(bearing, loads), dtype=float)
+    nrow, zmax = rows.shape[0], int(rows[:, kn.P_Z].max())
+    ballout = np.zeros((nrow, zmax, 12))
+    its = 0
+    g0, t = q[3:].copy(), q[:3].copy()
+    s, ds = 0.0, min(1.0, 2.5e-4 / max(float(np.max(np.abs(gamma - g0))), 1e-12))
+    ok = True
+    while s < 1.0 and ok:
+        s1 = min(1.0, s + ds)
+        g_prev, g_new = g0 + s * (gamma - g0), g0 + s1 * (gamma - g0)
+        _, k, _ = assemble_at(rows, np.r_[t, g_prev], omega, control, ballout)
+        pred = t - np.linalg.lstsq(k[:3, :3], k[:3, 3:] @ (g_new - g_prev), rcond=None)[0]
+        t1, conv, n = _translations_at_tilt(rows, la, omega, control, pred, g_new, scale)
+        its += n
+        if conv:
+            s, t = s1, t1
+        elif ds > 1e-4:
+            ds *= 0.5
+        else:
+            ok = False
+    m = np.zeros(2)
+    if ok:
+        f, _, _ = assemble_at(rows, np.r_[t, gamma], omega, control, ballout)
+        m = -(la[3:] + f[3:])
+        res = solve(bearing, Loads(*(la + np.r_[0.0, 0.0, 0.0, m])), speed, control, np.r_[t, gamma])
+        its += res.iterations
+        miss = float(np.max(np.abs(res.displacement[3:] - gamma)))
+        ok = res.converged and miss <= 1e-6 * max(float(np.max(np.abs(gamma))), 1e-3)
+        why = f"the verified solve left the held tilt by {miss:.3g} rad"
+    else:
+        res = solve(bearing, loads, speed, control)
+        why = f"the translations could not be balanced at the held tilt (reached {s:.3g} of the tilt path)"
+    res.iterations = its
+    res.tilt_mode = "fixed"
+    res.misalignment = gamma.copy()
+    res.reaction_moment = m.copy() if ok else None
+    res.loads = loads  # the external loads; the constraint moment is reaction_moment
+    if not ok:
+        res.converged = False
+        res.status_code = 1
+        res.status = "tilt not held: " + why
+    _report(res)  # the lives and safety of the constrained equilibrium (external loads only)
+    return res
+
+
 def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str = "outer",
-          initial: np.ndarray | None = None) -> StaticResult:
+          initial: np.ndarray | None = None, tilt: str = "free", misalignment=None) -> StaticResult:
     """Quasi-static equilibrium of ``bearing`` under ``loads`` at inner-ring ``speed`` [rad/s].
 
     Parameters
@@ -481,6 +612,11 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
         the balls and cage (the equilibrium depends on |speed| only)
     control : ``"outer"``, ``"inner"`` or ``"auto"`` raceway control (auto: Jones' criterion per ball)
     initial : optional start for (δx, δy, δz, γy, γz) [m, rad], float[5], finite
+    tilt : ``"free"`` (default: the inner ring tilts until the moments balance — a single bearing carries no
+        moment beyond ``loads``) or ``"fixed"``: the tilt (γy, γz) is held at ``misalignment`` (default 0: a
+        single bearing on a stiff shaft in a stiff housing, the assumption of ISO/TS 16281's reference rating
+        life, docs/life.md) and the moment that holds it is returned as ``reaction_moment``
+    misalignment : (γy, γz) [rad] of the inner ring relative to the outer for ``tilt="fixed"``
 
     Returns a :class:`StaticResult`; ``converged`` is False (with ``status`` and ``residual``)
     when no equilibrium was found — never a silently wrong number.  A result is called converged
@@ -498,6 +634,9 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
                              "e.g. Loads(fa=1000.0, fr_y=500.0) [N, N·m]")
     _check_control(control)
     speed = _number(speed, "speed")
+    tilt, gamma = _check_tilt(tilt, misalignment)
+    if tilt == "fixed":
+        return _solve_fixed_tilt(bearing, loads, speed, control, initial, gamma)
     rows = bearing.row_vectors()
     check_speed(speed, float(rows[0, kn.P_DM]))
     q = _check_initial(initial) if initial is not None else np.array(initial_guess(bearing, loads), dtype=float)
