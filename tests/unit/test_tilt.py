@@ -88,3 +88,14 @@ def test_cli_tilt_fixed_json_and_errors():
     bad = subprocess.run(["bearingsim", "static", "6205", "--fr", "2 kN", "--misalignment", "1 mrad"],
                          capture_output=True, text=True, timeout=120)
     assert bad.returncode == 2 and "--misalignment" in bad.stderr and len(bad.stderr.strip().splitlines()) == 1
+
+
+def test_cli_report_shows_the_held_tilt_and_its_reaction_moment(tmp_path):
+    out = subprocess.run(["bearingsim", "report", "6205", "--fr", "2 kN", "--fa", "0.5 kN", "--speed", "1500 rpm",
+                          "--tilt", "fixed", "--out", str(tmp_path / "rep")], capture_output=True, text=True,
+                         timeout=300)
+    assert out.returncode == 0, out.stderr
+    html = (tmp_path / "rep" / "report.html").read_text()
+    r = jh.solve(load_bearing("6205"), jh.Loads(fr_y=2000.0, fa=500.0), W, tilt="fixed")
+    assert "held at γy = 0 mrad, γz = 0 mrad" in html
+    assert f"{r.reaction_moment[1]:.4g} N·m" in html and "reaction moment (tilt held)" in html

@@ -28,14 +28,20 @@ def report(
     map_file: Optional[Path] = typer.Option(None, "--map", help="A map file (bearingsim map --out) for the "
                                                                 "stiffness-vs-speed figure"),
     control: ControlOpt = "outer",
+    tilt: str = typer.Option("free", "--tilt", help="Inner-ring tilt: free (moment equilibrium) or fixed (held at "
+                             "--misalignment, reaction moment reported)"),
+    misalignment: Optional[str] = typer.Option(None, "--misalignment",
+                                               help='With --tilt fixed: tilt about z, e.g. "0.5 mrad" (default 0)'),
 ):
     """Write an HTML report (inputs and sources, results in engineering units, lives, safety, friction, plots)."""
     from ..io import check_path
     from ..report.bearing import bearing_report
     from ..units import parse_quantity
     from .output import output_folder
+    from .static import _tilt_options
 
     b_loads = options.parse_loads(fa, fr, fz, moment, my)
+    tilt_mode, gamma = _tilt_options(tilt, misalignment)
     omega = options.parse_speed(speed)
     t = parse_quantity(temperature, "temperature", "--temperature") if lubricant is not None else None
     if map_file is not None:
@@ -46,7 +52,7 @@ def report(
     announce_compilation()
     folder = output_folder(out)
     page = bearing_report(b, b_loads, omega, out_dir=folder, lubricant=lubricant, temperature=t, control=control,
-                          map_file=map_file)
+                          map_file=map_file, tilt=tilt_mode, misalignment=gamma)
     make_console().print(f"report written: {page}")
 
 

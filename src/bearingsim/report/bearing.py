@@ -216,12 +216,14 @@ def _map_figure(map_file: Path, out: Path, stem: str):
 
 
 def bearing_report(bearing, loads, speed: float = 0.0, *, out_dir, lubricant=None, temperature: float | None = None,
-                   control: str = "outer", map_file=None, lubrication_method: str = "oil_bath") -> Path:
+                   control: str = "outer", map_file=None, lubrication_method: str = "oil_bath",
+                   tilt: str = "free", misalignment=None) -> Path:
     """Write ``out_dir/report.html`` and its figures for one operating point; return the page's path.
 
     bearing : BallBearing or BearingSystem (or a catalogue name / TOML path); loads : ``Loads`` [N, N m];
     speed [rad/s]; lubricant (name, path or Lubricant) and temperature [K] for the friction torque;
-    map_file : a map netCDF file for the stiffness-vs-speed figure (optional).
+    map_file : a map netCDF file for the stiffness-vs-speed figure (optional); tilt, misalignment : the tilt control
+    of :func:`bearingsim.statics.jones_harris.solve` ("free", or "fixed" at (γy, γz) [rad], reaction moment shown).
     """
     from ..io import load_bearing
     from ..statics.jones_harris import solve
@@ -230,7 +232,7 @@ def bearing_report(bearing, loads, speed: float = 0.0, *, out_dir, lubricant=Non
     out = Path(out_dir)
     if lubricant is not None and temperature is None:
         raise InputError("temperature", "a lubricant needs its operating temperature", 'e.g. --temperature "60 degC"')
-    res = solve(b, loads, speed, control)
+    res = solve(b, loads, speed, control, tilt=tilt, misalignment=misalignment)
     if lubricant is not None and res.converged:  # the modified rating lives need the lubricant (bearingsim.life)
         from ..life import apply_rating
 
@@ -251,6 +253,9 @@ def bearing_report(bearing, loads, speed: float = 0.0, *, out_dir, lubricant=Non
           ["radial load Fr (z)", _show(ld["fr_z_N"], "N")], ["moment My", _show(ld["m_y_N_m"], "N m")],
           ["moment Mz", _show(ld["m_z_N_m"], "N m")], ["inner-ring speed", _show(d["speed_rad_s"], "rad/s")],
           ["raceway control", d["control"]]]
+    if d["tilt"]["mode"] == "fixed":
+        op.append(["inner-ring tilt", "held at γy = {:.4g} mrad, γz = {:.4g} mrad".format(
+            *(1e3 * v for v in d["tilt"]["misalignment_rad"]))])
     if lubricant is not None:
         op += [["lubricant", str(getattr(lubricant, "name", lubricant))],
                ["temperature", f"{temperature - 273.15:.1f} °C"]]
@@ -265,6 +270,9 @@ def bearing_report(bearing, loads, speed: float = 0.0, *, out_dir, lubricant=Non
                ["axial displacement", _show(disp["axial_m"], "m", ".4g")],
                ["radial displacement", _show(disp["radial_m"], "m", ".4g")],
                ["tilt", _show(disp["tilt_rad"], "rad", ".4g")],
+               *([["reaction moment (tilt held) My, Mz", ", ".join(_show(v, "N m", ".4g") for v in
+                                                                   d["tilt"]["reaction_moment_N_m"])]]
+                 if d["tilt"]["mode"] == "fixed" and d["tilt"].get("reaction_moment_N_m") else []),
                ["axial stiffness K_xx", _show(d["axial_stiffness_N_per_m"], "N/m", ".4g")],
                ["cage speed", _show(d.get("cage_speed_rad_s"), "rad/s", ".5g")],
                ["basic rating life L10h (ISO 281)", _hours(d.get("basic_rating_life_hours"))],

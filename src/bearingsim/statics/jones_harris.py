@@ -579,6 +579,7 @@ def _solve_fixed_tilt(bearing, loads: Loads, speed: float, control: str, initial
     if ok:
         f, _, _ = assemble_at(rows, np.r_[t, gamma], omega, control, ballout)
         m = -(la[3:] + f[3:])
+        m[np.abs(m) <= 1e-12 * scale * float(rows[0, kn.P_DM])] = 0.0  # round-off of a symmetric case, not a moment
         res = solve(bearing, Loads(*(la + np.r_[0.0, 0.0, 0.0, m])), speed, control, np.r_[t, gamma])
         its += res.iterations
         miss = float(np.max(np.abs(res.displacement[3:] - gamma)))
