@@ -172,12 +172,16 @@ def _with_preload(bearing, preload: float):
     return dataclasses.replace(bearing, rows=rows, preload=float(preload))
 
 
-def solve_block(bearing, axes: dict, block: tuple, control: str = "outer") -> dict:
+def solve_block(bearing, axes: dict, block: tuple, control: str = "outer", rings=None) -> dict:
     """Solve one rectangular block of the grid (runs anywhere: local, process pool, Dask worker).
 
     ``axes`` maps every axis name of :data:`AXES` to its value array (length 1 for scalars);
     ``block`` holds one slice per grid dimension (the axes with more than one value, in AXES order).
     Points are visited in serpentine order so that each starts next to the previous one.
+    ``rings``: None for rigid rings (the batch kernel), or the
+    :class:`bearingsim.rings.coupling.ElasticRings` of the bearing (computed once by :func:`map_grid` and sent
+    with the block): every point is solved by :func:`bearingsim.rings.coupling.solve_points`, warm-started
+    from the previous point of the serpentine.
     """
     from .statics.batch import NSUMMARY, run_batch
 
@@ -206,7 +210,12 @@ def solve_block(bearing, axes: dict, block: tuple, control: str = "outer") -> di
         loads = np.zeros((int(sel.sum()), 5))
         for name, j in _LOAD_INDEX.items():
             loads[:, j] = pick[name][sel]
-        out = run_batch(brg, loads, pick["speed"][sel], control)
+        if rings is None:
+            out = run_batch(brg, loads, pick["speed"][sel], control)
+        else:
+            from .rings.coupling import solve_points
+
+            out = solve_points(brg, loads, pick["speed"][sel], control, rings)
         for key in res:
             res[key][sel] = out[key]
     # back to the block's C order
@@ -380,10 +389,12 @@ def _check_address(address: str) -> None:
         raise InputError("scheduler", f"port {port} out of range in {address!r}", fix)
 
 
-def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout: float, poll: float = 1.0):
+def _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout: float, poll: float = 1.0,
+                    rings=None):
     """Solve ``blocks`` on the cluster of ``client``, calling ``done(block, result)`` as they finish
-    (:func:`run_tasks_on_cluster` with :func:`solve_block`)."""
-    run_tasks_on_cluster(client, solve_block, [(bearing, axes, b, control) for b in blocks], blocks, done,
+    (:func:`run_tasks_on_cluster` with :func:`solve_block`; FE ring coefficients travel with each block)."""
+    extra = () if rings is None else (rings,)  # the rigid path's call is unchanged
+    run_tasks_on_cluster(client, solve_block, [(bearing, axes, b, control, *extra) for b in blocks], blocks, done,
                          worker_timeout, poll)
 
 
@@ -546,7 +557,7 @@ class _QuietDistributed:
 def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.0, preload=None,
              control: str = "outer", out: str | Path | None = None, workers: int | None = None,
              scheduler=None, chunk_points: int = 2000, progress: bool = False, scheduler_timeout: float = 3.0,
-             worker_timeout: float = 60.0):
+             worker_timeout: float = 60.0, rings=None):
     """Quasi-static map of ``bearing`` over a grid → :class:`xarray.Dataset`.
 
     Parameters
@@ -567,6 +578,11 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
         (:class:`MapError`); a block lost with a dead worker is run again on another one
     chunk_points : maximum points per block
     progress : show a rich progress bar
+    rings : ``"rigid"`` (the batch kernel), ``"fe"`` (elastic rings, docs/rings.md: the influence coefficients are
+        computed once here — or read from their disk cache — and sent to the workers with the blocks; every
+        point is solved by :func:`bearingsim.rings.coupling.solve`), an
+        :class:`bearingsim.rings.coupling.ElasticRings`, or None: the bearing file's ``[rings]`` model (rigid
+        without one).  The output's attribute ``rings`` names the model.
     """
     if isinstance(bearing, str | Path):
         from .io import load_bearing
@@ -574,6 +590,7 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
         bearing = load_bearing(bearing)
     if control not in ("outer", "inner", "auto"):
         raise InputError("control", f"unknown raceway control {control!r}", "use outer, inner or auto")
+    ring_name, ring_coeffs = _ring_choice(bearing, rings)
     spec = {"fa": fa, "fr": fr, "fr_z": fr_z, "m_y": m_y, "moment": moment, "speed": speed,
             "preload": 0.0 if preload is None else preload}
     axes = {}
@@ -600,7 +617,13 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
     npts = int(np.prod(shape)) if shape else 1
     attrs = {"bearing": getattr(bearing, "name", "bearing"), "control": control, "model": "Jones-Harris quasi-static",
              "source": "bearingsim.sweep.map_grid", "stiffness_order": "x, y, z, gamma_y, gamma_z",
-             "load_convention": "loads on the inner ring at the load point; fr along +y, moment about z"}
+             "load_convention": "loads on the inner ring at the load point; fr along +y, moment about z",
+             "rings": ring_name}
+    if ring_coeffs is not None:
+        import json
+
+        attrs["model"] += " with elastic rings (finite elements, docs/rings.md)"
+        attrs["rings_description"] = json.dumps(ring_coeffs.description)
     if isinstance(worker_timeout, bool) or not isinstance(worker_timeout, int | float) or \
             not (0 < worker_timeout < float("inf")):
         raise InputError("worker_timeout", f"must be a positive number of seconds, got {worker_timeout!r}", "e.g. 60")
@@ -637,9 +660,11 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
                 bar.advance(task, int(res["status"].size))
 
         if client is not None:
-            _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout)
+            _run_on_cluster(client, bearing, axes, blocks, control, done, worker_timeout, rings=ring_coeffs)
         else:
-            run_tasks_locally(solve_block, [(bearing, axes, b, control) for b in blocks], blocks, done, nworkers)
+            extra = () if ring_coeffs is None else (ring_coeffs,)  # the rigid path's call is unchanged
+            run_tasks_locally(solve_block, [(bearing, axes, b, control, *extra) for b in blocks], blocks, done,
+                              nworkers)
         if bar is not None:
             bar.stop()
             bar = None
@@ -658,6 +683,28 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
 
         return xr.open_dataset(sink.final)
     return sink.dataset()
+
+
+def _ring_choice(bearing, rings):
+    """("rigid" or "fe", the ElasticRings or None) for :func:`map_grid`'s ``rings``."""
+    from .rings.spec import RING_MODELS, model_of
+
+    if rings is None:
+        rings = model_of(bearing)
+    if isinstance(rings, str):
+        if rings not in RING_MODELS:
+            raise InputError("rings", f"unknown ring model {rings!r}", "use rigid or fe")
+        if rings == "rigid":
+            return "rigid", None
+        from .rings.coupling import ring_model
+
+        return "fe", ring_model(bearing)  # once per map (disk cache); travels to the workers with the blocks
+    from .rings.coupling import ElasticRings, _check_rings
+
+    if not isinstance(rings, ElasticRings):
+        raise InputError("rings", f"expected rigid, fe or ElasticRings, got {type(rings).__name__}", "use rigid or fe")
+    _check_rings(bearing, rings)
+    return "fe", rings
 
 
 def warm_up(bearing="skf-7011-cdga-hc") -> bool:

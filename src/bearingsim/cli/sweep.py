@@ -56,6 +56,9 @@ def map_cmd(
     chunk: int = typer.Option(2000, "--chunk", help="Points per block"),
     plot: Optional[Path] = typer.Option(None, "--plot", help="Write a K_xx stiffness map (PNG)"),
     as_json: bool = typer.Option(False, "--json", help="Print a JSON summary in SI"),
+    rings: Optional[str] = typer.Option(None, "--rings", help="Ring model: rigid, or fe (elastic rings and seats by "
+                                        "finite elements, coefficients computed once and cached on disk; "
+                                        "docs/rings.md); default: the bearing file's [rings] model"),
 ):
     """Quasi-static map over a grid of loads, speeds and preloads (xarray / netCDF)."""
     from ..sweep import map_grid, plot_map
@@ -64,9 +67,17 @@ def map_cmd(
     def opt(v):
         return 0.0 if v is None else v
 
+    from ..errors import InputError
     from ..io import load_bearing
+    from ..rings.spec import RING_MODELS, model_of
 
-    load_bearing(bearing)  # a bad bearing file is refused before any output folder is created
+    b = load_bearing(bearing)  # a bad bearing file is refused before any output folder is created
+    if rings is not None:
+        rings = str(rings).strip().lower()
+        if rings not in RING_MODELS:
+            raise InputError("--rings", f"unknown ring model {rings!r}", "use rigid or fe")
+    else:
+        rings = model_of(b)
     # both outputs checked (folders created) before the map is computed
     if out is not None:
         out = output_file(out, "--out", renamed=True)
@@ -86,7 +97,7 @@ def map_cmd(
         ds = map_grid(bearing, fa=opt(fa), fr=opt(fr), fr_z=opt(fz), m_y=opt(my), moment=opt(moment),
                       speed=opt(speed), preload=preload, control=control, out=out, workers=workers,
                       scheduler=scheduler, chunk_points=chunk, progress=not as_json,
-                      worker_timeout=worker_timeout)
+                      worker_timeout=worker_timeout, rings=rings)
     if out is not None:
         apply_umask(out)
     dt = time.perf_counter() - t0
@@ -98,7 +109,7 @@ def map_cmd(
             plot_map(ds, tmp)
         png = plot
     summary = {"bearing": ds.attrs.get("bearing", bearing), "points": npts, "converged": nconv,
-               "seconds": dt, "points_per_second": npts / dt if dt > 0 else None,
+               "seconds": dt, "points_per_second": npts / dt if dt > 0 else None, "rings": rings,
                "dims": {d: int(n) for d, n in ds.sizes.items() if d not in ("dof", "dof2")},
                "out": str(out) if out is not None else None, "plot": str(png) if png else None}
     if as_json:
@@ -106,7 +117,8 @@ def map_cmd(
     else:
         con = make_console()
         con.print(f"{summary['bearing']}: {npts} points, {nconv} converged, {dt:.2f} s "
-                  f"({summary['points_per_second']:.0f} points/s)")
+                  f"({summary['points_per_second']:.0f} points/s)"
+                  + (", elastic rings (finite elements)" if rings == "fe" else ""))
         if out is not None:
             con.print(f"wrote {out}")
         if png:

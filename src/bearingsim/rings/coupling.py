@@ -320,12 +320,14 @@ def _newton_update(matrix, off, new):
 
 
 def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control: str = "outer",
-          rings: "ElasticRings | str | None" = "fe", initial=None, tol: float = 1e-12, maxit: int = 50):
+          rings: "ElasticRings | str | None" = "fe", initial=None, tol: float = 1e-12, maxit: int = 50,
+          initial_offsets=None):
     """Quasi-static equilibrium of ``bearing`` with elastic rings (module docstring).
 
     rings : ``"rigid"`` (the rigid-ring :func:`bearingsim.statics.jones_harris.solve`, unchanged), ``"fe"``
         (coefficients from :func:`ring_model` with its defaults, cached on disk) or an :class:`ElasticRings`
     tol : largest change of a groove-centre offset accepted as the fixed point [m]
+    initial_offsets : float[n_balls, 2] start of the offsets [m] (e.g. a neighbouring point's; default zero)
 
     Returns a :class:`bearingsim.statics.jones_harris.StaticResult` with, in addition, ``ring_model``
     ("rigid" or "fe"), ``ring_offsets`` float[n_balls, 2] (ΔA₁, ΔA₂) [m], ``ring_iterations`` and
@@ -364,6 +366,12 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
     q = st0[1].copy()
     maps = offset_maps(rows0, rings)
     off = np.zeros((nb, 2))
+    if initial_offsets is not None:
+        o = np.asarray(initial_offsets, dtype=float)
+        if o.shape != (nb, 2) or not np.all(np.isfinite(o)):
+            raise InputError("initial_offsets", f"expected finite float[{nb}, 2] offsets [m], got shape {o.shape}",
+                             "pass ring_offsets of a result of this bearing, or None")
+        off = o.copy()
     change = math.inf
     its_total = st0[2]
     it = 0
@@ -417,6 +425,70 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
     res.ring_model, res.ring_offsets, res.ring_iterations, res.ring_residual = "fe", off, it, change
     res.ring_description = rings.description
     return res
+
+
+def summary_of(res) -> np.ndarray:
+    """The map summary of one result (the columns of :data:`bearingsim.statics.batch.SUMMARY_FIELDS`): largest
+    inner/outer contact pressure [Pa], extremes of the inner and outer contact angles of the balls loaded at that
+    contact [rad] (NaN when none is), balls without inner load while others carry load."""
+    b = res.balls
+    out = np.full(7, np.nan)
+    qi, qo = np.asarray(b["inner_load_N"]), np.asarray(b["outer_load_N"])
+    out[0] = float(np.max(b["inner_max_pressure_Pa"], initial=0.0))
+    out[1] = float(np.max(b["outer_max_pressure_Pa"], initial=0.0))
+    for k, (q, a) in enumerate(((qi, b["inner_contact_angle_rad"]), (qo, b["outer_contact_angle_rad"]))):
+        a = np.asarray(a)[q > 0]
+        if a.size:
+            out[2 + 2 * k], out[3 + 2 * k] = float(a.min()), float(a.max())
+    nload = int(np.sum(qi > 0))
+    out[6] = float(qi.size - nload) if nload else 0.0
+    return out
+
+
+def solve_points(bearing, loads, speeds, control: str = "outer", rings: "ElasticRings | None" = None,
+                 warm: bool = True) -> dict:
+    """Many operating points with elastic rings, in the given order (a map block's serpentine order): the dict of
+    :func:`bearingsim.statics.batch.run_batch` (q, k, status, iterations, residual, summary, warning_flags;
+    converged points have status 0, a point whose offsets did not converge has status 1, a point that raised
+    status 7).  Each point starts from the previous converged point's displacement and ring offsets when
+    ``warm`` (the offsets change little between neighbours), else from the rigid-ring start.
+    loads float[n, 5] [N, N·m], speeds float[n] [rad/s]."""
+    from ..limits import flags_from_summary, limiting_speed
+
+    loads = np.asarray(loads, dtype=float).reshape(-1, 5)
+    n = loads.shape[0]
+    speeds = np.broadcast_to(np.asarray(speeds, dtype=float), (n,))
+    rings = ring_model(bearing) if rings is None else rings
+    out = {"q": np.zeros((n, 5)), "k": np.zeros((n, 5, 5)), "status": np.zeros(n, dtype=np.int64),
+           "iterations": np.zeros(n, dtype=np.int64), "residual": np.zeros(n), "summary": np.zeros((n, 7))}
+    q0 = off0 = None
+    for i in range(n):
+        try:
+            res = solve(bearing, jh.Loads(*loads[i]), float(speeds[i]), control, rings=rings,
+                        initial=q0 if warm else None, initial_offsets=off0 if warm else None)
+        except InputError:
+            raise
+        except Exception:  # noqa: BLE001  (isolate the point; the others keep their results)
+            out["status"][i] = 7
+            for key in ("q", "k", "residual", "summary"):
+                out[key][i] = np.nan
+            continue
+        code = res.status_code if not (res.status_code == 0 and not res.converged) else 1
+        out["status"][i] = code
+        out["q"][i] = res.displacement
+        out["k"][i] = res.stiffness
+        out["iterations"][i] = res.iterations
+        out["residual"][i] = res.residual
+        out["summary"][i] = summary_of(res)
+        if res.converged:
+            q0, off0 = res.displacement, res.ring_offsets
+    conv = out["status"] == 0
+    s = out["summary"]
+    lift = (s[:, 6] > 0) & (speeds != 0)
+    out["warning_flags"] = flags_from_summary(s[:, 0], s[:, 1], [s[:, k] for k in range(2, 6)], speeds, lift, conv,
+                                              limiting_speed(bearing))
+    out["converged"] = conv
+    return out
 
 
 def result_dict(res) -> dict:
