@@ -11,7 +11,10 @@ with C the ring's influence coefficients (:mod:`.influence`, local Hertz part ex
 it) and F_k the force of ball k on that ring in (r, ξ): on the inner ring −(Q_i cos α_i − λ_i G sin α_i,
 Q_i sin α_i + λ_i G cos α_i), on the outer ring (Q_o cos α_o − λ_o G sin α_o, Q_o sin α_o + λ_o G cos α_o)
 (the contact forces of the ball balance, [S0] eq. 10).  Each row has its own two rings (a set of separate
-bearings); rings shared by two rows (a hub unit's common outer ring) are not coupled between the rows.
+bearings), except in a double-row unit (:func:`.shared.is_unit`: the file gives the unit's outer ring in
+``[rings.outer_ring]``, or the rows' bearings have no boundary dimensions, as the [S1] hub): there one outer ring
+carries the grooves of all rows (:mod:`.shared`), so u_j(outer) sums the forces of the balls of *every* row
+(the offset map P_o is full, not block-diagonal), and each row keeps its own inner ring.
 
 Solution.  Iteration on the offsets: solve the ball and ring equilibrium of the rigid-ring kernel with the
 current per-ball offsets (every ball is passed to the unchanged kernel as a one-ball row at its own azimuth,
@@ -47,23 +50,29 @@ from .spec import RING_MODELS  # ("rigid", "fe")
 
 @dataclass
 class ElasticRings:
-    """The influence coefficients of every row's rings: ``rows[r] = (inner, outer)`` :class:`RingInfluence`."""
+    """The influence coefficients of every row's rings: ``rows[r] = (inner, outer)`` :class:`RingInfluence`;
+    with ``shared`` (a :class:`.shared.SharedInfluence`: the one outer ring of a double-row unit) the rows'
+    outer entries are None and the outer ring couples the rows."""
 
     rows: list
     description: dict = field(default_factory=dict)
     _matrices: list = field(default=None, repr=False)
+    shared: object = None
 
     def matrices(self) -> list:
-        """Per row (M_inner, M_outer), float[2Z, 2Z] [m/N] (:meth:`RingInfluence.matrix`)."""
+        """Per row (M_inner, M_outer), float[2Z, 2Z] [m/N] (:meth:`RingInfluence.matrix`; M_outer None for a
+        shared outer ring)."""
         if self._matrices is None:
-            self._matrices = [(i.matrix(), o.matrix()) for i, o in self.rows]
+            self._matrices = [(i.matrix(), None if o is None else o.matrix()) for i, o in self.rows]
         return self._matrices
 
     def scaled(self, factor: float) -> "ElasticRings":
         """The same rings with every compliance multiplied by ``factor`` (e.g. 1e-6 for a material 10⁶ stiffer)."""
-        rows = [tuple(RingInfluence(r.kind, r.ball_count, r.coeffs * factor, r.local * factor, r.harmonics,
+        rows = [tuple(None if r is None else
+                      RingInfluence(r.kind, r.ball_count, r.coeffs * factor, r.local * factor, r.harmonics,
                                     r.seconds, r.key, dict(r.meta)) for r in pair) for pair in self.rows]
-        return ElasticRings(rows, {**self.description, "compliance_factor": factor})
+        shared = None if self.shared is None else self.shared.scaled(factor)
+        return ElasticRings(rows, {**self.description, "compliance_factor": factor}, shared=shared)
 
 
 def ring_model(bearing, youngs_modulus: float | None = None, poisson_ratio: float | None = None,
@@ -90,6 +99,11 @@ def ring_model(bearing, youngs_modulus: float | None = None, poisson_ratio: floa
     if housing is not None or shaft is not None:
         desc["housing"] = None if housing is None else _sleeve_desc(housing)
         desc["shaft"] = None if shaft is None else _sleeve_desc(shaft)
+    from .shared import is_unit
+
+    if is_unit(bearing, spec):
+        return _unit_model(bearing, spec, youngs_modulus, poisson_ratio, settings, shoulder_fraction,
+                           shaft_bore_fraction, housing_od_factor, cache, housing, shaft, desc)
     for row in bearing.rows:
         b = row.bearing
         e = float(youngs_modulus) if youngs_modulus is not None else b.ring_material.youngs_modulus
@@ -104,6 +118,33 @@ def ring_model(bearing, youngs_modulus: float | None = None, poisson_ratio: floa
                              "seconds": ci.seconds + co.seconds, "cached": bool(ci.meta.get("cached")
                                                                                 and co.meta.get("cached"))})
     return ElasticRings(rows, desc)
+
+
+def _unit_model(bearing, spec, youngs_modulus, poisson_ratio, settings, shoulder_fraction, shaft_bore_fraction,
+                housing_od_factor, cache, housing, shaft, desc) -> ElasticRings:
+    """:func:`ring_model` of a double-row unit: one outer ring shared by the rows (:mod:`.shared`), separate inner
+    rings (one per row)."""
+    from .shared import compute_shared_influence, estimate_unit
+
+    inners, outer, notes = estimate_unit(bearing, spec, shoulder_fraction, shaft_bore_fraction, housing_od_factor,
+                                         housing, shaft)
+    mats = [r.bearing.ring_material for r in bearing.rows]
+    e = float(youngs_modulus) if youngs_modulus is not None else mats[0].youngs_modulus
+    nu = float(poisson_ratio) if poisson_ratio is not None else mats[0].poisson_ratio
+    if youngs_modulus is None and any(m.youngs_modulus != e or m.poisson_ratio != nu for m in mats):
+        raise InputError("ring_material", "the rows of a unit with one outer ring have different ring materials",
+                         "give the rows the same ring material, or youngs_modulus/poisson_ratio")
+    sh = compute_shared_influence(outer, e, nu, settings, cache)
+    rows = []
+    for row, inner in zip(bearing.rows, inners):
+        ci = compute_influence(inner, e, nu, row.bearing.ball_count, settings, cache)
+        rows.append((ci, None))
+        desc["rows"].append({"bearing": row.bearing.name, "youngs_modulus_Pa": e, "poisson_ratio": nu,
+                             "inner_key": ci.key, "outer_key": sh.key, "seconds": ci.seconds,
+                             "cached": bool(ci.meta.get("cached"))})
+    desc["shared_outer_ring"] = {"grooves": len(outer.grooves), "key": sh.key, "seconds": sh.seconds,
+                                 "cached": bool(sh.meta.get("cached")), "dofs": sh.meta.get("dofs")} | notes
+    return ElasticRings(rows, desc, shared=sh)
 
 
 def _sleeve_desc(s) -> dict:
@@ -153,8 +194,13 @@ def offset_maps(rows0: np.ndarray, rings: ElasticRings) -> tuple[np.ndarray, np.
         z = int(zs[r])
         perm = np.arange(2 * z).reshape(z, 2)[:, ::-1].ravel()  # output (r, ξ) → (ξ, r)
         pi[2 * b:2 * (b + z), 2 * b:2 * (b + z)] = mi[perm]
-        po[2 * b:2 * (b + z), 2 * b:2 * (b + z)] = mo[perm]
+        if mo is not None:
+            po[2 * b:2 * (b + z), 2 * b:2 * (b + z)] = mo[perm]
         b += z
+    if rings.shared is not None:  # one outer ring for all rows: every ball's offset from every row's forces
+        az = [rows0[r, kn.P_PSI0] + 2.0 * math.pi * np.arange(int(zs[r])) / int(zs[r]) for r in range(len(zs))]
+        perm = np.arange(2 * nb).reshape(nb, 2)[:, ::-1].ravel()
+        po = rings.shared.matrix(az)[perm]
     cache[tuple(zs)] = (pi, po)
     return pi, po
 

@@ -143,6 +143,28 @@ class RingSection:
         """Wall thickness between groove bottom and seat [m]."""
         return abs(self.groove_bottom_radius - self.seat_radius)
 
+    # ---- the interface of :func:`section_grid` (shared with the several-groove section of .shared) -----------
+    @property
+    def z_faces(self) -> tuple[float, float]:
+        """(z of face_minus, z of face_plus) [m]."""
+        return -self.half_width, self.half_width
+
+    @property
+    def contact_zs(self) -> tuple[float, ...]:
+        """z of the contact point(s) [m]."""
+        return (float(self.contact_point[1]),)
+
+    @property
+    def groove_edges(self) -> tuple[float, ...]:
+        """z of the groove edges [m]."""
+        ze = self.groove_edge_z
+        return -ze, ze
+
+    @property
+    def depth(self) -> float:
+        """Wall plus shoulder height (seat to land) [m]."""
+        return self.wall + abs(self.land_radius - self.groove_bottom_radius)
+
 
 def estimate_sections(bearing, shoulder_fraction: float = 0.25, shaft_bore_fraction: float | None = 0.5,
                       housing_od_factor: float | None = 1.5, housing=None,
@@ -212,22 +234,31 @@ def _graded(a: float, b: float, focus: float, h_min: float, n: int) -> np.ndarra
     return np.unique(np.round(np.array(pts, dtype=float), 15))
 
 
-def section_grid(section: RingSection, h_contact: float, n_through: int = 8, n_axial: int = 16,
-                 n_sleeve: int = 6):
+def section_grid(section, h_contact: float, n_through: int = 8, n_axial: int = 16, n_sleeve: int = 6):
     """The structured grid of :func:`mesh_section`: (t values, z values [m], r(t, z) [m]) with t ∈ [0, 1] from the
-    seat to the raceway in the ring and t ∈ [−1, 0) in the seat sleeve (if any)."""
-    hw = section.half_width
-    zc = float(section.contact_point[1])
-    zs = _graded(-hw, hw, zc, h_contact, n_axial)
-    ze = section.groove_edge_z
-    zs = np.unique(np.concatenate([zs, [-ze, ze]]))
+    seat to the raceway in the ring and t ∈ [−1, 0) in the seat sleeve (if any).  ``section`` is a
+    :class:`RingSection` or a several-groove :class:`bearingsim.rings.shared.SharedSection` (anything with
+    ``z_faces``, ``contact_zs``, ``groove_edges``, ``depth``, ``wall``, ``surface_radius``, ``seat_radius``,
+    ``sleeve_radius``): the axial nodes are graded towards every contact point (one grading per stretch between
+    the midpoints of neighbouring contact points)."""
+    z0, z1 = section.z_faces
+    foci = sorted(section.contact_zs)
+    cuts = [z0] + [0.5 * (a + b) for a, b in zip(foci[:-1], foci[1:])] + [z1]
+    parts = []
+    for k, zc in enumerate(foci):
+        a, b = cuts[k], cuts[k + 1]
+        n = n_axial if len(foci) == 1 else max(2, int(round(n_axial * (b - a) / (z1 - z0))))
+        parts.append(_graded(a, b, zc, h_contact, n))
+    zs = np.unique(np.concatenate(parts)) if len(parts) > 1 else parts[0]
+    edges = list(section.groove_edges)
+    zs = np.unique(np.concatenate([zs, edges]))
     # merge nodes closer than h_contact/3 to a groove edge onto the edge
     keep = np.ones(len(zs), bool)
-    for e in (-ze, ze):
+    for e in edges:
         close = (np.abs(zs - e) < h_contact / 3) & (zs != e)
         keep &= ~close
     zs = zs[keep]
-    depth = section.wall + abs(section.land_radius - section.groove_bottom_radius)
+    depth = section.depth
     t = _graded(0.0, 1.0, 1.0, h_contact / depth, n_through)
     if section.sleeve_radius is not None:
         w = abs(section.seat_radius - section.sleeve_radius)
@@ -251,10 +282,10 @@ def section_grid(section: RingSection, h_contact: float, n_through: int = 8, n_a
     return t, zs, radius
 
 
-def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_axial: int = 16, n_sleeve: int = 6):
+def mesh_section(section, h_contact: float, n_through: int = 8, n_axial: int = 16, n_sleeve: int = 6):
     """Structured quadrilateral mesh (skfem ``MeshQuad``) of ``section`` (and its seat sleeve) in (r, z) [m].
 
-    Nodes: axial positions graded from ``h_contact`` at the contact point (and including the groove edges) to
+    Nodes: axial positions graded from ``h_contact`` at the contact point(s) (and including the groove edges) to
     about B/n_axial; through the wall ``n_through`` layers graded from ``h_contact`` at the raceway; the sleeve
     (if any) ``n_sleeve`` layers growing away from the seat.  Each axial line of nodes runs straight from the
     seat to the raceway surface (the surface is followed at the nodes).  Boundaries named ``seat`` (the
@@ -263,7 +294,8 @@ def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_a
     from skfem import MeshQuad
 
     t, zs, radius = section_grid(section, h_contact, n_through, n_axial, n_sleeve)
-    hw = section.half_width
+    z0, z1 = section.z_faces
+    hw = 0.5 * (z1 - z0)
     far = section.sleeve_radius if section.sleeve_radius is not None else section.seat_radius
     mesh = MeshQuad.init_tensor(t, zs)
     tt, zz = mesh.p
@@ -271,9 +303,9 @@ def mesh_section(section: RingSection, h_contact: float, n_through: int = 8, n_a
     tol = 1e-9 * hw
     return mesh.with_boundaries({
         "seat": lambda x: np.abs(x[0] - far) < tol,
-        "face_minus": lambda x: np.abs(x[1] + hw) < tol,
-        "face_plus": lambda x: np.abs(x[1] - hw) < tol,
-        "raceway": lambda x: (np.abs(x[0] - far) >= tol) & (np.abs(np.abs(x[1]) - hw) >= tol),
+        "face_minus": lambda x: np.abs(x[1] - z0) < tol,
+        "face_plus": lambda x: np.abs(x[1] - z1) < tol,
+        "raceway": lambda x: (np.abs(x[0] - far) >= tol) & (np.abs(x[1] - z0) >= tol) & (np.abs(x[1] - z1) >= tol),
     })
 
 

@@ -108,7 +108,7 @@ def spec_of(bearing) -> RingSpec | None:
     if isinstance(spec, RingSpec):
         return spec
     rows = getattr(bearing, "rows", None)
-    if rows and not hasattr(bearing, "ball_count"):  # a system: its rows' bearings
+    if rows and getattr(bearing, "kind", None) == "bearing_system":  # a system: its rows' bearings
         for row in rows:
             s = spec_of(row.bearing)
             if s is not None:
