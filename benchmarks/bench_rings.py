@@ -13,7 +13,11 @@
     section grid: (u_r, u_z) at the contact point and at depths 1.8 and 3.6 mm below it, under a ball (θ = 0) and
     between two (θ = 45°).  Issue 16: ≤ 2 %.  Minutes (not in CI).
 
-Usage:  python benchmarks/bench_rings.py [--repeat 30] [--skip-first] [--solid3d] [--n-theta 8]
+(e) With ``--shared3d``: the same comparison for the shared outer ring of the [S1] hub unit (two grooves,
+    :mod:`bearingsim.rings.shared`, estimated section): four 1 kN ball loads on row 1 only, the displacements
+    read at row 1's and at row 2's contact points: the row-to-row coupling against the 3-D reference.
+
+Usage:  python benchmarks/bench_rings.py [--repeat 30] [--skip-first] [--solid3d] [--shared3d] [--n-theta 8]
 The numba compilation is excluded (one warm-up solve each).  CPU seconds (process time) are printed next to
 the wall seconds: the steadier figure on a shared machine.
 """
@@ -40,9 +44,13 @@ def main() -> None:
     ap.add_argument("--skip-first", action="store_true", help="skip (a)'s first computation (use the user cache)")
     ap.add_argument("--solid3d", action="store_true", help="only (d): harmonic model vs the 3-D reference")
     ap.add_argument("--n-theta", type=int, default=8, help="(d): hexahedra over the quarter circumference")
+    ap.add_argument("--shared3d", action="store_true", help="only (e): the hub's shared outer ring vs 3-D")
     args = ap.parse_args()
     if args.solid3d:
         solid3d(args.n_theta)
+        return
+    if args.shared3d:
+        shared3d(args.n_theta)
         return
 
     from bearingsim.io import load_bearing
@@ -137,6 +145,54 @@ def solid3d(n_theta: int) -> None:
                   f" | max dev {np.abs(dev).max():.2%}")
         print(f"(d) {sec.kind}: 3-D {s3.dofs} unknowns, {wall:.0f} s wall, {cpu:.0f} s CPU")
     print(f"(d) largest deviation of the harmonic model from the 3-D reference: {worst:.2%} (issue 16: ≤ 2 %)")
+
+
+def shared3d(n_theta: int) -> None:
+    """(e) of the module docstring: the shared outer ring of the [S1] hub (two grooves), four 1 kN ball loads on
+    row 1 only; (u_r, u_z) at both rows' contact points (and 1.8, 3.6 mm below), harmonic vs 3-D."""
+    import math
+
+    from bearingsim.io import load_bearing
+    from bearingsim.rings.axisymmetric import HarmonicRing
+    from bearingsim.rings.section import mesh_section
+    from bearingsim.rings.shared import estimate_unit
+    from bearingsim.rings.solid3d import QuarterRing3D
+
+    hub = load_bearing("hub-seed001")
+    b = hub.rows[0].bearing
+    e, nu = b.ring_material.youngs_modulus, b.ring_material.poisson_ratio
+    _, sec, _ = estimate_unit(hub)
+    sig, sig_t, h, force = 1.2e-3, 0.2, 0.6e-3, 1000.0
+    p1 = sec.contact_point(0)
+    n1 = sec.to_global(0) @ sec.local_normal(0)
+    t0 = time.perf_counter()
+    s3 = QuarterRing3D(sec, e, nu, h, n_theta=n_theta, n_through=5, n_axial=10)
+    print(f"(e) 3-D shared ring: {s3.dofs} unknowns", flush=True)
+    x = s3.solve(s3.ball_load_vector(p1, -n1, sig, sig_t, (-math.pi / 2, 0.0, math.pi / 2, math.pi), force=force))
+    wall3 = time.perf_counter() - t0
+    ring = HarmonicRing(mesh_section(sec, h, 5, 10), e, nu, radial_fixed=("seat",), axial_fixed=("seat",),
+                        radial_harmonics=(1,))
+    fl = ring.point_load("raceway", p1, -n1, sig)
+    worst = 0.0
+    for k in (0, 1):
+        p, nk = sec.contact_point(k), sec.to_global(k) @ sec.local_normal(k)
+        pts = np.column_stack([p, p + 1.5 * sig * nk, p + 3.0 * sig * nk])
+        probe = ring.probe(pts)
+        for th in (0.0, math.pi / 4):
+            uh = np.zeros((2, 3))
+            for n in range(0, 200, 4):
+                gh = math.exp(-0.5 * (n * sig_t) ** 2)
+                if gh < 1e-10:
+                    break
+                v = probe @ ring.solve(n, force * gh * fl)
+                uh += 4.0 * math.cos(n * th) * np.vstack([v[0:3], v[3:6]])
+            u3 = s3.cylindrical(x, pts, th)
+            dev = (u3 - uh) / np.abs(uh).max()
+            worst = max(worst, float(np.abs(dev).max()))
+            print(f"(e) groove of row {k + 1}, θ = {math.degrees(th):3.0f}°  u_r [nm] 3-D {np.round(u3[0] * 1e9, 1)} "
+                  f"harmonic {np.round(uh[0] * 1e9, 1)} | u_z 3-D {np.round(u3[1] * 1e9, 1)} harmonic "
+                  f"{np.round(uh[1] * 1e9, 1)} | max dev {np.abs(dev).max():.2%} of the largest", flush=True)
+    print(f"(e) 3-D {s3.dofs} unknowns, {wall3:.0f} s wall; largest deviation {worst:.2%}")
 
 
 def _solve3d(sec, e, nu, h, n_theta, p, nin, sig, sig_t, force):

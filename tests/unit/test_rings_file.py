@@ -114,3 +114,29 @@ def test_bad_rings_key_is_one_line(tmp_path):
     r = run("static", str(p), "--fa", "3 kN", check=False)
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1
     assert "rings.housing.outer_diameter" in r.stderr
+
+
+def test_hub_file_gives_the_shared_ring_dimensions():
+    """examples/hub-rings.toml: the [rings] table of an arrangement file (unit dimensions, knuckle, solid shaft)
+    reaches the sections of the shared outer ring and of the inner rings; nothing is then estimated."""
+    from pathlib import Path
+
+    from bearingsim.rings.shared import estimate_unit
+
+    hub = load_bearing(Path(__file__).parents[2] / "examples" / "hub-rings.toml")
+    spec = spec_of(hub)
+    assert model_of(hub) == "fe" and spec.outer_ring == (0.084, 0.042) and spec.inner_rings == (0.04, 0.0182)
+    inners, outer, notes = estimate_unit(hub, spec, housing=spec.housing, shaft=spec.shaft)
+    assert notes["estimated"] == []
+    assert outer.seat_radius == 0.042 and outer.z_faces == pytest.approx((-0.021, 0.021))
+    assert outer.sleeve_radius == 0.06 and outer.sleeve_youngs_modulus == 70e9 and outer.sleeve_poisson_ratio == 0.33
+    for i in inners:
+        assert i.seat_radius == 0.02 and i.half_width == pytest.approx(0.0091)
+        assert i.sleeve_radius == pytest.approx(0.05 * 0.02)  # solid shaft: the small-bore stand-in
+    with pytest.raises(InputError) as e:  # a hub's housing inside its outer ring
+        from bearingsim.io.bearing import bearing_from_dict, resolve_bearing_data
+
+        data = resolve_bearing_data(Path(__file__).parents[2] / "examples" / "hub-rings.toml")
+        data["rings"]["housing"]["outer_diameter"] = "80 mm"
+        bearing_from_dict(data)
+    assert e.value.field == "rings.housing.outer_diameter"

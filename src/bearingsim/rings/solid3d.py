@@ -5,7 +5,8 @@ The ring cross-section grid of :func:`.section.section_grid` is swept around the
 hexahedra (``ElementHex2`` on a ``MeshHex``: the ring becomes a polygon of 4·``n_theta`` sides).  One quarter of
 the ring, θ ∈ [0, π/2], is modelled with symmetry planes (u_y = 0 on y = 0, u_x = 0 on x = 0): it carries loads
 symmetric about both planes, e.g. four equal ball loads at θ = 0, π/2, π, 3π/2 (harmonics n = 0, 4, 8, …).
-Supports as in :func:`.influence.compute_influence`: the loaded face held axially; the seat sleeve's far surface
+Supports as in :func:`.influence.compute_influence`: the loaded face held axially (a shared ring of
+:mod:`.shared`: its far surface held axially); the seat sleeve's far surface
 free (harmonic 1, the only one held there, is absent from these loads), or without a sleeve the ring's seat held
 radially (only for the radial direction: done here by holding both in-plane components, so compare rigid-seat
 cases only at n = 0).  Isotropic linear elasticity (skfem.models.elasticity).
@@ -54,12 +55,18 @@ class QuarterRing3D:
         self.scalar_basis = Basis(self.mesh, ElementHex2(), intorder=4)
         lam, mu = lame_parameters(float(youngs_modulus), float(poisson_ratio))
         self.k = asm(linear_elasticity(lam, mu), self.basis).tocsr()
-        hw = section.half_width
+        z0, z1 = section.z_faces
+        hw = 0.5 * (z1 - z0)
         tol = 1e-9 * hw
-        zface = section.support_face_z
         d = self.basis.get_dofs
-        fixed = [d(lambda x: np.abs(x[1]) < tol).all("u^2"), d(lambda x: np.abs(x[0]) < tol).all("u^1"),
-                 d(lambda x: np.abs(x[2] - zface) < tol).all("u^3")]
+        fixed = [d(lambda x: np.abs(x[1]) < tol).all("u^2"), d(lambda x: np.abs(x[0]) < tol).all("u^1")]
+        far = section.sleeve_radius if section.sleeve_radius is not None else section.seat_radius
+        support = getattr(section, "axial_support", None)
+        if support == "seat":  # a shared ring (.shared): held axially at the far surface (every harmonic)
+            fixed.append(d(lambda x: np.abs(np.hypot(x[0], x[1]) - far) < 1e-6 * hw).all("u^3"))
+        else:
+            zface = section.support_face_z if support is None else (z0 if support == "face_minus" else z1)
+            fixed.append(d(lambda x: np.abs(x[2] - zface) < tol).all("u^3"))
         if section.sleeve_radius is None:  # a rigid seat
             seat = lambda x: np.abs(np.hypot(x[0], x[1]) - section.seat_radius) < 1e-6 * hw  # noqa: E731
             fixed += [d(seat).all("u^1"), d(seat).all("u^2")]
@@ -75,8 +82,9 @@ class QuarterRing3D:
         bnd = self.mesh.boundary_facets()
         r = np.hypot(mid[0, bnd], mid[1, bnd])
         tol = 1e-7
-        keep = (np.abs(mid[0, bnd]) > tol) & (np.abs(mid[1, bnd]) > tol) & \
-            (np.abs(np.abs(mid[2, bnd]) - s.half_width) > tol) & (np.abs(r - far) > 1e-6 * s.half_width)
+        z0, z1 = s.z_faces
+        keep = (np.abs(mid[0, bnd]) > tol) & (np.abs(mid[1, bnd]) > tol) & (np.abs(mid[2, bnd] - z0) > tol) & \
+            (np.abs(mid[2, bnd] - z1) > tol) & (np.abs(r - far) > 1e-6 * (z1 - z0))
         return bnd[keep]
 
     def ball_load_vector(self, point, direction, sigma: float, sigma_theta: float, thetas, force: float = 1.0):
