@@ -4,8 +4,11 @@
     (an empty cache folder) and the cached read.  Target: ≤ 30 s per ring the first time.
 (b) A static solve with FE rings (coefficients cached) against the rigid-ring solve, same loads, alternating
     (the shared machine's load varies), median of ``--repeat`` runs each.  Target: ≤ 10× the rigid solve.
-(c) A small map (10 loads × 5 speeds up to 10,000 rpm) with FE rings: the coefficients are read from the cache
-    once and reused for every point.
+(c) A small map (``bearingsim.sweep.map_grid``, 10 loads × 5 speeds up to 10,000 rpm, in this process) with FE
+    rings against the rigid-ring map (batch kernel): the coefficients are read from the cache once and reused
+    for every point (warm-started from the previous point).
+(f) The [S1] hub unit (one outer ring shared by both rows, two inner rings): coefficients first time and cached,
+    a static solve with FE rings against rigid rings, a map over 25 moments.
 
 (d) With ``--solid3d``: the harmonic ring model against the 3-D quarter-ring reference
     (:class:`bearingsim.rings.solid3d.QuarterRing3D`, quadratic hexahedra) for both 7011 rings under four equal
@@ -90,19 +93,46 @@ def main() -> None:
               f"ratio {ratio:5.1f}  (K_xx {r0.axial_stiffness / 1e6:6.1f} → {r1.axial_stiffness / 1e6:6.1f} N/µm, "
               f"{r1.ring_iterations} ring iterations)")
 
-    def fe_map():
-        model = ring_model(b)  # read from the cache once, reused for every point
-        return [solve_fe(b, Loads(fa=fa), n * np.pi / 30.0, rings=model).axial_stiffness
-                for fa in np.linspace(500.0, 5000.0, 10) for n in np.linspace(0.0, 10000.0, 5)]
+    from bearingsim.sweep import map_grid
 
-    def rigid_map():
-        return [solve(b, Loads(fa=fa), n * np.pi / 30.0).axial_stiffness
-                for fa in np.linspace(500.0, 5000.0, 10) for n in np.linspace(0.0, 10000.0, 5)]
+    grid = dict(fa="500:5000:10", speed="0:10000:5", workers=1)
+    map_grid(b, fa=[1000.0, 2000.0], workers=1)  # compiled kernels loaded before timing
+    _, wr, cr = timed(lambda: map_grid(b, **grid))
+    _, wf, cf = timed(lambda: map_grid(b, rings="fe", **grid))
+    print(f"(c) bearingsim.sweep.map_grid 10 loads × 5 speeds, in this process: rigid rings (batch kernel) "
+          f"{cr:.2f} s CPU, FE rings (coefficients from the cache once, warm-started points) {cf:.2f} s CPU "
+          f"({1e3 * cf / 50:.1f} ms per point), ratio {cf / max(cr, 1e-9):.0f}")
 
-    _, wr, cr = timed(rigid_map)
-    _, wf, cf = timed(fe_map)
-    print(f"(c) map 10 loads × 5 speeds: rigid {cr:.2f} s CPU, FE rings (coefficients read from the cache once) "
-          f"{cf:.2f} s CPU, ratio {cf / cr:.1f}")
+    # (f) the [S1] hub unit: shared outer ring (two grooves) + two inner rings
+    from bearingsim.rings.shared import estimate_unit
+
+    hub = load_bearing("hub-seed001")
+    if not args.skip_first:
+        _, wh, ch = timed(lambda: ring_model(hub))
+        print(f"(f) hub unit, all ring coefficients first time: {wh:.1f} s wall, {ch:.1f} s CPU "
+              f"(shared outer ring of {estimate_unit(hub)[1].z_faces} m)")
+    hrings, wh, _ = timed(lambda: ring_model(hub))
+    print(f"(f) hub rings from the cache: {1e3 * wh:.1f} ms wall; shared ring "
+          f"{hrings.description['shared_outer_ring']['dofs']} unknowns, "
+          f"{hrings.description['shared_outer_ring']['seconds']:.1f} s when computed")
+    hl = Loads(fa=1890.0, fr_y=3750.0, m_z=600.0)
+    solve(hub, hl)
+    solve_fe(hub, hl, rings=hrings)
+    tr, tf = [], []
+    for _ in range(args.repeat):
+        tr.append(timed(lambda: solve(hub, hl))[2])
+        tf.append(timed(lambda: solve_fe(hub, hl, rings=hrings))[2])
+    r0, r1 = solve(hub, hl), solve_fe(hub, hl, rings=hrings)
+    print(f"(f) hub static (Fa 1890 N, Fr 3750 N, M 600 N·m): rigid {1e3 * np.median(tr):.2f} ms CPU, FE rings "
+          f"{1e3 * np.median(tf):.2f} ms CPU, ratio {np.median(tf) / np.median(tr):.1f}; tilt "
+          f"{r0.displacement[4] * 1e3:.3f} → {r1.displacement[4] * 1e3:.3f} mrad, K_tilt "
+          f"{r0.stiffness[4, 4] / 1e3:.1f} → {r1.stiffness[4, 4] / 1e3:.1f} N·m/mrad")
+    hgrid = dict(moment="-600:600:25", fr="2785 N", workers=1)
+    map_grid(hub, moment=[0.0, 100.0], workers=1)
+    _, wr, cr = timed(lambda: map_grid(hub, **hgrid))
+    _, wf, cf = timed(lambda: map_grid(hub, rings="fe", **hgrid))
+    print(f"(f) hub map over 25 moments: rigid {cr:.2f} s CPU, FE rings {cf:.2f} s CPU ({1e3 * cf / 25:.1f} ms per "
+          f"point), ratio {cf / max(cr, 1e-9):.0f}")
     if tmp is not None:
         tmp.cleanup()
 

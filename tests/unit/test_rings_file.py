@@ -72,7 +72,7 @@ def test_rigid_seat_and_solid_shaft(tmp_path):
     from bearingsim.rings.section import estimate_sections
 
     inner, outer = estimate_sections(load_bearing("skf-7011-cdga-hc"), housing=spec.housing, shaft=spec.shaft)
-    assert outer.sleeve_radius is None and inner.sleeve_radius == pytest.approx(0.05 * 0.0275)
+    assert outer.sleeve_radius is None and inner.sleeve_radius == pytest.approx(0.25 * 0.0275)
 
 
 @pytest.mark.parametrize(("text", "field"), [
@@ -132,7 +132,7 @@ def test_hub_file_gives_the_shared_ring_dimensions():
     assert outer.sleeve_radius == 0.06 and outer.sleeve_youngs_modulus == 70e9 and outer.sleeve_poisson_ratio == 0.33
     for i in inners:
         assert i.seat_radius == 0.02 and i.half_width == pytest.approx(0.0091)
-        assert i.sleeve_radius == pytest.approx(0.05 * 0.02)  # solid shaft: the small-bore stand-in
+        assert i.sleeve_radius == pytest.approx(0.25 * 0.02)  # solid shaft: the rigid-core stand-in
     with pytest.raises(InputError) as e:  # a hub's housing inside its outer ring
         from bearingsim.io.bearing import bearing_from_dict, resolve_bearing_data
 
