@@ -218,6 +218,13 @@ def solve_block(bearing, axes: dict, block: tuple, control: str = "outer", rings
             out = solve_points(brg, loads, pick["speed"][sel], control, rings)
         for key in res:
             res[key][sel] = out[key]
+    # ISO 281 basic rating life of every point from its external loads and speed (life.basic_rating_life_arrays;
+    # the preload and the moments are not part of ISO 281's P): L10 [revolutions, SI count] and L10h [s]
+    from .life import basic_rating_life_arrays
+
+    l10, l10h = basic_rating_life_arrays(bearing, np.hypot(pick["fr"], pick["fr_z"]), pick["fa"], pick["speed"])
+    res["l10_rev"] = l10 * 1e6
+    res["l10_s"] = l10h * 3600.0
     # back to the block's C order
     order = np.ravel_multi_index(tuple(flat), shape) if dims else np.zeros(1, dtype=np.int64)
     back = {}
@@ -246,6 +253,10 @@ _VARS = {
     "contact_angle_inner_max": ("alpha_inner_max", (), "f8", "rad", "largest inner contact angle, loaded balls"),
     "contact_angle_outer_min": ("alpha_outer_min", (), "f8", "rad", "smallest outer contact angle, loaded balls"),
     "contact_angle_outer_max": ("alpha_outer_max", (), "f8", "rad", "largest outer contact angle, loaded balls"),
+    "basic_rating_life": ("l10_rev", (), "f8", "1", "ISO 281 basic rating life L10 in revolutions (external Fa and "
+                          "Fr only; inf at zero load, NaN where ISO 281 gives none)"),
+    "basic_rating_life_time": ("l10_s", (), "f8", "s", "ISO 281 basic rating life L10h at the point's speed "
+                               "(NaN at zero speed)"),
 }
 _SUMMARY_INDEX = {"p_inner": 0, "p_outer": 1, "alpha_inner_min": 2, "alpha_inner_max": 3,
                   "alpha_outer_min": 4, "alpha_outer_max": 5}
@@ -258,6 +269,10 @@ def _var_attrs(name: str) -> dict:
         from .limits import cf_attributes
 
         return cf_attributes()
+    if name == "basic_rating_life_time":
+        return {"units_display": "h"}
+    if name == "basic_rating_life":
+        return {"units_display": "1e6 rev"}
     if name == "status":
         attrs = status_cf_attributes()
         attrs["flag_values"] = np.array(attrs["flag_values"], dtype=np.int32)  # the variable's type (CF §3.5)
