@@ -1,6 +1,11 @@
 """ISO 281:2007 table 3 (X, Y, e of radial ball bearings): the rows checked against published reproductions in
 2026-11 (docs/life.md, "Sources of ISO 281 table 3", lists every row and source).
 
+* JTEKT (Koyo) catalogue, technical section "Calculation of equivalent radial / axial load"
+  (koyousa.com/koyocatalog/technical/03/3_1_32.htm): the deep-groove rows (f₀F_a/C₀r 0.172 … 6.89, e, X 0.56,
+  Y), the 15° rows (i f₀F_a/C₀r 0.178 … , e, single/tandem X 0.44 Y 1.47 … 1.00, back-to-back/face-to-face X 1
+  Y 1.65 … 1.12 and X 0.72 Y 2.39 … 1.63; the page's last abscissa prints 5.35 twice, a typo for 7.14), the 30°
+  and 40° rows, and "for i, use 2 for DB & DF arrangements and 1 for single & DT".
 * 40° row: NSK leaflet "New 40° angular contact ball bearings" (paperzz.com/doc/7284321): e 1.14; single / DT
   F_a/F_r > e: X 0.35, Y 0.57; DB / DF F_a/F_r ≤ e: X 1, Y 0.55; > e: X 0.57, Y 0.93.
 * 5°, 10°, 15° rows: two independent open transcriptions of ISO 281:2007 table 3 (a Rust bearing code, module
@@ -19,7 +24,8 @@ import pytest
 
 from bearingsim import life
 
-NSK40 = "NSK leaflet 'New 40° angular contact ball bearings' (ISO 281 table 3, 40° row)"
+NSK40 = "NSK leaflet 'New 40° angular contact ball bearings' and JTEKT (Koyo) catalogue 3_1_32 (table 3, 40° row)"
+KOYO = "JTEKT (Koyo) catalogue, 'Calculation of equivalent radial / axial load' (koyousa.com ... 3_1_32.htm)"
 T3_SMALL = "ISO 281:2007 table 3, 5°-15° rows (two open transcriptions, docs/life.md)"
 
 
@@ -40,11 +46,11 @@ def test_40deg_row_against_the_nsk_leaflet():
 def test_15deg_rows_single_and_double(k, rel, e, y, y1, y2):
     a = math.radians(15.0)
     np.testing.assert_allclose(life.xy_factors(1000.0, 5000.0, a, 1, rel_load=rel), (0.44, y, e), atol=1e-12,
-                               err_msg=T3_SMALL + f", 15° single row, row {k}")
+                               err_msg=KOYO + f", 15° single row, row {k}")
     np.testing.assert_allclose(life.xy_factors(1000.0, 0.5 * e * 1000.0, a, 2, rel_load=rel), (1.0, y1, e),
-                               atol=1e-12, err_msg=T3_SMALL + f", 15° double row F_a/F_r <= e, row {k}")
+                               atol=1e-12, err_msg=KOYO + f", 15° DB/DF F_a/F_r <= e, row {k}")
     np.testing.assert_allclose(life.xy_factors(1000.0, 5000.0, a, 2, rel_load=rel), (0.72, y2, e), atol=1e-12,
-                               err_msg=T3_SMALL + f", 15° double row F_a/F_r > e, row {k}")
+                               err_msg=KOYO + f", 15° DB/DF F_a/F_r > e, row {k}")
 
 
 @pytest.mark.parametrize("k, rel5, rel_dg, e_dg, y_dg, e2, y1, y2", list(zip(
@@ -86,3 +92,18 @@ def test_pair_relative_axial_load_carries_i():
     t = (rel_db - 2.14) / (3.57 - 2.14)
     np.testing.assert_allclose((x, y, e), (0.72, 1.82 + t * (1.66 - 1.82), 0.50 + t * (0.55 - 0.50)), atol=1e-12,
                                err_msg=T3_SMALL + ", i f0 Fa/C0r of a DB pair")
+
+
+def test_30deg_row_against_the_koyo_catalogue():
+    a = math.radians(30.0)
+    np.testing.assert_allclose(life.xy_factors(1000.0, 2000.0, a, 1), (0.39, 0.76, 0.80), atol=1e-12, err_msg=KOYO)
+    np.testing.assert_allclose(life.xy_factors(1000.0, 500.0, a, 2), (1.0, 0.78, 0.80), atol=1e-12, err_msg=KOYO)
+    np.testing.assert_allclose(life.xy_factors(1000.0, 2000.0, a, 2), (0.63, 1.24, 0.80), atol=1e-12, err_msg=KOYO)
+
+
+@pytest.mark.parametrize("rel, e, y", list(zip((0.172, 0.345, 0.689, 1.03, 1.38, 2.07, 3.45, 5.17, 6.89),
+                                               (0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44),
+                                               (2.30, 1.99, 1.71, 1.55, 1.45, 1.31, 1.15, 1.04, 1.00))))
+def test_deep_groove_rows_against_the_koyo_catalogue(rel, e, y):
+    np.testing.assert_allclose(life.xy_factors(1000.0, 3000.0, 0.0, 1, "deep_groove", rel), (0.56, y, e), atol=1e-12,
+                               err_msg=KOYO + ", deep groove")
