@@ -63,7 +63,9 @@ class QuarterRing3D:
         far = section.sleeve_radius if section.sleeve_radius is not None else section.seat_radius
         support = getattr(section, "axial_support", None)
         if support == "seat":  # a shared ring (.shared): held axially at the far surface (every harmonic)
-            fixed.append(d(lambda x: np.abs(np.hypot(x[0], x[1]) - far) < 1e-6 * hw).all("u^3"))
+            # the far surface is a polygon of chords: its facet points lie up to far (1 − cos(Δφ/2)) inside
+            sag = far * (1.0 - math.cos(0.25 * math.pi / n_theta)) * 1.01 + 1e-6 * hw
+            fixed.append(d(lambda x: np.abs(np.hypot(x[0], x[1]) - far) < sag).all("u^3"))
         else:
             zface = section.support_face_z if support is None else (z0 if support == "face_minus" else z1)
             fixed.append(d(lambda x: np.abs(x[2] - zface) < tol).all("u^3"))
