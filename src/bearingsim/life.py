@@ -160,7 +160,9 @@ def reference_rating_life(result) -> float | None:
 
 # ---- ISO 281:2007 table 3: X, Y, e ------------------------------------------------------------------
 #: Sources of the values below (checked 2026-11, primary text of ISO 281:2007 not available to the project):
-#: deep-groove rows — the ANSI/ABMA 9 table reproduced in "Rules of Thumb for Mechanical Engineers" (table 7a,
+#: deep-groove, 15°, 30° and 40° rows and the i of pairs — the JTEKT (Koyo) catalogue, "Calculation of equivalent
+#: radial / axial load" (koyousa.com/koyocatalog/technical/03/3_1_32.htm); also, deep-groove rows —
+#: the ANSI/ABMA 9 table reproduced in "Rules of Thumb for Mechanical Engineers" (table 7a,
 #: F_a/(iZD²) = 24.92 … 999.05 lbf/in², e 0.19 … 0.44, Y 2.30 … 1.00, X 0.56) and five independent open
 #: transcriptions (docs/life.md lists them); 20°–45° rows — NSK "New 40° angular contact ball bearings" leaflet
 #: (e 1.14, X 0.35, Y 0.57; pair 1/0.55 and 0.57/0.93) and the same transcriptions; 5°, 10°, 15° rows (single and
