@@ -99,3 +99,18 @@ def test_cli_report_shows_the_held_tilt_and_its_reaction_moment(tmp_path):
     r = jh.solve(load_bearing("6205"), jh.Loads(fr_y=2000.0, fa=500.0), W, tilt="fixed")
     assert "held at γy = 0 mrad, γz = 0 mrad" in html
     assert f"{r.reaction_moment[1]:.4g} N·m" in html and "reaction moment (tilt held)" in html
+
+
+@pytest.mark.parametrize("name, loads", [("6208", dict(fr_y=3000.0, fa=800.0, m_z=6.0, m_y=-2.0)),
+                                         ("7205-30", dict(fr_y=1500.0, fa=2000.0, m_z=-4.0)),
+                                         ("6305", dict(fr_y=2000.0, m_y=3.0))])
+def test_holding_the_free_tilt_needs_no_reaction(name, loads):
+    """The inverse check: hold the tilt at the free equilibrium's own tilt under the same loads (moments included):
+    the constraint has nothing to do, reaction moment ≈ 0 and the same displacement."""
+    b = load_bearing(name)
+    free = jh.solve(b, jh.Loads(**loads), W)
+    held = jh.solve(b, jh.Loads(**loads), W, tilt="fixed", misalignment=free.displacement[3:])
+    assert free.converged and held.converged
+    scale = max(abs(v) for v in loads.values())
+    np.testing.assert_allclose(held.reaction_moment, 0.0, atol=1e-6 * scale * 0.5 * b.pitch_diameter)
+    np.testing.assert_allclose(held.displacement, free.displacement, rtol=0, atol=1e-10)
