@@ -6,7 +6,7 @@ Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 2
 
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
          [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8]
-         [--profile] [--kernel] [--accuracy] [--threads N]
+         [--profile] [--kernel] [--accuracy] [--threads N] [--steps]
 --accuracy compares the ring displacement of the chosen settings with a DOPRI5 run at
 tolerance 1e-7 over the same (short) duration and prints the largest deviation of each
 ring coordinate relative to its range (issue 14: ≤ 1e-4 for the loaded coordinates over 5 ms).
@@ -14,6 +14,9 @@ ring coordinate relative to its range (issue 14: ≤ 1e-4 for the loaded coordin
 runs use (ROS34PW2 with sliced traction, DOPRI5 otherwise), reporting its mean step and right-hand
 sides per step.  --threads N: threads for the ball contacts (default 1 here, for comparable figures;
 the results are the same bit for bit).
+--steps profiles what limits the ROS34PW2 step over --duration (default 1 ms, after 0.05 ms of start-up): per
+state class the share of the summed squared scaled error and how often it held the largest component, the
+rejected steps, and the balls with the largest error share (loaded or not).
 The numba compilation is excluded (a 0.05 ms warm-up run compiles first).  Peak memory
 is the process's maximum resident set size.  The CPU seconds (process time) are the steadier
 figure on a shared machine, where the wall time also counts the waits for a core.
@@ -123,6 +126,61 @@ def kernel_profile(name: str, threads: int = 1) -> None:
               f"{cnt.most_common(1)[0][0]}")
 
 
+def step_profile(name: str, duration: float, tolerance: float | None = None) -> None:
+    """Where the steps go (issue 14): runs ``duration`` of the case with ROS34PW2 after 0.05 ms of start-up and
+    reports, per state class (ring, ball positions, velocities, angular velocities by axis, cage), the share of
+    the summed squared scaled error over all attempted steps and how often the class held the largest
+    component, the rejected steps, and the ten balls with the largest error share (with their inner contact
+    load at the end: loaded or not)."""
+    import numpy as np
+
+    from bearingsim.dynamics import forces as fo
+    from bearingsim.dynamics import model as md
+    from bearingsim.dynamics import run as R
+    from bearingsim.dynamics.case import load_case
+    from bearingsim.dynamics.integrate import ros34pw2
+
+    case = load_case(CASES[name])
+    if tolerance:
+        case = dataclasses.replace(case, tolerance=tolerance)
+    m, ls, y, _ = R.build(case)
+    st = R.Stepper(m, ls, y.copy(), tol=case.tolerance, method="ros34w")
+    st.advance(5e-5)
+    ws = st.workspace
+    n = st.y.shape[0]
+    stats = np.zeros(2 * n)
+    info = np.zeros(4)
+    t0 = time.perf_counter()
+    status, t, h = ros34pw2.integrate(ws.fun, ws.args, st.t, st.t + duration, st.y, st.h, st.atol, st.rtol,
+                                      st.h_min, 10**8, info, ws.blk, ws.nbk, st.jac_every, st._ws, ws.rmass,
+                                      ws.bmass, stats)
+    wall = time.perf_counter() - t0
+    acc, rej = int(info[0]), int(info[1])
+    e2, worst = stats[:n], stats[n:]
+    oc = m.cage_offset
+    classes = {"ring position": np.arange(0, 5), "ring velocity": np.arange(5, 10)}
+    bidx = np.arange(m.n_balls) * md.N_BALL + md.N_RING
+    for lab, off in (("ball position", 0), ("ball velocity", 3), ("ball ang. velocity", 6)):
+        for ax, k in zip("xyz", range(3)):
+            classes[f"{lab} {ax}"] = bidx + off + k
+    classes["cage (all states)"] = np.arange(oc, n)
+    tot, wtot = e2.sum(), worst.sum()
+    print(f"case ({name}) ROS34PW2 tol {case.tolerance:g}: "
+          f"{duration * 1e3:.3g} ms in {wall:.3g} s, {acc} steps ({rej} rejected), mean step "
+          f"{duration / max(acc, 1) * 1e6:.3g} us, status {status}")
+    print("  class: share of summed squared scaled error | share of attempts where it held the largest component")
+    for lab, idx in classes.items():
+        print(f"  {lab:24s} {e2[idx].sum() / tot:7.3f} | {worst[idx].sum() / wtot:7.3f}")
+    _, diag, _ = fo.evaluate(m, st.t, st.y, ls)
+    per_ball = np.array([e2[o:o + md.N_BALL].sum() for o in bidx]) / tot
+    top = np.argsort(per_ball)[::-1][:10]
+    print("  balls with the largest error share (ball: share, inner contact load N at the end): "
+          + ", ".join(f"{k}: {per_ball[k]:.3f} ({diag[k, fo.D_QI]:.0f})" for k in top))
+    qi = diag[:, fo.D_QI]
+    print(f"  inner contact load range {qi.min():.0f}..{qi.max():.0f} N; balls below 20 % of the largest carry "
+          f"{per_ball[qi < 0.2 * qi.max()].sum():.3f} of the error")
+
+
 def _count_rhs(st):
     """A counter of right-hand-side calls of a stepper's integrator: a Python wrapper cannot be called from
     compiled code, so the count is estimated from the integrator's known costs (stages per step, Jacobian
@@ -158,7 +216,16 @@ def main(argv=None):
     ap.add_argument("--threads", type=int, default=1, help="threads for the ball contacts (default 1)")
     ap.add_argument("--kernel", action="store_true", help="time one right-hand side per traction model and "
                     "report what limits the step (numba profiling)")
+    ap.add_argument("--steps", action="store_true", help="profile what limits the ROS34PW2 step (error share per "
+                    "state class, rejected steps) over --duration (default 1 ms)")
     a = ap.parse_args(argv)
+    if a.steps:
+        from bearingsim.units import parse_quantity
+
+        dur = parse_quantity(a.duration, "time", "--duration") if a.duration else 1e-3
+        for name in (["a", "b"] if a.case == "both" else [a.case]):
+            step_profile(name, dur, a.tolerance)
+        return
     if a.kernel:
         for name in (["a", "b"] if a.case == "both" else [a.case]):
             kernel_profile(name, a.threads)

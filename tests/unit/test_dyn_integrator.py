@@ -147,6 +147,28 @@ def test_ros34w_restart_from_t_y_h_is_bitwise():
     assert np.array_equal(a, b)
 
 
+def test_ros34w_step_statistics_leave_the_steps_unchanged_and_count_every_attempt():
+    """The profiling array of ROS34PW2 (benchmarks/bench_dynamics.py --steps) changes no step: the same state and
+    step counts with and without it; it counts every attempted step (accepted or rejected) once under its largest
+    component."""
+    blk = np.array([0], dtype=np.int64)
+    atol = np.full(3, 1e-7)
+    rtol = np.zeros(3)
+    runs = []
+    for stats in (np.zeros(0), np.zeros(6)):
+        y = np.array([1.0, 0.0, 1.0])
+        info = np.zeros(4)
+        ws = ig.ros34_workspace(1, 3, False)
+        ig.advance_ros34(stiff, (1e4,), 0.0, 1.0, y, 0.5, atol, rtol, 1e-12, 10**6, info, blk, 3, 20, ws,
+                         np.zeros(0), np.zeros((0, 2)), stats)
+        runs.append((y, info.copy(), stats))
+    (y0, i0, _), (y1, i1, st) = runs
+    assert np.array_equal(y0, y1) and np.array_equal(i0, i1)
+    assert i1[1] > 0  # the first step (0.5) is rejected: rejections are counted too
+    assert st[3:].sum() == i1[0] + i1[1]
+    assert st[:3].sum() > 0 and np.all(st[:3] >= 0)
+
+
 def test_arrowhead_w_solve_and_product_equal_the_dense_ones():
     """The ring–ball coupled W of ROS34PW2 (ring block, ball blocks, coupling; Schur complement of the
     ring) solves and multiplies like the assembled dense matrix."""

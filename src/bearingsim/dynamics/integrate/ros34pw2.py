@@ -84,7 +84,7 @@ def stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft,
 
 @njit
 def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
-              rmass=np.zeros(0), bmass=np.zeros((0, 2))):
+              rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0)):
     """ROS34PW2 from t to t_end in place (module docstring).
 
     ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
@@ -92,6 +92,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     to the next; with ``rmass`` = (m, m, m, I_t, I_t) of the inner ring (the first 10 states) and
     ``bmass`` (m, J) per ball block, J also holds the ring's block and the ring–ball coupling.
     4 right-hand sides per step.  Same other arguments and return values as :func:`.dopri5.integrate`.
+    ``stats`` (profiling: ``benchmarks/bench_dynamics.py --steps``): when it holds 2n floats, every attempted
+    step adds each component's squared scaled error to stats[i] and 1 to stats[n + i] of its largest component
+    (the results do not change).
     """
     n = y.shape[0]
     nb = blk.shape[0]
@@ -157,6 +160,11 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
                        + (R34_M[2] - R34_E[2]) * k3[i] + (R34_M[3] - R34_E[3]) * k4[i])
         err, finite = error_norm(evec, y, ynew, atol, rtol, info)
+        if stats.shape[0] == 2 * n:
+            for i in range(n):
+                r = evec[i] / (atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i])))
+                stats[i] += r * r
+            stats[n + int(info[2])] += 1.0
         if err <= 1.0:
             for i in range(n):
                 y[i] = ynew[i]
