@@ -140,3 +140,10 @@ def test_hub_file_gives_the_shared_ring_dimensions():
         data["rings"]["housing"]["outer_diameter"] = "80 mm"
         bearing_from_dict(data)
     assert e.value.field == "rings.housing.outer_diameter"
+
+
+def test_map_bad_ring_model_is_one_line(tmp_path):
+    r = run("map", "skf-7011-cdga-hc", "--fa", "1 kN:2 kN:2", "--rings", "soft", "--out", str(tmp_path / "m.nc"),
+            check=False)
+    assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1 and "--rings" in r.stderr
+    assert not (tmp_path / "m.nc").exists()
