@@ -21,6 +21,7 @@
     read at row 1's and at row 2's contact points: the row-to-row coupling against the 3-D reference.
 
 Usage:  python benchmarks/bench_rings.py [--repeat 30] [--skip-first] [--solid3d] [--shared3d] [--n-theta 8]
+        [--figure map_fe.png]   (c)'s map: K_xx with rigid and FE rings over load and speed
 The numba compilation is excluded (one warm-up solve each).  CPU seconds (process time) are printed next to
 the wall seconds: the steadier figure on a shared machine.
 """
@@ -48,6 +49,7 @@ def main() -> None:
     ap.add_argument("--solid3d", action="store_true", help="only (d): harmonic model vs the 3-D reference")
     ap.add_argument("--n-theta", type=int, default=8, help="(d): hexahedra over the quarter circumference")
     ap.add_argument("--shared3d", action="store_true", help="only (e): the hub's shared outer ring vs 3-D")
+    ap.add_argument("--figure", default=None, help="(c): write the map's K_xx with FE / rigid rings to this PNG")
     args = ap.parse_args()
     if args.solid3d:
         solid3d(args.n_theta)
@@ -97,8 +99,10 @@ def main() -> None:
 
     grid = dict(fa="500:5000:10", speed="0:10000:5", workers=1)
     map_grid(b, fa=[1000.0, 2000.0], workers=1)  # compiled kernels loaded before timing
-    _, wr, cr = timed(lambda: map_grid(b, **grid))
-    _, wf, cf = timed(lambda: map_grid(b, rings="fe", **grid))
+    rigid_map, wr, cr = timed(lambda: map_grid(b, **grid))
+    fe_map, wf, cf = timed(lambda: map_grid(b, rings="fe", **grid))
+    if args.figure:
+        _map_figure(rigid_map, fe_map, args.figure)
     print(f"(c) bearingsim.sweep.map_grid 10 loads × 5 speeds, in this process: rigid rings (batch kernel) "
           f"{1e3 * cr / 50:.3f} ms CPU per point, FE rings (coefficients from the cache once, warm-started points) "
           f"{cf:.2f} s CPU "
@@ -177,6 +181,34 @@ def solid3d(n_theta: int) -> None:
                   f" | max dev {np.abs(dev).max():.2%}")
         print(f"(d) {sec.kind}: 3-D {s3.dofs} unknowns, {wall:.0f} s wall, {cpu:.0f} s CPU")
     print(f"(d) largest deviation of the harmonic model from the 3-D reference: {worst:.2%} (issue 16: ≤ 2 %)")
+
+
+def _map_figure(rigid, fe, path) -> None:
+    """K_xx over the (c) map with rigid and FE rings, and their ratio (matplotlib PNG)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fa = rigid["fa"].values / 1e3
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(10, 4))
+    for j, w in enumerate(rigid["speed"].values):
+        rpm = w * 30.0 / np.pi
+        kr = rigid["stiffness"].values[:, j, 0, 0] / 1e6
+        kf = fe["stiffness"].values[:, j, 0, 0] / 1e6
+        line, = a1.plot(fa, kr, "--", lw=1)
+        a1.plot(fa, kf, "-", color=line.get_color(), label=f"{rpm:.0f} rpm")
+        a2.plot(fa, kf / kr, "o-", color=line.get_color(), ms=3)
+    a1.set_xlabel("Fa [kN]")
+    a1.set_ylabel("K_xx [N/µm] (dashed: rigid rings, solid: FE rings)")
+    a1.legend(fontsize=8)
+    a2.set_xlabel("Fa [kN]")
+    a2.set_ylabel("K_xx FE rings / rigid rings")
+    fig.suptitle(f"{rigid.attrs.get('bearing', '')}: bearingsim map --rings fe")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print(f"(c) wrote {path}")
 
 
 def shared3d(n_theta: int) -> None:
