@@ -58,3 +58,15 @@ def test_shared_section_refuses_overlapping_grooves():
             getattr(g, k) for k in ("bottom_radius", "radius", "contact_angle")])), -0.02, 0.02)
     with pytest.raises(InputError, match="face"):
         SharedSection("outer", outer.seat_radius, outer.land_radius, (g,), -0.002, 0.002)
+
+
+def test_hub_sleeve_inside_the_estimated_ring_is_refused_by_field():
+    from bearingsim.rings.spec import Sleeve
+
+    hub = load_bearing("hub-seed001")
+    with pytest.raises(InputError) as e:
+        estimate_unit(hub, housing=Sleeve(0.08))  # inside the estimated 83.2 mm outer ring
+    assert e.value.field == "rings.housing.outer_diameter"
+    with pytest.raises(InputError) as e:
+        estimate_unit(hub, shaft=Sleeve(0.039))  # not inside the estimated 38.8 mm bore
+    assert e.value.field == "rings.shaft.inner_diameter"

@@ -368,6 +368,14 @@ def estimate_unit(system, spec=None, shoulder_fraction: float = 0.25, shaft_bore
     if not spec_i[1]:
         est.append(f"inner ring width {wi * 1e3:.4g} mm: ESTIMATE the row spacing (separate inner rings meeting "
                    "midway)")
+    if housing is not None and not housing.rigid and not housing.diameter > od:
+        raise InputError("rings.housing.outer_diameter", f"{housing.diameter * 1e3:.4g} mm is not larger than the "
+                         f"unit's outer ring ({od * 1e3:.4g} mm{', estimated' if not spec_o[0] else ''})",
+                         "give the housing's outside diameter, or the ring's in [rings.outer_ring]")
+    if shaft is not None and not shaft.rigid and not shaft.diameter < bore:
+        raise InputError("rings.shaft.inner_diameter", f"{shaft.diameter * 1e3:.4g} mm is not smaller than the "
+                         f"inner rings' bore ({bore * 1e3:.4g} mm{', estimated' if not spec_i[0] else ''})",
+                         "give the shaft's bore, or the rings' in [rings.inner_rings]")
     inners, grooves = [], []
     land = math.inf
     for r in rows:
