@@ -56,21 +56,28 @@ def test_series_law_limits():
     film_only = tr.creep_slope(q, a, b, g, nu, 0.3e9, 0.2e-6, solids=False)
     k_f = tr.film_creep_stiffness(a, b, 0.3e9, 0.2e-6)
     assert film_only == pytest.approx(k_f / q, rel=1e-14)
-    assert k_f == pytest.approx(0.3e9 * 2 * a * math.pi * a * b / (2 * 0.2e-6), rel=1e-14)
+    assert k_f == pytest.approx(8.0 / 3.0 * 0.3e9 * a * a * b / 0.2e-6, rel=1e-14)
     # a very stiff film (thin) → the solids; a very compliant film (thick) → the film
     assert tr.creep_slope(q, a, b, g, nu, 0.3e9, 1e-12) == pytest.approx(solid_only, rel=1e-4)
     assert tr.creep_slope(q, a, b, g * 1e6, nu, 0.3e9, 0.2e-6) == pytest.approx(film_only, rel=1e-5)
-    h_eq = 0.3e9 * 2 * a * math.pi * a * b / (2 * k_s)  # the film as stiff as the solids
+    h_eq = 8.0 / 3.0 * 0.3e9 * a * a * b / k_s  # the film as stiff as the solids
     assert tr.creep_slope(q, a, b, g, nu, 0.3e9, h_eq) == pytest.approx(0.5 * solid_only, rel=1e-12)
 
 
-def test_film_slope_is_the_traction_kernels_small_slip_limit():
-    """The film term is the s → 0 limit of elastic_plastic_mean_stress (τ̄ = τ_e/2, τ_e = G s ℓ/h)."""
+def test_film_slope_is_the_point_law_integrated_over_the_ellipse():
+    """The film term is the s → 0 limit of elastic_plastic_mean_stress integrated over the Hertz ellipse: a point at
+    distance x from the leading edge carries τ = G s x/h (each strip of chord ℓ has the mean τ_e/2 of
+    elastic_plastic_mean_stress with τ_e = G s ℓ/h); the double integral is done here by quadrature, independently
+    of the closed form (8/3) G a² b/h.  (The former uniform-chord form π G a² b/h, every strip with the longest chord,
+    is 3π/8 = 1.18 times larger and fails this.)"""
+    from scipy import integrate
+
     a, b, g_f, h, q = 1.5e-4, 1.3e-3, 0.25e9, 0.1e-6, 600.0
     s = 1e-7
-    tau = tr.elastic_plastic_mean_stress(1e9, g_f * s * 2 * a / h)
-    assert tau * math.pi * a * b / (q * s) == pytest.approx(tr.creep_slope(q, a, b, 79e9, 0.3, g_f, h, solids=False),
-                                                           rel=1e-12)
+    chord = lambda y: 2 * a * math.sqrt(max(0.0, 1 - (y / b) ** 2))  # noqa: E731
+    force, _ = integrate.quad(lambda y: tr.elastic_plastic_mean_stress(1e9, g_f * s * chord(y) / h) * chord(y), -b, b,
+                              epsabs=0.0, epsrel=1e-12, limit=200)
+    assert force / (q * s) == pytest.approx(tr.creep_slope(q, a, b, 79e9, 0.3, g_f, h, solids=False), rel=1e-9)
 
 
 def test_bad_input():

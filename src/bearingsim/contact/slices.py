@@ -99,7 +99,9 @@ L_EFFUS = 32  # effusivity sqrt(k rho c) of the solids [W s^0.5/(m^2 K)]
 L_ROLLRES = 33  # 1: rolling resistance and oil-film force on
 L_T0C = 34  # inlet temperature [degC]
 L_VISCO = 35  # 1: film elasticity (Johnson-Tevaarwerk elastic/plastic mean stress) on
-L_SIZE = 36
+L_GF_SCALE = 36  # factor on the film's elastic shear modulus G_f = tau_L/r_L (1: as the law gives; sensitivity studies)
+L_SFLEX = 37  # solids' tangential flexibility 8/(3 C11 G) [1/Pa] (x rolling semi-axis = Kalker's L1; 0: rigid solids)
+L_SIZE = 38
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
 FLUID_MODELS = {"curve": 0, "physical": 1}
@@ -325,7 +327,9 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     # film elasticity: the exit stress per unit slide-roll ratio is G ℓ_j/h with the strip's mean
     # chord ℓ_j = (strip area)/(strip width) = b·area·n/2 and G = τ_L(p̄, t₀)/r_L
     visco = visco and lss_r > 0.0
-    k_ve = 0.5 * b * n_slices * inv_hc / lss_r if lss_r > 0.0 else 0.0
+    k_ve = 0.5 * b * n_slices * inv_hc / lss_r * lub[L_GF_SCALE] if lss_r > 0.0 else 0.0
+    # solids in series (traction.solids_in_series_factor): tau_e / (1 + G_f L1/h), L1 = 8 b/(3 C11 G)
+    k_sol = lub[L_SFLEX] * b * inv_hc * lub[L_GF_SCALE] / lss_r if lss_r > 0.0 else 0.0
     two_inv_hc_tau0 = 2.0 * inv_hc_tau0
     ln_eta0 = math.log(eta0) if phys else 0.0
     # rolling resistance (traction.rolling_resistance_zh / _ir) with the slice-independent factor
@@ -438,7 +442,7 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
                                                lss_c2, lss_c3, lss_c4, beta_v)
                     if visco:
                         # traction.elastic_plastic_mean_stress with τ_e = G ℓ_j s/h (no rolling: τ_e = ∞)
-                        ke = k_ve * tl * area
+                        ke = k_ve * tl * area / (1.0 + k_sol * tl)
                         if u_a > 0.0:
                             tau_a = elastic_plastic_mean_stress(tau_a, ke * sr_a)
                         if u_b > 0.0:
@@ -674,7 +678,7 @@ def rolling_slip_zeros(sig0, sig1, sig2, a, curv):
 
 
 @njit(cache=True, error_model="numpy")
-def _point_mu(smag, u, pbar, chord, need_b, need_f, fluid_kind, wfl, hc, theta, lub):
+def _point_mu(smag, u, pbar, chord, need_b, need_f, fluid_kind, wfl, hc, theta, lub, b_roll=0.0):
     """Traction coefficient μ [-] at one point of the ellipse ([S1] eq. 2; the same formulae as the
     strip loop of :func:`contact_traction`, for one point): sliding speed smag [m/s], entraining
     speed u [m/s], mean pressure across the chord pbar [Pa], chord length in the rolling direction
@@ -705,7 +709,9 @@ def _point_mu(smag, u, pbar, chord, need_b, need_f, fluid_kind, wfl, hc, theta, 
                 tau = _heated_stress(tau, theta * smag, xe, l2x, pbar, fl, tau0, t0c, lss_r, c1, c2, c3, c4,
                                      lub[L_BETA_V])
             if lub[L_VISCO] != 0.0 and lss_r > 0.0 and u > 0.0:
-                tau = elastic_plastic_mean_stress(tau, tl / lss_r * chord / hc * sr)
+                g_f = tl / lss_r * lub[L_GF_SCALE]
+                ser = 1.0 / (1.0 + g_f * lub[L_SFLEX] * b_roll / hc)  # solids in series (Kalker L1)
+                tau = elastic_plastic_mean_stress(tau, g_f * chord / hc * sr * ser)
             mu += (tau / pbar - mu) * wfl
         else:
             mu -= mu * wfl
@@ -798,7 +804,7 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             drx, dry, drz = d0rx + qx, d0ry + qy, d0rz + qz
             if smag > 0.0:
                 mu = _point_mu(smag, uj, 0.375 * q * sq * inv_ab, 2.0 * b * sq, need_b, need_f, fluid_kind, wfl,
-                               hc, theta, lub)
+                               hc, theta, lub, b)
                 f = -mu * qj / smag
                 tx, ty, tz = f * sx, f * sy, f * sz
                 fx += tx
@@ -853,7 +859,8 @@ def pack_lubrication_parameters(lubricant, temperature: float, e_eff: float, rx:
                                 model: str = "mixed", fluid_model: str = "physical", fluid_curve=None,
                                 lambda_limits=(1.0, 3.0), thermal: bool = True, starvation_factor: float = 1.0,
                                 rolling_resistance: bool = True, solid_effusivity: float = 1.32e4,
-                                viscoelastic: bool = True) -> np.ndarray:
+                                viscoelastic: bool = True, film_modulus_factor: float = 1.0,
+                                solids=None) -> np.ndarray:
     """Build the parameter vector ``lub`` of :func:`contact_traction` for one contact type.
 
     Parameters
@@ -876,6 +883,12 @@ def pack_lubrication_parameters(lubricant, temperature: float, e_eff: float, rx:
         (default: 52100 steel, k = 46.6 W/(m K), ρ = 7830 kg/m³, c = 475 J/(kg K), typical values)
     viscoelastic : film elasticity in the physical fluid model (Johnson & Tevaarwerk 1977
         elastic/plastic mean stress, :func:`bearingsim.contact.traction.elastic_plastic_mean_stress`)
+    film_modulus_factor : factor [-] on the film's elastic shear modulus G_f = τ_L/r_L (1: the law as is; scales
+        the small-slip slope of a film-dominated contact, for sensitivity studies)
+    solids : None (rigid solids: the film's compliance alone) or (G [Pa], ν [-]) of the solids: their tangential
+        compliance in series with the film's, per point with Kalker's simplified-theory flexibility
+        L₁ = 8 a_r/(3 C₁₁ G) (a_r the semi-axis in the rolling direction;
+        :func:`bearingsim.contact.traction.solids_in_series_factor`)
     """
     from ..lubricants import get_lubricant
 
@@ -932,6 +945,12 @@ def pack_lubrication_parameters(lubricant, temperature: float, e_eff: float, rx:
     lub[L_ROLLRES] = 1.0 if rolling_resistance else 0.0
     lub[L_T0C] = t - 273.15
     lub[L_VISCO] = 1.0 if viscoelastic else 0.0
+    if not (isinstance(film_modulus_factor, (int, float)) and math.isfinite(film_modulus_factor)
+            and film_modulus_factor > 0):
+        raise InputError("film_modulus_factor", f"must be a positive number, got {film_modulus_factor!r}", "e.g. 1")
+    lub[L_GF_SCALE] = film_modulus_factor
+    if solids is not None:
+        lub[L_SFLEX] = traction.solids_flexibility_coefficient(rx, ry, *solids)
     return lub
 
 
@@ -1082,7 +1101,9 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                                                                                    * lub[L_T0C]) - lub[L_LSS_C4]),
                                         lub[L_LSS_FLOOR] * pbar) / lub[L_LSS_R]
                             chord = a * b * (H(xi1) - H(xi0)) / width
-                            tau = traction.elastic_plastic_mean_stress.py_func(tau, g_mod * chord * sr / hc)
+                            g_mod *= lub[L_GF_SCALE]
+                            ser = 1.0 / (1.0 + g_mod * lub[L_SFLEX] * b / hc)  # solids in series (Kalker L1)
+                            tau = traction.elastic_plastic_mean_stress.py_func(tau, g_mod * chord * sr / hc * ser)
                     muf = tau / pbar
                 mu = mu + (muf - mu) * w
             f = -mu * qj * s / smag

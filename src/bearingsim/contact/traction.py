@@ -195,10 +195,13 @@ def rolling_resistance_ir(eta0, u, w_line, length):
 
 
 # --------------------------------------------------------------------------- creep (small slip)
-#: Kalker's longitudinal creep coefficient C₁₁ (Kalker 1967 thesis, table of the linear theory; reproduced in
-#: Kalker 1990, Table 3.1 and in vehicle-dynamics texts).  Rows: the ellipse's semi-axis ratio g, first
-#: a/b = 0.1 … 1 (a along the rolling direction shorter: ball bearings), then b/a = 0.9 … 0.1; columns ν = 0,
-#: 0.25, 0.5.  The limit a/b → 0 is π²/(4(1 − ν)) (Kalker; the strip of Carter's 2-D theory).
+#: Kalker's longitudinal creep coefficient C₁₁ (Kalker 1967 thesis, table of the linear theory; Kalker 1990,
+#: *Three-dimensional elastic bodies in rolling contact*, Table E.3).  Checked entry by entry (all 19 rows × 3 ν)
+#: against Table E.3 as reproduced in the CONTACT code of Vollebregt & Kalker (github.com/eve70a/CONTACT,
+#: src/m_hertz.f90, subroutine linrol; tests/validation/test_kalker_table.py): no value differed.  Rows: the
+#: ellipse's semi-axis ratio g, first a/b = 0.1 … 1 (a along the rolling direction shorter: ball bearings),
+#: then b/a = 0.9 … 0.1; columns ν = 0, 0.25, 0.5.  The limit a/b → 0 is π²/(4(1 − ν)) (Kalker; the strip of
+#: Carter's 2-D theory).
 KALKER_NU = (0.0, 0.25, 0.5)
 KALKER_C11_A_OVER_B = {  # a/b: (ν = 0, 0.25, 0.5)
     0.1: (2.51, 3.31, 4.85), 0.2: (2.59, 3.37, 4.81), 0.3: (2.68, 3.44, 4.80), 0.4: (2.78, 3.53, 4.82),
@@ -227,9 +230,12 @@ def kalker_c11(a_roll: float, b_lat: float, poisson: float) -> float:
     """Kalker's longitudinal creep coefficient C₁₁ [-] of an elliptic contact with semi-axis ``a_roll`` [m] in
     the rolling direction and ``b_lat`` [m] across it, Poisson ratio ν ∈ [0, 0.5].
 
-    Linear interpolation of :data:`KALKER_C11_A_OVER_B` / :data:`KALKER_C11_B_OVER_A` in log(a/b) and in ν
-    (between table rows the coefficient varies by < 4 %, so the interpolation error is well below that);
-    below a/b = 0.1 towards the strip limit π²/(4(1 − ν)) (taken at a/b = 0.01).  Valid 0.01 ≤ a/b ≤ 10.
+    Linear interpolation of :data:`KALKER_C11_A_OVER_B` / :data:`KALKER_C11_B_OVER_A` in log(a/b) (between
+    table rows the coefficient varies by < 4 %, so the interpolation error is well below that); below a/b = 0.1
+    towards the strip limit π²/(4(1 − ν)) (taken at a/b = 0.01).  In ν: quadratic (Lagrange) interpolation of
+    1/C₁₁ through the table's ν = 0, 0.25, 0.5 — exact in the strip limit, where 1/C₁₁ = 4(1 − ν)/π² is linear in
+    ν (interpolating C₁₁ itself linearly is 2.6 % high there at ν = 0.3); the CONTACT code of Vollebregt & Kalker
+    (``linrol``, github.com/eve70a/CONTACT, src/m_hertz.f90) interpolates the same way.  Valid 0.01 ≤ a/b ≤ 10.
     """
     for name, v in (("a_roll", a_roll), ("b_lat", b_lat)):
         if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
@@ -241,8 +247,13 @@ def kalker_c11(a_roll: float, b_lat: float, poisson: float) -> float:
     if not (xs[0] - 1e-12 <= x <= xs[-1] + 1e-12):
         raise InputError("a_roll/b_lat", f"ratio {a_roll / b_lat:.3g} outside Kalker's table (0.01 … 10)",
                          "Kalker tabulates 0.1 ≤ a/b ≤ 10 (here extended to the strip limit at a/b = 0.01)")
-    col = np.array([np.interp(x, xs, vals[:, j]) for j in range(3)])
-    return float(np.interp(poisson, KALKER_NU, col))
+    inv = [1.0 / float(np.interp(x, xs, vals[:, j])) for j in range(3)]
+    n0, n1, n2 = KALKER_NU
+    nu = poisson
+    inv_c = (inv[0] * (nu - n1) * (nu - n2) / ((n0 - n1) * (n0 - n2))
+             + inv[1] * (nu - n0) * (nu - n2) / ((n1 - n0) * (n1 - n2))
+             + inv[2] * (nu - n0) * (nu - n1) / ((n2 - n0) * (n2 - n1)))
+    return 1.0 / inv_c
 
 
 def solid_creep_stiffness(a_roll: float, b_lat: float, shear_modulus: float, poisson: float) -> float:
@@ -254,10 +265,13 @@ def solid_creep_stiffness(a_roll: float, b_lat: float, shear_modulus: float, poi
 
 
 def film_creep_stiffness(a_roll: float, b_lat: float, film_modulus: float, film_thickness: float) -> float:
-    """K_f = G_f ℓ π a b /(2 h) [N per unit slide–roll ratio], ℓ = 2 a_roll: the small-slip limit of the
-    elastic–plastic film of :func:`elastic_plastic_mean_stress` (τ̄ = τ_e/2, τ_e = G_f s ℓ/h) over the Hertz
-    area πab (Johnson & Tevaarwerk 1977, elastic regime of their Maxwell model).  ``film_modulus`` = inf: a
-    rigid film (infinite stiffness)."""
+    """K_f = (8/3) G_f a_roll² b_lat / h [N per unit slide–roll ratio]: the small-slip limit of the
+    elastic–plastic film of :func:`elastic_plastic_mean_stress` (Johnson & Tevaarwerk 1977, elastic regime of
+    their Maxwell model) integrated over the Hertz ellipse as the sliced kernel does: a point at distance x from
+    the leading edge carries τ = G_f s x/h, so a strip of chord ℓ(y) = 2 a_roll √(1 − y²/b_lat²) carries
+    G_f s ℓ²/(2h) per unit width, and ∫ ℓ²/2 dy = (8/3) a_roll² b_lat.  (The uniform-chord form
+    G_f ℓ π a b/(2h) with ℓ = 2 a_roll, used before, is larger by 3π/8 ≈ 1.18: it gives every strip the
+    longest chord.)  ``film_modulus`` = inf: a rigid film (infinite stiffness)."""
     if not (film_modulus > 0):
         raise InputError("film_modulus", f"must be positive, got {film_modulus!r}", "e.g. 0.3e9 Pa, or inf")
     if math.isinf(film_modulus):
@@ -265,7 +279,7 @@ def film_creep_stiffness(a_roll: float, b_lat: float, film_modulus: float, film_
     if not (math.isfinite(film_thickness) and film_thickness > 0):
         raise InputError("film_thickness", f"must be a positive length, got {film_thickness!r}",
                          "give the central film thickness in m (bearingsim.contact.ehl.film_thickness)")
-    return film_modulus * 2.0 * a_roll * math.pi * a_roll * b_lat / (2.0 * film_thickness)
+    return 8.0 / 3.0 * film_modulus * a_roll * a_roll * b_lat / film_thickness
 
 
 def series_stiffness(k_film: float, k_solid: float) -> float:
@@ -304,15 +318,37 @@ def creep_slope(load: float, a_roll: float, b_lat: float, shear_modulus: float, 
 
 @njit(cache=True, error_model="numpy")
 def solids_in_series_factor(film_modulus, ell, film, shear_modulus, c11):
-    """φ = K_s/(K_s + K_f) = 1/(1 + π G_f ℓ/(2 h G C₁₁)) [-]: the factor on the film's elastic modulus G_f [Pa]
-    that puts the solids' creep compliance (Kalker, :func:`solid_creep_stiffness`) in series with the film's
-    (:func:`film_creep_stiffness`; ℓ [m] the contact length in the rolling direction, h [m] the film, G [Pa]
-    the solids' shear modulus).  τ_e = φ G_f ℓ s/h in :func:`elastic_plastic_mean_stress` gives the series slope
-    exactly at small slip and leaves the saturated (viscous) stress unchanged; between the two it is an
-    approximation (the solids' slip is taken proportional to the film's elastic stress)."""
+    """φ = 1/(1 + G_f L₁/h), L₁ = 4 ℓ/(3 C₁₁ G) [-]: the factor on the film's elastic modulus G_f [Pa] that puts
+    the solids' tangential compliance in series with the film's at every point of the contact (ℓ [m] the contact
+    length in the rolling direction, 2 a_roll; h [m] the film; G [Pa] the solids' combined shear modulus).
+
+    The solids' compliance is taken from Kalker's simplified theory of rolling contact (Kalker 1982, "A fast
+    algorithm for the simplified theory of rolling contact", Vehicle System Dynamics 11:1–13, the FASTSIM
+    flexibility L₁ = 8 a_roll/(3 C₁₁ G) [m/Pa]): a surface point's elastic tangential displacement is L₁ τ.
+    A point at distance x from the leading edge has accumulated the slip s x, shared by the film (h τ/G_f) and
+    the solids (L₁ τ): τ = s x/(h/G_f + L₁) = φ G_f s x/h.  Integrated over the ellipse this gives exactly the
+    series stiffness 1/K = 1/K_f + 1/K_s of :func:`film_creep_stiffness` and :func:`solid_creep_stiffness`
+    (Kalker's flexibility is chosen so that the solids alone give his linear creep force G a b C₁₁ s).
+    τ_e = φ G_f ℓ s/h in :func:`elastic_plastic_mean_stress` therefore has the series slope at small slip and
+    leaves the saturated (viscous) stress unchanged; between the two it is an approximation."""
     if film_modulus <= 0.0 or film <= 0.0:
         return 1.0
-    return 1.0 / (1.0 + math.pi * film_modulus * ell / (2.0 * film * shear_modulus * c11))
+    return 1.0 / (1.0 + 4.0 * film_modulus * ell / (3.0 * film * shear_modulus * c11))
+
+
+def solids_flexibility_coefficient(rx: float, ry: float, shear_modulus: float, poisson: float) -> float:
+    """8/(3 C₁₁ G) [1/Pa]: Kalker's FASTSIM flexibility L₁ per unit rolling semi-axis (:func:`solids_in_series_factor`)
+    of a Hertz point contact with effective radii ``rx`` (rolling direction) and ``ry`` (across) [m]; C₁₁ at the
+    contact's semi-axis ratio a_roll/b_lat = 1/κ (κ the exact Hertz ellipticity, independent of the load) and
+    Poisson ratio ν; G [Pa] the combined shear modulus (2/G = 1/G₁ + 1/G₂)."""
+    from .hertz import ellipticity_exact
+
+    for name, v in (("rx", rx), ("ry", ry), ("shear_modulus", shear_modulus)):
+        if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+            raise InputError(name, f"must be positive and finite, got {v!r}", "")
+    kappa = ellipticity_exact(min(rx, ry), max(rx, ry))[0]
+    ratio = 1.0 / kappa if rx <= ry else kappa  # a_roll / b_lat
+    return 8.0 / (3.0 * kalker_c11(ratio, 1.0, poisson) * shear_modulus)
 
 
 def dyson_shear_modulus(pressure: float, temperature: float) -> float:
@@ -414,4 +450,4 @@ __all__ = ["four_parameter", "fit_four_parameter", "traction_curve", "mixed_weig
            "rolling_resistance_ir", "rolling_resistance", "MARTIN_ROLLING", "KALKER_C11_A_OVER_B",
            "KALKER_C11_B_OVER_A",
            "kalker_c11", "solid_creep_stiffness", "film_creep_stiffness", "series_stiffness", "creep_slope",
-           "solids_in_series_factor", "dyson_shear_modulus"]
+           "solids_in_series_factor", "solids_flexibility_coefficient", "dyson_shear_modulus"]

@@ -26,6 +26,11 @@ Example (``examples/spindle-7011.toml``)::
     start = "consistent"                # ring (and ball centre) velocities = d/dt of the quasi-static solution
                                         # at t = 0 (default); "rest": quasi-static positions at rest
     ramp_in = "5 ms"                    # optional: blend the load variation in by a C² smoothstep (loads.py)
+    traction_compliance = "film"        # small-slip compliance of the lubricated kernel: "film" (Johnson &
+                                        # Tevaarwerk film elasticity) or "film+solids" (Kalker's elastic solids
+                                        # in series, contact/traction.py solids_in_series_factor)
+    ball_orbit = "free"                 # "held": every ball held at its azimuth by a frictionless constraint
+                                        # (no orbital motion; the zero reference of the hub hysteresis)
 
     [loads]                             # fa, fr (= Fr_y), fz (= Fr_z), my, mz: constant, sine, table, or a list (sum)
     fa = "3000 N"
@@ -68,6 +73,10 @@ from .loads import LoadHistory, SpeedHistory
 
 #: initial-state options (Case.start)
 START_MODES = ("consistent", "rest")
+#: small-slip compliance of the lubricated traction kernel (Case.traction_compliance)
+TRACTION_COMPLIANCES = ("film", "film+solids")
+#: the balls' orbital (azimuthal) motion (Case.ball_orbit)
+BALL_ORBITS = ("free", "held")
 #: most output samples of one run (duration / output_interval): 10⁷ samples of a 21-ball bearing are
 #: tens of GB of netCDF; more is a unit slip ("1e300 s"), not a simulation
 MAX_SAMPLES = 10**7
@@ -104,6 +113,11 @@ class Case:
     #: "consistent": start with the velocities of the quasi-static solution (model.quasi_static_rates);
     #: "rest": quasi-static positions at rest (the former start; kicks the ring's modes under varying loads)
     start: str = "consistent"
+    #: "film": the film's elastic compliance alone in the lubricated kernel; "film+solids": the solids' (Kalker's
+    #: simplified theory) in series (:func:`bearingsim.contact.traction.solids_in_series_factor`)
+    traction_compliance: str = "film"
+    #: "free"; "held": the balls' azimuth held fixed by a frictionless constraint (:func:`.model.build_model`)
+    ball_orbit: str = "free"
     source: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
@@ -152,6 +166,11 @@ class Case:
             raise InputError("start", f"unknown start {self.start!r}", "use consistent or rest")
         if not self.ring_mass > 0:
             raise InputError("inner_ring.mass", "must be positive", 'e.g. "2 kg"')
+        if self.traction_compliance not in TRACTION_COMPLIANCES:
+            raise InputError("traction_compliance", f"unknown option {self.traction_compliance!r}"[:160],
+                             'use "film" or "film+solids"')
+        if self.ball_orbit not in BALL_ORBITS:
+            raise InputError("ball_orbit", f"unknown option {self.ball_orbit!r}"[:160], 'use "free" or "held"')
 
     @property
     def method(self) -> str:
@@ -189,12 +208,23 @@ class Case:
                              "give a numeric Hunt–Crossley alpha (e.g. 0.05) for runs from standstill")
         return equivalent_alpha(res, self.lubricant, self.temperature)
 
+    def solids_shear(self) -> tuple[float, float]:
+        """(G [Pa], ν [-]) of the ball–raceway pair for Kalker's creep: 2/G = 1/G_ball + 1/G_ring, ν the mean of the
+        two (Kalker's theory takes one ν; quasi-identical for steel on steel)."""
+        row = self.bearing.rows[0].bearing
+        mats = (row.ball_material, row.ring_material)
+        g = [m.youngs_modulus / (2.0 * (1.0 + m.poisson_ratio)) for m in mats]
+        return 2.0 / (1.0 / g[0] + 1.0 / g[1]), 0.5 * (mats[0].poisson_ratio + mats[1].poisson_ratio)
+
     def model_options(self) -> dict:
         c = self.cage
+        lub = dict(self.lubrication or {})
+        if self.traction_compliance == "film+solids":
+            lub["solids"] = self.solids_shear()
         return dict(ring_mass=self.ring_mass, ring_inertia=self.ring_inertia, gravity=self.gravity,
                     damping_alpha=self.damping_alpha(), traction=self.traction, n_slices=self.n_slices,
                     load_point=self.load_point, speed=self.speed.as_tuple(), lubricant=self.lubricant,
-                    temperature=self.temperature, lubrication=self.lubrication or None,
+                    temperature=self.temperature, lubrication=lub or None, ball_orbit=self.ball_orbit,
                     cage_mass=c.get("mass"), pocket_clearance=c.get("pocket_clearance"),
                     cage_mu=c.get("friction", 0.06), guidance=c.get("guidance", "balls"),
                     land_clearance=c.get("land_clearance", 2e-4), pocket_shape=c.get("pocket_shape", "sphere"),

@@ -845,6 +845,20 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
                      cwork)
         land_guidance(cpar, occ, vc, wc, c, ax, wring, cd, fc, mc, fring, mring, gp[ly.G_VREF], want, acc, cwork)
         cage_equations(ci, o, y, dy, cpar, cm, rmc, syb, cyb, fc, mc, fm, g0, g1, g2, acc)
+    if gp[ly.G_ORBIT_HELD] > 0.0:
+        # balls held in azimuth by a frictionless constraint (the fixed half-plane of each ball, a linear
+        # constraint e_psi . r = 0): the azimuthal components of velocity and acceleration are removed
+        for k in range(nb):
+            o = ly.N_RING + ly.N_BALL * k
+            rb = math.hypot(y[o + 1], y[o + 2])
+            ey = -y[o + 2] / rb
+            ez = y[o + 1] / rb
+            vt = dy[o + 1] * ey + dy[o + 2] * ez
+            dy[o + 1] -= vt * ey
+            dy[o + 2] -= vt * ez
+            at = dy[o + 4] * ey + dy[o + 5] * ez
+            dy[o + 4] -= at * ey
+            dy[o + 5] -= at * ez
     # ---- inner ring
     ring_equations(y, dy, gp, fring, mring, loads, omega, sy, cy, g0, g1, g2)
     if want:

@@ -93,7 +93,8 @@ G_TRAMP = 14  #: ramp duration [s] (0: constant speed G_W0)
 G_RING_FIXED = 15  #: 1: inner ring held at its initial position (tests), 0: free
 G_VREF = 16  #: speed regularising friction directions at zero sliding [m/s]
 G_CAGE_ON = 17  #: 1: ball–cage contacts on, 0: off
-NGP = 18  #: length of gp
+G_ORBIT_HELD = 18  #: 1: every ball's azimuth held fixed (frictionless constraint, zero reference), 0: free
+NGP = 19  #: length of gp
 
 #: traction model name → code in gp[G_TRAC]
 TRACTION_MODELS = {"none": 0, "coulomb": 1, "slices": 2}

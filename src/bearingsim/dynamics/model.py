@@ -175,7 +175,8 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
                 cage_mu: float = 0.06, guidance: str = "balls", land_clearance: float = 2e-4,
                 cage_stiffness: float | None = None, v_ref: float = 1e-3, pocket_shape: str = "sphere",
                 lubricant=None, temperature: float = 333.15, lubrication: dict | None = None,
-                cage_modes: int = 0, cage_ring: dict | None = None, modal_damping: float | None = None) -> Model:
+                cage_modes: int = 0, cage_ring: dict | None = None, modal_damping: float | None = None,
+                ball_orbit: str = "free") -> Model:
     """Build the kernel arrays of a bearing (the rows protocol of :mod:`bearingsim.geometry`: one row, a set or a unit).
 
     Parameters (SI): ring_mass [kg]; ring_inertia (transverse, polar) [kg m²] (default:
@@ -188,8 +189,11 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
     (default 2 % of D), friction μ = 0.06 ([S1] §3.2), guidance "balls",
     "outer-land" or "inner-land" with a radial land clearance [m]; cage_modes: elastic modes per
     cage (0: rigid), with ``cage_ring`` overrides of the assumed ring [SI] and ``modal_damping`` ζ
-    (:func:`.cage.attach_elastic_cages`).
+    (:func:`.cage.attach_elastic_cages`).  ball_orbit "free" | "held": "held" holds every ball at its
+    azimuth by a frictionless constraint (a zero reference: no orbital motion, :func:`.forces.rhs`).
     """
+    if ball_orbit not in ("free", "held"):
+        raise InputError("ball_orbit", f"unknown option {ball_orbit!r}", "use free or held")
     if traction not in ly.TRACTION_MODELS:
         raise InputError("traction", f"unknown traction model {traction!r}", "use none, coulomb or slices")
     if guidance not in ly.GUIDANCE:
@@ -226,6 +230,7 @@ def build_model(bearing, *, ring_mass: float = 1.0, ring_inertia: tuple[float, f
     gp[ly.G_RING_FIXED] = 1.0 if ring_fixed else 0.0
     gp[ly.G_VREF] = v_ref
     gp[ly.G_CAGE_ON] = 1.0 if cage else 0.0
+    gp[ly.G_ORBIT_HELD] = 1.0 if ball_orbit == "held" else 0.0
     cp = np.zeros((nrow, ly.NCP))
     b0 = 0
     d0 = brs[0].ball_diameter
@@ -366,6 +371,16 @@ def initial_state(model: Model, static=None, speed: float | None = None, rates: 
         for k in range(model.n_balls):
             o = ly.N_RING + ly.N_BALL * k
             y[o + ly.B_VEL:o + ly.B_VEL + 3] += rates[o + ly.B_POS:o + ly.B_POS + 3]
+    if model.gp[ly.G_ORBIT_HELD] > 0.0:  # balls held in azimuth: no orbital velocity, the cage at rest
+        for k in range(model.n_balls):
+            o = ly.N_RING + ly.N_BALL * k
+            rb = math.hypot(y[o + 1], y[o + 2])
+            ey, ez = -y[o + 2] / rb, y[o + 1] / rb
+            vt = y[o + 4] * ey + y[o + 5] * ez
+            y[o + 4] -= vt * ey
+            y[o + 5] -= vt * ez
+        for c in range(model.n_cages):
+            y[model.cage_offset + ly.N_CAGE * c + 9] = 0.0
     return y
 
 

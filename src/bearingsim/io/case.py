@@ -19,7 +19,8 @@ from .files import read_toml
 
 _KEYS = {"bearing", "lubricant", "temperature", "speed", "duration", "output_interval", "traction", "n_slices",
          "tolerance", "contact_damping", "gravity", "load_point", "chunk", "control", "loads", "inner_ring", "cage",
-         "lubrication", "name", "description", "checkpoint_every", "integrator", "start", "ramp_in"}
+         "lubrication", "name", "description", "checkpoint_every", "integrator", "start", "ramp_in",
+         "traction_compliance", "ball_orbit"}
 
 #: elastic-cage ring data in [cage] (bearingsim.cage_modes.CageRing fields) and their dimensions
 _CAGE_RING = {"axial_width": "length", "radial_thickness": "length", "pocket_diameter": "length",
@@ -155,7 +156,8 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
                 ring_mass=ring_mass, ring_inertia=inertia, cage=cage, lubrication=data.get("lubrication", {}),
                 chunk=data.get("chunk", 200), control=data.get("control", "outer"),
                 checkpoint_every=every, checkpoint_interval=interval, integrator=data.get("integrator", "auto"),
-                start=start, source=data)
+                start=start, traction_compliance=data.get("traction_compliance", "film"),
+                ball_orbit=data.get("ball_orbit", "free"), source=data)
 
 
 def load_case(path) -> Case:
