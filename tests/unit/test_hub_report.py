@@ -140,3 +140,44 @@ def test_mean_loop_recovers_an_analytic_loop():
     # nearest phase samples (4000 per cycle): the tilt moves by at most c dM per sample
     tol = C * 600.0 * 2 * math.pi / 4000
     assert g[i_f] - g[i_r] == pytest.approx(math.sqrt(3) * C * 600.0 * math.sin(2 * math.pi * f * lag), abs=tol)
+
+
+def _variant(folder, name, v, f, wh_mdeg, half=0.01):
+    import json
+
+    w = wh_mdeg * 1e-3
+    d = {"variant": name, "description": f"change {name}", "speed_kmh": v, "frequency_hz": f, "cycles": 8,
+         "startup": 2, "fingerprint": name, "case": str(CASE),
+         "cell": {"wh_deg": w, "wh_ci95_deg": [w - half * 1e-3, w + half * 1e-3], "cycles_used": 8,
+                  "phase_lag_deg": 0.06, "compliance_deg_per_kNm": 0.102, "wall_seconds": 60.0}}
+    (folder / f"{name}_{v:g}_{f:g}.json").write_text(json.dumps(d))
+
+
+def test_report_shows_the_dynamic_sensitivity_runs(tmp_path):
+    """With a folder of hub_sensitivity runs: the figure and one table row per variant (two cells here), the
+    ratio to the cell's base run; without one, the report says they were not run (test_report_structure)."""
+    src = tmp_path / "sens"
+    src.mkdir()
+    for name, wh in (("base", 0.145), ("creep_x2", 0.150), ("slices4", 0.128)):
+        _variant(src, name, 100.0, 50.0, wh)
+    for name, wh in (("base", 0.24), ("mumax_x2", 0.30)):
+        _variant(src, name, 10.0, 50.0, wh)
+    (src / "not_a_variant.json").write_text('{"cells": []}')  # other JSON in the folder is ignored
+    study = hd.HysteresisStudy(_grid(lambda v, f: 0.1), case=str(CASE))
+    page = hr.write_report(study, tmp_path / "rep", sensitivity=src)
+    text = page.read_text()
+    p = _Parser()
+    p.feed(text)
+    assert "sensitivity_dynamic.png" in p.imgs
+    assert (page.parent / "sensitivity_dynamic.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert p.rows["sensitivity-dynamic"] == 5
+    assert "not run for this report" not in text
+    assert "1.034" in text and "0.883" in text and "1.250" in text  # creep_x2, slices4, mumax_x2 ÷ their base
+
+
+def test_cli_sensitivity_needs_the_report(tmp_path):
+    from _cli import run
+
+    p = run("reproduce", "hub-hysteresis", str(CASE), "--sensitivity", str(tmp_path), "--out", str(tmp_path / "o"),
+            check=False)
+    assert p.returncode == 2 and "--sensitivity" in p.stderr and "--report" in p.stderr

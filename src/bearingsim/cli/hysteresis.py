@@ -48,6 +48,9 @@ def reproduce_hub_hysteresis(
                                        help="run nothing: analyse and report the cells already finished in --out"),
     json_out: bool = typer.Option(False, "--json", help="print the cells as JSON (SI except the *_deg fields)"),
     report: Optional[Path] = typer.Option(None, "--report", help="write an HTML report (report.html + figures) here"),
+    sensitivity: Optional[Path] = typer.Option(None, "--sensitivity",
+                                               help="folder of dynamic sensitivity runs to show in the report "
+                                                    "(python -m bearingsim.studies.hub_sensitivity CASE DIR)"),
     out: HysteresisOut = Path("out"),
 ):
     """Hub-bearing hysteresis (Sakaguchi & Shibutani [S1], Figs. 6–9): loop width W_H of the tilt at 0.3 kN·m per
@@ -65,6 +68,12 @@ def reproduce_hub_hysteresis(
     if not case.is_file():
         raise InputError("CASE", f"no case file {case}", "give a case TOML, e.g. examples/hub-moment-50hz.toml")
     out = output_folder(out, "--out")
+    if sensitivity is not None:
+        if report is None:
+            raise InputError("--sensitivity", "is shown in the report only", "give --report DIR as well")
+        if not sensitivity.is_dir():
+            raise InputError("--sensitivity", f"no folder {sensitivity}",
+                             "give the folder of python -m bearingsim.studies.hub_sensitivity CASE DIR")
     if report is not None:
         report = output_folder(report, "--report")
     con = make_console()
@@ -83,7 +92,7 @@ def reproduce_hub_hysteresis(
         from ..studies.hub_report import write_report
 
         with writing("--report", report):
-            html = write_report(study, report)
+            html = write_report(study, report, sensitivity)
     if json_out:
         if html is not None:
             data["report"] = str(html)

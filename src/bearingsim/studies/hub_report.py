@@ -6,8 +6,10 @@ Contents: the analogues of Sakaguchi & Shibutani [S1] Figs. 6 (loops at 50 Hz, o
 beside the paper's two readings :data:`~.hub_dynamic.SEED_FIG9` / :data:`~.hub_dynamic.SEED_FIG9_ALT`); the
 per-cell table (W_H with its 95 % interval, loop area, phase lag, compliance against the quasi-static one, reduced
 model, the mechanism's bound, the paper's values); the sensitivity of the reduced model's W_H to the creep slope and
-μ_max when that model is available (the dynamic sensitivities are listed as missing); the assumptions of the case;
-and a plain verdict per claim of the paper (:func:`verdicts`).
+μ_max when that model is available; the dynamic sensitivities (W_H of one cell with one input changed: creep slope,
+film + solids compliance, μ_max, strips per ellipse, groove conformity) read from the folder of
+:mod:`.hub_sensitivity` runs when one is given (else listed as missing); the assumptions of the case; and a plain
+verdict per claim of the paper (:func:`verdicts`).
 
 Loops are drawn twice: the tilt against the moment as the paper does (the loop is a few 10⁻⁴ of the tilt range, so
 it looks like a line), and the tilt minus its straight-line fit on the moment, which opens the loop up.  The thin
@@ -230,6 +232,59 @@ def _sensitivity(study, folder):
     return "sensitivity.png", ""
 
 
+def _dynamic_sensitivity(source, folder):
+    """Figure and table of the dynamic sensitivity runs stored in ``source``
+    (:func:`.hub_sensitivity.load_sensitivities`): per cell, W_H with its 95 % interval for every variant, beside
+    the cell's base run.  Returns the HTML."""
+    from .hub_sensitivity import load_sensitivities
+
+    runs = load_sensitivities(source)
+    if not runs:
+        return H.paragraph(f"Dynamic sensitivities: no variant runs in {source} (python -m "
+                           "bearingsim.studies.hub_sensitivity CASE DIR).", "note")
+    import matplotlib
+
+    matplotlib.use("Agg", force=False)
+    import matplotlib.pyplot as plt
+
+    cells = sorted({(r["speed_kmh"], r["frequency_hz"]) for r in runs})
+    fig, axes = plt.subplots(1, len(cells), figsize=(5.2 * len(cells), 0.35 * max(len(runs), 8) + 1.2), squeeze=False)
+    rows = []
+    for ax, (v, f) in zip(axes[0], cells):
+        mine = [r for r in runs if (r["speed_kmh"], r["frequency_hz"]) == (v, f)]
+        base = next((r for r in mine if r["variant"] == "base"), None)
+        wb = base["cell"].get("wh_deg") if base else None
+        for i, r in enumerate(mine):
+            c = r["cell"]
+            w, ci = c.get("wh_deg"), c.get("wh_ci95_deg") or [None, None]
+            if w is not None and None not in ci:
+                ax.errorbar([w * 1e3], [i], xerr=[[(w - ci[0]) * 1e3], [(ci[1] - w) * 1e3]], fmt="o",
+                            color="k" if r["variant"] == "base" else "C0", capsize=3)
+            ratio = w / wb if (w is not None and wb) else None
+            rows.append([f"{v:g} km/h, {f:g} Hz", r["variant"], r["description"],
+                         None if w is None else w * 1e3, f"{H.fmt(None if ci[0] is None else ci[0] * 1e3, '.3f')} … "
+                         f"{H.fmt(None if ci[1] is None else ci[1] * 1e3, '.3f')}", ratio, c.get("cycles_used"),
+                         c.get("phase_lag_deg"), c.get("compliance_deg_per_kNm"), c.get("wall_seconds")])
+        if wb is not None:
+            ax.axvline(wb * 1e3, color="k", ls=":", lw=0.8)
+        ax.axvline(0.0, color="0.6", lw=0.6)
+        ax.set_yticks(range(len(mine)), [r["variant"] for r in mine], fontsize=8)
+        ax.invert_yaxis()
+        ax.set_xlabel("W_H [10⁻³ deg] (95 % interval)")
+        ax.set_title(f"{v:g} km/h, {f:g} Hz", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(Path(folder) / "sensitivity_dynamic.png", dpi=110)
+    plt.close(fig)
+    header = ["cell", "variant", "change", "W_H [10⁻³ deg]", "95 % interval", "÷ base", "cycles used",
+              "phase lag [deg]", "compliance [deg/kN·m]", "wall [s]"]
+    specs = [None, None, None, ".4f", None, ".3f", "g", ".4f", ".5f", ".0f"]
+    return (H.figure("sensitivity_dynamic.png", "Dynamic W_H of one cell with one input changed (black: the case "
+                     "as given; dotted: its W_H)")
+            + H.table(header, rows, text_columns=(0, 1, 2), ident="sensitivity-dynamic", specs=specs)
+            + H.paragraph(f"Runs read from {source} (bearingsim/studies/hub_sensitivity.py: each variant is the cell's "
+                          "case with one change; the same estimator as the grid)."))
+
+
 def _pick(cells, v, f):
     for c in cells:
         if c.speed_kmh == v and c.frequency_hz == f:
@@ -367,8 +422,9 @@ def _assumptions(study) -> list[str]:
     return items
 
 
-def write_report(study: HysteresisStudy, folder) -> Path:
-    """Write ``folder/report.html`` and its figures (PNG) beside it; returns the page's path."""
+def write_report(study: HysteresisStudy, folder, sensitivity=None) -> Path:
+    """Write ``folder/report.html`` and its figures (PNG) beside it; returns the page's path.  ``sensitivity``: the
+    folder of dynamic sensitivity runs (:mod:`.hub_sensitivity`) to show, or None."""
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     body = []
@@ -441,8 +497,12 @@ def write_report(study: HysteresisStudy, folder) -> Path:
         sens.append(H.figure(fig, "Reduced-model W_H against the creep slope (left) and μ_max (right)"))
     else:
         sens.append(H.paragraph(f"Sensitivity to the creep slope and μ_max: not shown — {why}.", "note"))
-    sens.append(H.paragraph("Sensitivity of the dynamic W_H to the creep slope, μ_max, the slice count and the groove "
-                            "conformity: not run (each needs its own grid of dynamic cells).", "note"))
+    if sensitivity is None:
+        sens.append(H.paragraph("Sensitivity of the dynamic W_H to the creep slope, μ_max, the slice count and the "
+                                "groove conformity: not run for this report (python -m "
+                                "bearingsim.studies.hub_sensitivity CASE DIR, then --sensitivity DIR).", "note"))
+    else:
+        sens.append(_dynamic_sensitivity(sensitivity, folder))
     body.append(H.section("Sensitivity", "".join(sens), "sensitivity"))
     body.append(H.section("Assumptions", H.bullet_list(_assumptions(study)), "assumptions"))
     return H.write_page(folder / "report.html", "Hub bearing: tilt–moment hysteresis ([S1] Figs. 6–9)",
