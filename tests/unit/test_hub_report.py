@@ -148,7 +148,8 @@ def _variant(folder, name, v, f, wh_mdeg, half=0.01):
     w = wh_mdeg * 1e-3
     d = {"variant": name, "description": f"change {name}", "speed_kmh": v, "frequency_hz": f, "cycles": 8,
          "startup": 2, "fingerprint": name, "case": str(CASE),
-         "cell": {"wh_deg": w, "wh_ci95_deg": [w - half * 1e-3, w + half * 1e-3], "cycles_used": 8,
+         "cell": {"wh_deg": w, "wh_ci95_deg": [w - half * 1e-3, w + half * 1e-3], "cycles_used": 8, "first_cycle": 1,
+                  "wh_cycles_deg": [w + (k % 2 - 0.5) * 2e-6 for k in range(8)],
                   "phase_lag_deg": 0.06, "compliance_deg_per_kNm": 0.102, "wall_seconds": 60.0}}
     (folder / f"{name}_{v:g}_{f:g}.json").write_text(json.dumps(d))
 
@@ -173,6 +174,8 @@ def test_report_shows_the_dynamic_sensitivity_runs(tmp_path):
     assert p.rows["sensitivity-dynamic"] == 5
     assert "not run for this report" not in text
     assert "1.034" in text and "0.883" in text and "1.250" in text  # creep_x2, slices4, mumax_x2 ÷ their base
+    # paired differences over the same cycles: equal alternation in every run, so the difference has no scatter
+    assert "+0.0050 [+0.0050, +0.0050]" in text and "-0.0170 [-0.0170, -0.0170]" in text
 
 
 def test_cli_sensitivity_needs_the_report(tmp_path):

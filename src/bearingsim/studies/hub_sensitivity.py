@@ -160,12 +160,13 @@ def run_variant(case_path, folder, variant: str, speed_kmh: float = 100.0, frequ
 
 
 def load_sensitivities(folder) -> list[dict]:
-    """The variants stored in ``folder`` (``<variant>.json``), in :data:`VARIANTS` order (unknown names last)."""
+    """The variants stored in ``folder`` (``<variant>.json``, also in sub-folders: one per cell), sorted by cell and
+    in :data:`VARIANTS` order (unknown names last)."""
     folder = Path(folder)
     if not folder.is_dir():
         raise InputError("--sensitivity", f"{str(folder)!r} is not a folder", "give the folder of the variant runs")
     out = []
-    for js in sorted(folder.glob("*.json")):
+    for js in sorted(folder.rglob("*.json")):
         try:
             d = json.loads(js.read_text())
         except (OSError, ValueError):
