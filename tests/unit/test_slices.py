@@ -274,6 +274,53 @@ def test_fast_tanh_and_asinh_forms_match_libm():
         assert S._asinh_from(x, math.log(2 * x)) == pytest.approx(math.asinh(x), rel=1e-15)
 
 
+def test_pow_0648_series_matches_libm():
+    """The rolling-resistance power x^0.648 by its binomial series near 1 (|x − 1| ≤ 1/16) and exp/log elsewhere
+    agrees with x**0.648 to the stated 1e-14 (series remainder < 5e-15 plus rounding), on both sides of the switch."""
+    r = S.POW_SERIES_R
+    xs = np.concatenate([1.0 + np.linspace(-r, r, 2001), 1.0 + r * (1 + np.geomspace(1e-12, 1e-3, 50)),
+                         1.0 - r * (1 + np.geomspace(1e-12, 1e-3, 50)), np.geomspace(1e-6, 1e6, 400)])
+    for x in xs:
+        assert S._pow_0648(x) == pytest.approx(x**0.648, rel=1e-14, abs=0.0), x
+    # the series is the binomial one: its last coefficient is C(0.648, 9)
+    c9 = math.prod(0.648 - k for k in range(9)) / math.factorial(9)
+    assert S._POW_C[S.POW_SERIES_ORDER] == pytest.approx(c9, rel=1e-14)
+
+
+def test_strip_tables_equal_the_strip_formulae():
+    """The tabulated strip constants (n ≤ STRIP_TABLE_MAX) are the load share, load centroid and area of each
+    strip pair (slice_fraction, slice_centroid, slice_area_fraction), and the kernel gives the same forces with
+    the table (n = 64) as without it (the same strips with n = 64 evaluated by the running differences is not
+    reachable from outside, so the tabled kernel is held to the reference at 1e-10 instead)."""
+    for n in (1, 2, 3, 8, 13, 64):
+        for j in range((n + 1) // 2):
+            x0, x1 = -1.0 + 2.0 * j / n, -1.0 + 2.0 * (j + 1) / n
+            assert S._STRIP_FRAC[n, j] == pytest.approx(S.slice_fraction(x0, x1), rel=1e-13)
+            assert S._STRIP_XI[n, j] == pytest.approx(S.slice_centroid(x0, x1), rel=1e-12, abs=1e-15)
+            assert S._STRIP_AREA[n, j] == pytest.approx(S.slice_area_fraction(x0, x1), rel=1e-12)
+            assert S._STRIP_Q246[n, j] == pytest.approx(S.slice_fraction(x0, x1) ** 0.246, rel=1e-14)
+        assert 2 * S._STRIP_FRAC[n, :n // 2].sum() + (S._STRIP_FRAC[n, n // 2] if n % 2 else 0.0) == \
+            pytest.approx(1.0, rel=1e-14)
+
+
+@pytest.mark.parametrize("n_slices", [8, 64, 65])
+def test_kernel_tabled_and_untabled_strips_match_reference(n_slices):
+    """Kernel vs reference at 1e-10 on both sides of the table limit (64 tabled, 65 by running differences), with
+    rolling resistance on and entraining speeds near and far from the centre's (both branches of _pow_0648)."""
+    rd = S.deformed_surface_radius(D, F_I * D)
+    lub = _lub(model="mixed", roughness=0.1e-6, viscoelastic=False)  # (the film elasticity is another test's)
+    for u in (0.05, 5.0):
+        for spin in (0.0, 40.0, 4000.0):
+            args = (2000.0, HC.a, HC.b, rd, np.zeros(3), np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+                    np.array([0.0, 0.0, R_BALL]), np.zeros(3), np.array([u * 1.002 / R_BALL, 0.0, spin * u]),
+                    np.array([0.0, 0.0, -0.025]), np.zeros(3), np.array([-u / 0.025, 0.0, 0.0]), lub, n_slices)
+            out, ref = np.zeros(10), np.zeros(10)
+            S.contact_traction(*args, out)
+            S.contact_traction_reference(*args, ref)
+            scale = np.max(np.abs(ref)) + 1e-300
+            np.testing.assert_allclose(out, ref, rtol=1e-10, atol=1e-10 * scale, err_msg=str((u, spin)))
+
+
 def test_heated_stress_matches_fluid_shear_stress():
     """First Eyring/limiting-stress evaluation + the kernel's secant step equal traction.fluid_shear_stress."""
     from bearingsim.contact import traction as T

@@ -368,24 +368,36 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     f_prev = -0.5  # F(-1)
     g_prev = 0.1875  # G(-1)
     h_prev = -0.5 * math.pi  # H(-1)
+    tabled = n_slices <= STRIP_TABLE_MAX
+    # rolling resistance (Zhou-Hoeprich) as k_zh u0^0.648 (Q_j/Q)^0.246 (u/u0)^0.648: one logarithm per
+    # contact, the strip's factor from the table, (u/u0)^0.648 by its series near 1 (_pow_0648)
+    roll_zh = do_roll and reg != 0 and u0 > 0.0
+    k_zh_u0 = k_zh * math.exp(0.648 * math.log(u0)) if roll_zh else 0.0
+    inv_u0 = 1.0 / u0 if u0 > 0.0 else 0.0
     for j in range(n_half):
-        xi1 = -1.0 + 2.0 * (j + 1) * inv_n
-        f1 = 0.25 * (3.0 * xi1 - xi1 * xi1 * xi1)
-        g1 = 0.75 * (0.5 * xi1 * xi1 - 0.25 * (xi1 * xi1) * (xi1 * xi1))
-        frac = f1 - f_prev
-        gfrac = g1 - g_prev
-        f_prev = f1
-        g_prev = g1
+        if tabled:
+            # strip load share, centroid and area from the tables (the same running differences, done once)
+            frac = _STRIP_FRAC[n_slices, j]
+            area = _STRIP_AREA[n_slices, j]
+            xbar = a * _STRIP_XI[n_slices, j]
+        else:
+            xi1 = -1.0 + 2.0 * (j + 1) * inv_n
+            f1 = 0.25 * (3.0 * xi1 - xi1 * xi1 * xi1)
+            g1 = 0.75 * (0.5 * xi1 * xi1 - 0.25 * (xi1 * xi1) * (xi1 * xi1))
+            frac = f1 - f_prev
+            gfrac = g1 - g_prev
+            f_prev = f1
+            g_prev = g1
+            area = 1.0
+            if phys:
+                h1 = _area_primitive(xi1)
+                area = h1 - h_prev
+                h_prev = h1
+            xbar = a * (gfrac / frac) if frac > 0.0 else 0.0
         qj = q * frac
-        area = 1.0
-        if phys:
-            h1 = _area_primitive(xi1)
-            area = h1 - h_prev
-            h_prev = h1
         if qj <= 0.0:
             continue
         two = 2 * j + 1 != n_slices
-        xbar = a * (gfrac / frac)
         off, root = slice_point_offset(xbar, curv)
         # parts common to the pair: offset along the normal
         s1x, s1y, s1z = s0x + off * bsx, s0y + off * bsy, s0z + off * bsz
@@ -460,7 +472,13 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
                 fr_pair = k_ir * math.sqrt(frac)
                 fr_a = fr_pair * math.sqrt(u_a)
                 fr_b = fr_pair * math.sqrt(u_b)
-            else:
+            elif roll_zh:
+                fr_pair = k_zh_u0 * (_STRIP_Q246[n_slices, j] if tabled else math.exp(0.246 * math.log(frac)))
+                if u_a > 0.0:
+                    fr_a = fr_pair * _pow_0648(u_a * inv_u0)
+                if u_b > 0.0:
+                    fr_b = fr_pair * _pow_0648(u_b * inv_u0)
+            else:  # no entraining speed at the centre (u0 = 0): the formula as it stands
                 fr_pair = 0.246 * math.log(frac)  # ln of (Q_j/Q)^0.246
                 if u_a > 0.0:
                     fr_a = k_zh * math.exp(0.648 * math.log(u_a) + fr_pair)
@@ -529,6 +547,59 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
 def _area_primitive(xi):
     """H(ξ) = ξ√(1−ξ²) + asin ξ (clipped to [−1, 1]); strip area / (a b) = H(ξ1) − H(ξ0)."""
     return xi * math.sqrt(max(0.0, 1.0 - xi * xi)) + math.asin(min(1.0, max(-1.0, xi)))
+
+
+#: strip counts n ≤ STRIP_TABLE_MAX take their strip constants from tables built once here (the same running
+#: differences of F, G, H as the loop of :func:`contact_traction` uses above the limit): for the strip pair j
+#: (strips j and n−1−j), _STRIP_FRAC[n, j] = F(ξ_j+1) − F(ξ_j) (load share), _STRIP_XI[n, j] = the load centroid
+#: x̄/a of strip j (≤ 0; strip n−1−j has −x̄), _STRIP_AREA[n, j] = H(ξ_j+1) − H(ξ_j) (area / ab) and
+#: _STRIP_Q246[n, j] = (load share)^0.246 of the Zhou–Hoeprich rolling resistance
+STRIP_TABLE_MAX = 64
+_STRIP_FRAC = np.zeros((STRIP_TABLE_MAX + 1, (STRIP_TABLE_MAX + 1) // 2))
+_STRIP_XI = np.zeros_like(_STRIP_FRAC)
+_STRIP_AREA = np.zeros_like(_STRIP_FRAC)
+_STRIP_Q246 = np.zeros_like(_STRIP_FRAC)
+
+
+def _fill_strip_tables():
+    for n in range(1, STRIP_TABLE_MAX + 1):
+        f_prev, g_prev, h_prev = -0.5, 0.1875, -0.5 * math.pi
+        for j in range((n + 1) // 2):
+            xi1 = -1.0 + 2.0 * (j + 1) * (1.0 / n)
+            f1 = 0.25 * (3.0 * xi1 - xi1 * xi1 * xi1)
+            g1 = 0.75 * (0.5 * xi1 * xi1 - 0.25 * (xi1 * xi1) * (xi1 * xi1))
+            h1 = _area_primitive.py_func(xi1)
+            frac, gfrac = f1 - f_prev, g1 - g_prev
+            _STRIP_FRAC[n, j] = frac
+            _STRIP_XI[n, j] = gfrac / frac if frac > 0.0 else 0.0
+            _STRIP_AREA[n, j] = h1 - h_prev
+            _STRIP_Q246[n, j] = math.exp(0.246 * math.log(frac)) if frac > 0.0 else 0.0
+            f_prev, g_prev, h_prev = f1, g1, h1
+
+
+_fill_strip_tables()
+
+#: Taylor coefficients of (1 + r)^0.648 (binomial series), r^0 … r^POW_SERIES_ORDER
+POW_SERIES_ORDER = 9
+#: |r| ≤ POW_SERIES_R: the series' remainder is below 1e-14 relative (|C(0.648, 10)| r^10/(1 − r) < 5e-15)
+POW_SERIES_R = 1.0 / 16.0
+_POW_C = np.ones(POW_SERIES_ORDER + 1)
+for _k in range(1, POW_SERIES_ORDER + 1):
+    _POW_C[_k] = _POW_C[_k - 1] * (0.648 - _k + 1) / _k
+
+
+@njit(cache=True, error_model="numpy")
+def _pow_0648(x):
+    """x^0.648 for x > 0 [-] (Zhou & Hoeprich 1991's exponent of the rolling speed): the binomial series of
+    (1 + r)^0.648, r = x − 1, to r⁹ when |r| ≤ 1/16 (remainder < 5e-15 relative; no logarithm, no
+    exponential), exp(0.648 ln x) otherwise."""
+    r = x - 1.0
+    if abs(r) <= POW_SERIES_R:
+        acc = _POW_C[POW_SERIES_ORDER]
+        for k in range(POW_SERIES_ORDER - 1, -1, -1):
+            acc = acc * r + _POW_C[k]
+        return acc
+    return math.exp(0.648 * math.log(x))
 
 
 #: ln(2·10⁶): asinh x = ln 2x within 2.5e-13 for x ≥ 10⁶
