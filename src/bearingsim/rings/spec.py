@@ -112,9 +112,8 @@ def spec_of(bearing) -> RingSpec | None:
     spec = notes.get("rings") if isinstance(notes, dict) else None
     if isinstance(spec, RingSpec):
         return spec
-    rows = getattr(bearing, "rows", None)
-    if rows and getattr(bearing, "kind", None) == "bearing_system":  # a system: its rows' bearings
-        for row in rows:
+    if getattr(bearing, "kind", None) == "bearing_system":  # a system: its rows' bearings
+        for row in bearing.rows:
             s = spec_of(row.bearing)
             if s is not None:
                 return s
