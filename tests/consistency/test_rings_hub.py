@@ -40,7 +40,7 @@ def hub_rings(hub, tmp_path_factory):
     os.environ["BEARINGSIM_RING_CACHE"] = str(tmp_path_factory.mktemp("ringcache"))
     try:
         wall = 0.5 * 11.1e-3  # the estimated wall D_w/2
-        st = InfluenceSettings(sigma=wall / 4, n_through=5, n_axial=10, ghat_min=1e-4, decay_min=1e-4)
+        st = InfluenceSettings(sigma=wall / 4, n_through=4, n_axial=8, ghat_min=1e-3, decay_min=1e-3)
         yield ring_model(hub, settings=st)
     finally:
         if old is None:

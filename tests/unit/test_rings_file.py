@@ -31,7 +31,7 @@ material = "bearing_steel"
 
 def _coarse(b):
     wall = 0.5 * (b.pitch_diameter - b.ball_diameter - b.bore)
-    return InfluenceSettings(sigma=wall / 4, n_through=5, n_axial=10, ghat_min=1e-4, decay_min=1e-4)
+    return InfluenceSettings(sigma=wall / 4, n_through=4, n_axial=8, ghat_min=1e-3, decay_min=1e-3)
 
 
 def test_file_sleeves_equal_the_api_sleeves(tmp_path, monkeypatch):
