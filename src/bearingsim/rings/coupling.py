@@ -470,6 +470,14 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
     res.warnings = static_warnings(res)
     res.ring_model, res.ring_offsets, res.ring_iterations, res.ring_residual = "fe", off, it, change
     res.ring_description = rings.description
+    shaft = (rings.description or {}).get("shaft") or {}
+    if shaft.get("diameter_m") == 0.0 and not shaft.get("rigid"):
+        from .spec import SOLID_SHAFT_BORE_FRACTION
+
+        res.warnings = list(res.warnings) + [
+            f"solid shaft modelled as a rigid core of {SOLID_SHAFT_BORE_FRACTION:g} of the bore: the inner ring's "
+            "compliance depends at first order on that choice (docs/rings.md §7); give the shaft's bore "
+            "(inner_diameter) or rigid = true for a defined seat"]
     return res
 
 
