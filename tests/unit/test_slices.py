@@ -321,6 +321,37 @@ def test_kernel_tabled_and_untabled_strips_match_reference(n_slices):
             np.testing.assert_allclose(out, ref, rtol=1e-10, atol=1e-10 * scale, err_msg=str((u, spin)))
 
 
+def test_film_constants_stored_in_lub_give_the_same_forces_and_never_go_stale():
+    """The contact type's film constants that pack_lubrication_parameters stores (L_C_*) give the same forces as
+    computing them per call (L_C_AE cleared), and a lub whose α is changed after packing is not served the stale
+    constants (its forces equal those of the per-call computation, and differ from the original's)."""
+    rd = S.deformed_surface_radius(D, F_I * D)
+    lub = _lub(model="mixed", roughness=0.1e-6)
+    assert lub[S.L_C_AE] == lub[S.L_ALPHA] * lub[S.L_EEFF] and lub[S.L_C_LNG] == pytest.approx(
+        math.log(lub[S.L_ALPHA] * lub[S.L_EEFF]), rel=1e-15)
+    fresh = lub.copy()
+    fresh[S.L_C_AE] = 0.0  # constants computed per call
+    changed = lub.copy()
+    changed[S.L_ALPHA] *= 1.1
+    changed_fresh = changed.copy()
+    changed_fresh[S.L_C_AE] = 0.0
+
+    def forces(lb, u, spin):
+        out = np.zeros(10)
+        S.contact_traction(2000.0, HC.a, HC.b, rd, np.zeros(3), np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+                           np.array([0.0, 0.0, R_BALL]), np.zeros(3), np.array([u * 1.002 / R_BALL, 0.0, spin * u]),
+                           np.array([0.0, 0.0, -0.025]), np.zeros(3), np.array([-u / 0.025, 0.0, 0.0]), lb, 8, out)
+        return out
+
+    for u in (0.05, 5.0):
+        for spin in (0.0, 40.0):
+            base = forces(lub, u, spin)
+            np.testing.assert_allclose(base, forces(fresh, u, spin), rtol=1e-15, atol=0.0)
+            np.testing.assert_allclose(forces(changed, u, spin), forces(changed_fresh, u, spin), rtol=1e-15, atol=0.0)
+            if u == 5.0:  # a film-carried contact (at 0.05 m/s the mixed model is boundary friction: α plays no part)
+                assert np.max(np.abs(forces(changed, u, spin) - base)) > 1e-6 * np.max(np.abs(base))
+
+
 def test_heated_stress_matches_fluid_shear_stress():
     """First Eyring/limiting-stress evaluation + the kernel's secant step equal traction.fluid_shear_stress."""
     from bearingsim.contact import traction as T

@@ -60,7 +60,12 @@ exp(c ln x); ln η(p̄) fed straight into asinh x = ln 2x + 1/(4x²) for x = η�
 ≤ 2.5e-13 absolute when x e^(−βΔT) ≥ 10⁶); tanh z = (e^(2z) − 1)/(e^(2z) + 1) for
 1e-3 ≤ z ≤ 20 (≤ ~1e-13 relative).  No fastmath, no allocation.  The heat-balance secant
 step stays per slice: solving it once on the central slice would change results by far
-more than 1e-10 (each slice has its own pressure and sliding speed).
+more than 1e-10 (each slice has its own pressure and sliding speed).  Strip counts n ≤ 64 take their load
+shares, centroids, areas and (load share)^0.246 from tables built at import; the rolling resistance's u^0.648
+is u₀^0.648 (u/u₀)^0.648 with the second factor by its binomial series when |u/u₀ − 1| ≤ 1/16 (:func:`_pow_0648`,
+< 5e-15); the contact type's film constants (ln αE′, ellipticity terms, the regime map's isoviscous-rigid
+film) are stored in ``lub`` by :func:`pack_lubrication_parameters` and used while α E′ and R_y/R_x still match
+(:func:`film_constants`).  Issue 14: kernel −12 %, hub right-hand side −10 %, forces equal to ~1e-15.
 """
 
 from __future__ import annotations
@@ -101,7 +106,17 @@ L_T0C = 34  # inlet temperature [degC]
 L_VISCO = 35  # 1: film elasticity (Johnson-Tevaarwerk elastic/plastic mean stress) on
 L_GF_SCALE = 36  # factor on the film's elastic shear modulus G_f = tau_L/r_L (1: as the law gives; sensitivity studies)
 L_SFLEX = 37  # solids' tangential flexibility 8/(3 C11 G) [1/Pa] (x rolling semi-axis = Kalker's L1; 0: rigid solids)
-L_SIZE = 38
+# constants of the contact type for the film formulae (film_constants), with the two inputs they were made from:
+# used by the kernel only while lub[L_C_AE] == alpha E' and lub[L_C_AR] == Ry/Rx (else computed per call)
+L_C_AE = 38  # alpha E' the constants were made from [-]
+L_C_AR = 39  # Ry/Rx the constants were made from [-]
+L_C_LNG = 40  # ln(alpha E')
+L_C_K = 41  # ellipticity k = 1.03 (Ry/Rx)^0.64 (Hamrock-Dowson)
+L_C_FKMIN = 42  # 1 - exp(-0.68 k) (minimum film)
+L_C_FKC = 43  # 1 - 0.61 exp(-0.73 k) (central film)
+L_C_HIR = 44  # isoviscous-rigid film parameter of the regime map (ehl.regime_films)
+L_C_FKIE = 45  # 1 - 0.85 exp(-0.31 k) (isoviscous-elastic film of the regime map)
+L_SIZE = 46
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
 FLUID_MODELS = {"curve": 0, "physical": 1}
@@ -253,6 +268,8 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     ln_u = ln_g = ln_w = 0.0
     k_hd = 0.0
     fk_min = 0.0
+    h_ir = 0.0
+    fk_ie = 0.0
     if u0 > 0.0 and model != 0:  # (the boundary model needs no film)
         beta_eta = lub[L_BETA_ETA]
         if thermal and beta_eta > 0.0:
@@ -269,12 +286,13 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
                 phi_t = 1.0
             phi *= phi_t
         ln_u = math.log(eta0 * u0 / (e_eff * rx))
-        ln_g = math.log(alpha * e_eff)
         ln_w = math.log(q / (e_eff * rx * rx))
-        k_hd = 1.03 * math.exp(0.64 * math.log(ry / rx))
-        fk_min = 1.0 - math.exp(-0.68 * k_hd)
-        hc = (phi * rx * 2.69 * math.exp(0.67 * ln_u + 0.53 * ln_g - 0.067 * ln_w)
-              * (1.0 - 0.61 * math.exp(-0.73 * k_hd)))
+        if lub[L_C_AE] == alpha * e_eff and lub[L_C_AR] == ry / rx:  # the contact type's constants, made once
+            ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = (lub[L_C_LNG], lub[L_C_K], lub[L_C_FKMIN], lub[L_C_FKC],
+                                                     lub[L_C_HIR], lub[L_C_FKIE])
+        else:
+            ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = film_constants(alpha, e_eff, rx, ry)
+        hc = phi * rx * 2.69 * math.exp(0.67 * ln_u + 0.53 * ln_g - 0.067 * ln_w) * fk_c
         hmin = phi * rx * 3.63 * math.exp(0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w) * fk_min
     if model == 0:
         wfl = 0.0
@@ -289,13 +307,10 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     reg = 3
     if do_roll and u0 > 0.0:
         # regime_code with the shared logarithms (same formulae as ehl.regime_films)
-        ar = ry / rx
-        lam_b = 1.0 / (1.0 + 2.0 / (3.0 * ar))
         ln_gv = ln_g + 3.0 * ln_w - 2.0 * ln_u
         ln_ge = (8.0 / 3.0) * ln_w - 2.0 * ln_u
-        h_ir = 128.0 * ar * lam_b**2 * (0.131 * math.atan(ar / 2.0) + 1.683) ** 2
         h_pr = 1.66 * math.exp((2.0 / 3.0) * ln_gv) * fk_min
-        h_ie = 8.70 * math.exp(0.67 * ln_ge) * (1.0 - 0.85 * math.exp(-0.31 * k_hd))
+        h_ie = 8.70 * math.exp(0.67 * ln_ge) * fk_ie
         h_pe = 3.42 * math.exp(0.49 * ln_gv + 0.17 * ln_ge) * fk_min
         reg = ehl.select_regime(h_ir, h_pr, h_ie, h_pe)
     theta = 0.0
@@ -541,6 +556,22 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     out[7] = mry
     out[8] = mrz
     out[9] = power
+
+
+@njit(cache=True, error_model="numpy")
+def film_constants(alpha, e_eff, rx, ry):
+    """Constants of a contact type in the Hamrock–Dowson films and the regime map (the same formulae as
+    :func:`bearingsim.contact.ehl.hamrock_dowson_central`, ``_minimum`` and ``regime_films``): α [1/Pa],
+    E′ [Pa], R_x, R_y [m] → (ln αE′, k = 1.03 (R_y/R_x)^0.64, 1 − e^(−0.68k), 1 − 0.61 e^(−0.73k), the
+    isoviscous-rigid film 128 (R_y/R_x) λ_b² (0.131 atan(R_y/2R_x) + 1.683)², λ_b = 1/(1 + 2R_x/3R_y),
+    1 − 0.85 e^(−0.31k)) [-].  :func:`pack_lubrication_parameters` stores them in ``lub`` (L_C_*) so that the
+    kernel does not recompute them per call."""
+    ar = ry / rx
+    k_hd = 1.03 * math.exp(0.64 * math.log(ar))
+    lam_b = 1.0 / (1.0 + 2.0 / (3.0 * ar))
+    h_ir = 128.0 * ar * lam_b**2 * (0.131 * math.atan(ar / 2.0) + 1.683) ** 2
+    return (math.log(alpha * e_eff), k_hd, 1.0 - math.exp(-0.68 * k_hd), 1.0 - 0.61 * math.exp(-0.73 * k_hd), h_ir,
+            1.0 - 0.85 * math.exp(-0.31 * k_hd))
 
 
 @njit(cache=True, error_model="numpy")
@@ -1022,6 +1053,10 @@ def pack_lubrication_parameters(lubricant, temperature: float, e_eff: float, rx:
     lub[L_GF_SCALE] = film_modulus_factor
     if solids is not None:
         lub[L_SFLEX] = traction.solids_flexibility_coefficient(rx, ry, *solids)
+    if lub[L_ALPHA] > 0.0 and rx > 0.0 and ry > 0.0:
+        lub[L_C_AE] = lub[L_ALPHA] * lub[L_EEFF]
+        lub[L_C_AR] = lub[L_RY] / lub[L_RX]
+        lub[L_C_LNG:L_C_FKIE + 1] = film_constants(lub[L_ALPHA], lub[L_EEFF], lub[L_RX], lub[L_RY])
     return lub
 
 
