@@ -46,6 +46,51 @@ def case(model="mixed", fluid_model="physical"):
             np.zeros(3), wr, lub)
 
 
+def against(src: str, pairs: int = 60, n_calls: int = 4000) -> None:
+    """Interleaved timing of this tree's kernel and the one under ``src`` (module docstring)."""
+    import importlib
+    import shutil
+    import sys
+    import tempfile
+    from pathlib import Path
+
+    tmp = tempfile.mkdtemp()
+    shutil.copytree(Path(src) / "bearingsim", Path(tmp) / "bearingsim_other",
+                    ignore=shutil.ignore_patterns("*.nbi", "*.nbc"))
+    sys.path.insert(0, tmp)
+    other = importlib.import_module("bearingsim_other.contact.slices")
+
+    def looper(mod):
+        @njit
+        def loop(n, q, a, b, r_dev, c, nn, m, cb, vb, wb, cr, vr, wr, lub, n_slices, out):
+            acc = 0.0
+            for i in range(n):
+                mod.contact_traction(q * (1.0 + 1e-9 * i), a, b, r_dev, c, nn, m, cb, vb, wb, cr, vr, wr, lub,
+                                     n_slices, out)
+                acc += out[0]
+            return acc
+        return loop
+
+    args = case("mixed", "physical")
+    lub_other = np.zeros(other.L_SIZE)
+    k = min(other.L_SIZE, S.L_SIZE)
+    lub_other[:k] = args[-1][:k]  # the older layout is a prefix of this one (entries appended over time)
+    runs = ((looper(other), args[:-1] + (lub_other,), []), (looper(S), args, []))
+    out = np.zeros(10)
+    for loop, a, _ in runs:
+        loop(10, *a, 8, out)
+    for _ in range(pairs):
+        for loop, a, ts in runs:
+            t0 = time.process_time()
+            loop(n_calls, *a, 8, out)
+            ts.append((time.process_time() - t0) / n_calls * 1e6)
+    (_, _, t_old), (_, _, t_new) = runs
+    print(f"contact_traction, physical fluid, 8 strips, CPU µs per call: {src}: best {min(t_old):.3f} median "
+          f"{np.median(t_old):.3f}; this tree: best {min(t_new):.3f} median {np.median(t_new):.3f}; median of "
+          f"{pairs} paired ratios this/other {np.median(np.array(t_new) / np.array(t_old)):.3f}")
+    shutil.rmtree(tmp, ignore_errors=True)
+
+
 def main(repeats: int = 25, n_calls: int = 10_000):
     print(f"contact_traction: µs per call after warm-up (numba loop of {n_calls} calls, best and median of "
           f"{repeats} repeats; the best is the figure least disturbed by other load on the machine)")
@@ -65,4 +110,9 @@ def main(repeats: int = 25, n_calls: int = 10_000):
 
 
 if __name__ == "__main__":
-    main()
+    import sys
+
+    if len(sys.argv) == 3 and sys.argv[1] == "--against":
+        against(sys.argv[2])
+    else:
+        main()
