@@ -494,18 +494,22 @@ def write_report(study: HysteresisStudy, folder, sensitivity=None) -> Path:
     body.append(H.section("Figures", "".join(figs), "figures"))
     # table
     header = ["km/h", "Hz", "cycles used", "W_H [10⁻³ deg]", "95 % interval", "two-point mean", "loop area [mJ]",
-              "phase lag [deg]", "compliance [deg/kN·m]", "quasi-static", "reduced W_H", "bound", "[S1]", "[S1] alt",
-              "wall [s]"]
+              "phase lag [deg]", "compliance [deg/kN·m]", "quasi-static", "reduced W_H (film κ)",
+              "reduced W_H (spin-softened κ)", "bound", "[S1]", "[S1] alt", "wall [s]"]
     trows = []
     for r in study.rows():
         trows.append([r["speed_kmh"], r["frequency_hz"], r["cycles_used"], r["W_H_mdeg"],
                       f"{H.fmt(r['W_H_ci95_lo_mdeg'], '.3f')} … {H.fmt(r['W_H_ci95_hi_mdeg'], '.3f')}",
                       r["two_point_mean_mdeg"], r["loop_area_mJ"], r["phase_lag_deg"], r["compliance_deg_per_kNm"],
-                      r["static_compliance_deg_per_kNm"], r["reduced_W_H_mdeg"], r["bound_W_H_mdeg"],
+                      r["static_compliance_deg_per_kNm"], r["reduced_W_H_mdeg"], r.get("reduced_kernel_W_H_mdeg"),
+                      r["bound_W_H_mdeg"],
                       r["seed_fig9_mdeg"], r["seed_fig9_alt_mdeg"], r["wall_s"]])
-    specs = ["g", "g", "g", ".3f", None, ".3f", ".4f", ".4f", ".5f", ".5f", ".3f", ".3f", ".1f", ".1f", ".0f"]
+    specs = ["g", "g", "g", ".3f", None, ".3f", ".4f", ".4f", ".5f", ".5f", ".3f", ".3f", ".3f", ".1f", ".1f", ".0f"]
     body.append(H.section("Cells", H.table(header, trows, ident="cells", specs=specs) + H.paragraph(
-        "Reduced W_H: the quasi-static model of the paper's mechanism (studies/hub_reduced.py); bound: the smaller "
+        "Reduced W_H: the quasi-static model of the paper's mechanism (studies/hub_reduced.py) with the film-elastic "
+        "creep slope, and with the spin-softened slope measured on the case's own traction kernel "
+        "(hub_reduced.kernel_creep_slope: the ball's spin saturates the traction, so a small transverse slip turns "
+        "it; docs/dynamics.md); bound: the smaller "
         "of the mechanism's force and energy upper bounds; [S1], [S1] alt: the two readings of the paper's Fig. 9 "
         "(studies/hub_dynamic.py).  Two-point mean: the raw reading at two instants per cycle (diagnostic only)."),
         "cells-section"))
