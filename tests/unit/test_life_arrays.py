@@ -6,8 +6,8 @@ import math
 
 import numpy as np
 
-from bearingsim.statics import arrangements as ar
 from bearingsim import io, life
+from bearingsim.statics import arrangements as ar
 from bearingsim.statics import jones_harris as jh
 
 
