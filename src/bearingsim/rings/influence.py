@@ -147,6 +147,19 @@ def cache_key(section: RingSection, youngs_modulus: float, poisson_ratio: float,
     return hashlib.sha256(json.dumps(payload, sort_keys=True).encode()).hexdigest()
 
 
+def sleeve_material(section, youngs_modulus: float, poisson_ratio: float):
+    """The ``second_material`` of :class:`.axisymmetric.HarmonicRing` for a seat sleeve of another material (the
+    elements beyond the ring's seat radius: (selector, E [Pa], ν)), or None when the sleeve is of the ring's
+    material or there is no sleeve.  Shared by the single-groove and the shared (double-row) sections."""
+    if section.sleeve_radius is None or (section.sleeve_youngs_modulus is None
+                                         and section.sleeve_poisson_ratio is None):
+        return None
+    es = section.sleeve_youngs_modulus if section.sleeve_youngs_modulus is not None else youngs_modulus
+    nus = section.sleeve_poisson_ratio if section.sleeve_poisson_ratio is not None else poisson_ratio
+    seat, sgn = section.seat_radius, section.sign
+    return (lambda x: sgn * (x[0] - seat) < 0.0, es, nus)
+
+
 def compute_influence(section: RingSection, youngs_modulus: float, poisson_ratio: float, ball_count: int,
                       settings: InfluenceSettings | None = None, cache: bool = True) -> RingInfluence:
     """Influence coefficients of ``section`` (a ring on a rigid seat, or bonded to its seat sleeve whose far
@@ -173,14 +186,7 @@ def compute_influence(section: RingSection, youngs_modulus: float, poisson_ratio
     face = "face_minus" if section.support_face_z < 0 else "face_plus"
     # a rigid seat holds every harmonic; the far surface of a seat sleeve (a hollow shaft's bore, a housing's
     # outside) only follows the rigid translation and tilt of the shaft/housing (harmonic 1)
-    second = None
-    if section.sleeve_radius is not None and (section.sleeve_youngs_modulus is not None
-                                              or section.sleeve_poisson_ratio is not None):
-        # the seat sleeve of another material: the elements beyond the ring's seat radius
-        es = section.sleeve_youngs_modulus if section.sleeve_youngs_modulus is not None else youngs_modulus
-        nus = section.sleeve_poisson_ratio if section.sleeve_poisson_ratio is not None else poisson_ratio
-        seat, sgn = section.seat_radius, section.sign
-        second = (lambda x: sgn * (x[0] - seat) < 0.0, es, nus)
+    second = sleeve_material(section, youngs_modulus, poisson_ratio)
     ring = HarmonicRing(mesh, youngs_modulus, poisson_ratio, radial_fixed=("seat",), axial_fixed=(face,),
                         radial_harmonics=None if section.sleeve_radius is None else (1,), second_material=second)
     p = section.contact_point

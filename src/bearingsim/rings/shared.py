@@ -46,7 +46,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from ..errors import InputError
-from .influence import InfluenceSettings, cache_dir, half_space_on_axis
+from .influence import InfluenceSettings, cache_dir, half_space_on_axis, sleeve_material
 
 #: bump when the computation changes (invalidates cached shared-ring files)
 SHARED_CACHE_VERSION = 1
@@ -245,13 +245,7 @@ def compute_shared_influence(section: SharedSection, youngs_modulus: float, pois
             pass  # unreadable file: recompute and overwrite
     t0 = time.perf_counter()
     mesh = mesh_section(section, st["h_contact"], st["n_through"], st["n_axial"])
-    second = None
-    if section.sleeve_radius is not None and (section.sleeve_youngs_modulus is not None
-                                              or section.sleeve_poisson_ratio is not None):
-        es = section.sleeve_youngs_modulus if section.sleeve_youngs_modulus is not None else youngs_modulus
-        nus = section.sleeve_poisson_ratio if section.sleeve_poisson_ratio is not None else poisson_ratio
-        seat, sgn = section.seat_radius, section.sign
-        second = (lambda x: sgn * (x[0] - seat) < 0.0, es, nus)
+    second = sleeve_material(section, youngs_modulus, poisson_ratio)
     ring = HarmonicRing(mesh, youngs_modulus, poisson_ratio, radial_fixed=("seat",),
                         axial_fixed=(section.axial_support,),
                         radial_harmonics=None if section.sleeve_radius is None else (1,), second_material=second)
