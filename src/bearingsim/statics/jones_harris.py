@@ -485,8 +485,6 @@ def _alternative_starts(bearing, loads, speed, control, initial, q_first, rows, 
 
 
 TILT_MODES = ("free", "fixed")
-#: fixed tilt: at most this many outer (moment) iterations
-MAXIT_TILT = 40
 
 
 def _check_tilt(tilt, misalignment) -> tuple[str, np.ndarray]:
@@ -615,8 +613,8 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
     initial : optional start for (δx, δy, δz, γy, γz) [m, rad], float[5], finite
     tilt : ``"free"`` (default: the inner ring tilts until the moments balance — a single bearing carries no
         moment beyond ``loads``) or ``"fixed"``: the tilt (γy, γz) is held at ``misalignment`` (default 0: a
-        single bearing on a stiff shaft in a stiff housing, the assumption of ISO/TS 16281's reference rating
-        life, docs/life.md) and the moment that holds it is returned as ``reaction_moment``
+        single bearing on a stiff shaft in a stiff housing; ISO/TS 16281 takes the tilt or the moment as an
+        input, docs/life.md) and the moment that holds it is returned as ``reaction_moment``
     misalignment : (γy, γz) [rad] of the inner ring relative to the outer for ``tilt="fixed"``
 
     Returns a :class:`StaticResult`; ``converged`` is False (with ``status`` and ``residual``)
