@@ -735,6 +735,22 @@ def warm_up(bearing="skf-7011-cdga-hc") -> bool:
     return True
 
 
+#: (SI unit, units_display) → factor for map variables shown in a unit of the trade that is not the general display
+#: unit of their SI unit (:func:`bearingsim.units.display_unit` keeps s as s): lives in hours and 10⁶ revolutions
+_SHOWN_AS = {("s", "h"): 1.0 / 3600.0, ("1", "1e6 rev"): 1e-6}
+
+
+def plot_unit(ds, var: str = "stiffness", i: int = 0, j: int = 0) -> tuple[str, float]:
+    """(unit people read, factor from the stored SI value) of map variable ``var`` (for the stiffness: of K[i, j],
+    each component in its own unit)."""
+    if var == "stiffness":
+        return display_unit(nc.component_units(ds[var].attrs, (5, 5))[i][j])
+    units, shown = ds[var].attrs.get("units", ""), ds[var].attrs.get("units_display")
+    if (units, shown) in _SHOWN_AS:  # e.g. a life stored in s, shown in h
+        return shown, _SHOWN_AS[(units, shown)]
+    return display_unit(units)
+
+
 def plot_map(ds, path: str | Path, var: str = "stiffness", i: int = 0, j: int = 0):
     """Write a stiffness map K[i, j] over the (first two) grid dimensions to ``path`` (matplotlib), axes and
     colour bar in the units people read (:func:`bearingsim.units.display_unit`: rpm, N, N/µm, N·m/mrad …),
@@ -748,8 +764,7 @@ def plot_map(ds, path: str | Path, var: str = "stiffness", i: int = 0, j: int = 
     grid_dims = [d for d in k.dims]
     fig, ax = plt.subplots(figsize=(6, 4.5))
     label = f"K[{DOF[i]},{DOF[j]}]" if var == "stiffness" else var
-    units = nc.component_units(ds[var].attrs, (5, 5)) if var == "stiffness" else ds[var].attrs.get("units", "")
-    unit, f_v = display_unit(units[i][j] if isinstance(units, list) else units)  # K[i, j]: its own unit
+    unit, f_v = plot_unit(ds, var, i, j)
 
     def axis(name):
         u, f = display_unit(ds[name].attrs.get("units", ""))

@@ -38,3 +38,12 @@ def test_map_life_units_and_zero_speed(ds):
 def test_bearing_without_rating_gives_nan_not_a_number():
     d = map_grid("skf-7011-cdga-hc", fa=[1000.0, 2000.0], speed=600.0, workers=1)
     assert np.all(np.isnan(d.basic_rating_life.values))
+
+
+def test_life_is_plotted_in_hours_and_millions_of_revolutions(ds, tmp_path):
+    from bearingsim.sweep import plot_map, plot_unit
+
+    assert plot_unit(ds, "basic_rating_life_time") == ("h", 1.0 / 3600.0)
+    assert plot_unit(ds, "basic_rating_life") == ("1e6 rev", 1e-6)
+    assert plot_unit(ds, "stiffness", 0, 0)[0] == "N/µm"
+    assert plot_map(ds.sel(speed=3000 * math.pi / 30), tmp_path / "life.png", var="basic_rating_life_time").exists()
