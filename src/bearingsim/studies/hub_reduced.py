@@ -200,6 +200,12 @@ def film_creep_slope(lubricant, temperature: float, q, alpha, u, ball_diameter, 
     return out
 
 
+def _rolling_speed(omega, w_c, dm, d, alpha):
+    """Rolling (entraining) speed of the inner contact, (ω − ω_c)(d_m − D cos α)/2 [m/s] (Jones' kinematics with the
+    cage at ω_c; ω, ω_c [rad/s], d_m, D [m], α [rad]; arrays broadcast)."""
+    return np.abs(omega - w_c) * 0.5 * (dm - d * np.cos(alpha))
+
+
 def kernel_creep_slope(case, speed_kmh: float, s: float = 0.0, step: float = 1e-6) -> dict:
     """Effective creep slope of the ball's transverse (major-axis) sliding in the dynamic model's own traction
     kernel, per ball, at the quasi-static state of the load path point ``s`` (M = M₀ + M̂ s) [-].
@@ -226,7 +232,6 @@ def kernel_creep_slope(case, speed_kmh: float, s: float = 0.0, step: float = 1e-
     Measured on ``examples/hub-moment-50hz.toml`` at M = 0.3 kN·m (2026-11-24): κ_eff 5.4–8.9 (median 7.0 at
     10 km/h, 7.3 at 100 km/h) against the film's 46–577; 8 strips give the same within 6 %.
     """
-    from ..contact.hertz import effective_modulus
     from ..dynamics import forces as fo
     from ..dynamics import layout as ly
     from ..dynamics import model as md
@@ -281,14 +286,12 @@ def kernel_creep_slope(case, speed_kmh: float, s: float = 0.0, step: float = 1e-
     d = np.array([rows[i].bearing.ball_diameter for i in ball_row])
     dm = np.array([rows[i].bearing.pitch_diameter for i in ball_row])
     w_c = float(np.nanmedian(np.asarray(balls["orbital_speed_rad_s"], dtype=float)))
-    u = np.abs(omega - w_c) * 0.5 * (dm - d * np.cos(alpha))
+    u = _rolling_speed(omega, w_c, dm, d, alpha)
     loaded = (qi > 0) & (qo > 0)
     kappa = np.where(loaded, -trace * u / np.where(loaded, qi + qo, 1.0), math.nan)
     b0 = rows[0].bearing
-    e_eff = effective_modulus(b0.ball_material.youngs_modulus, b0.ball_material.poisson_ratio,
-                              b0.ring_material.youngs_modulus, b0.ring_material.poisson_ratio)
     film = film_creep_slope(case.lubricant, case.temperature, qi, alpha, u, float(d[0]), float(dm[0]),
-                            float(b0.inner_conformity), e_eff)
+                            float(b0.inner_conformity), b0.effective_modulus)
     return {"kappa": kappa, "median": float(np.nanmedian(kappa)), "film": film, "shaft_speed": omega}
 
 
@@ -369,7 +372,7 @@ def reduced_wh(case_or_bearing, speed_kmh: float, frequency_hz: float, level: fl
     kt_per_q = 1.0 / ((fi - 0.5) * d) + 1.0 / ((fo - 0.5) * d)  # k_t / Q [1/m]
     w_c = tab["orbital_speed"]
 
-    u_tab = np.abs(omega - w_c) * 0.5 * (dm[None, :] - d[None, :] * np.cos(tab["alpha"]))  # rolling speed [m/s]
+    u_tab = _rolling_speed(omega, w_c, dm[None, :], d[None, :], tab["alpha"])
     if kernel:
         if off is None:
             raise InputError("creep_slope", '"kernel" needs a dynamic case (its traction model and lubricant)',
@@ -383,11 +386,7 @@ def reduced_wh(case_or_bearing, speed_kmh: float, frequency_hz: float, level: fl
         if lubricant is None:
             raise InputError("creep_slope", "no lubricant to compute the film-elastic creep slope from",
                              "give creep_slope = dμ/ds, or a case with a lubricant")
-        from ..contact.hertz import effective_modulus
-
-        b0 = rows[0].bearing
-        e_eff = effective_modulus(b0.ball_material.youngs_modulus, b0.ball_material.poisson_ratio,
-                                  b0.ring_material.youngs_modulus, b0.ring_material.poisson_ratio)
+        e_eff = rows[0].bearing.effective_modulus
         # κ on the table's moments (per ball of the pattern), then interpolated
         key = ("kappa", id(tab), repr(lubricant), temperature)
         if key not in _TABLES:
