@@ -71,12 +71,16 @@ def _library_text(kind: str, name: str) -> str:
     return cand.read_text()
 
 
-def _scaled(text: str, key: str, factor: float) -> str:
+def _edit_number(text: str, key: str, change) -> str:
+    """``text`` (TOML) with the plain number of ``key`` replaced by ``change(value)``."""
     pat = re.compile(rf"^({re.escape(key)}\s*=\s*)([0-9.eE+-]+)\s*$", re.M)
-    m = pat.search(text)
-    if m is None:
+    if pat.search(text) is None:
         raise InputError(key, "not a plain number in the TOML", "give it as a number to derive the variant")
-    return pat.sub(lambda mm: f"{mm.group(1)}{float(mm.group(2)) * factor!r}", text, count=1)
+    return pat.sub(lambda mm: f"{mm.group(1)}{change(float(mm.group(2)))!r}", text, count=1)
+
+
+def _scaled(text: str, key: str, factor: float) -> str:
+    return _edit_number(text, key, lambda v: v * factor)
 
 
 def variant_case_data(case_data: dict, base: Path, variant: str, folder: Path) -> dict:
@@ -116,11 +120,7 @@ def variant_case_data(case_data: dict, base: Path, variant: str, folder: Path) -
 
 
 def _shift(text: str, key: str, df: float) -> str:
-    pat = re.compile(rf"^({re.escape(key)}\s*=\s*)([0-9.eE+-]+)\s*$", re.M)
-    m = pat.search(text)
-    if m is None:
-        raise InputError(key, "not found as a plain number in the bearing TOML", "give the conformities explicitly")
-    return pat.sub(lambda mm: f"{mm.group(1)}{round(float(mm.group(2)) + df, 10)!r}", text, count=1)
+    return _edit_number(text, key, lambda v: round(v + df, 10))
 
 
 def run_variant(case_path, folder, variant: str, speed_kmh: float = 100.0, frequency_hz: float = 50.0,
