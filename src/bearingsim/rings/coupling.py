@@ -99,6 +99,14 @@ def ring_model(bearing, youngs_modulus: float | None = None, poisson_ratio: floa
     if housing is not None or shaft is not None:
         desc["housing"] = None if housing is None else _sleeve_desc(housing)
         desc["shaft"] = None if shaft is None else _sleeve_desc(shaft)
+    if shaft is not None and not shaft.rigid and shaft.diameter == 0.0:
+        from .spec import SOLID_SHAFT_BORE_FRACTION
+
+        # an approximation of the model, stated with every result that uses it (solve adds it to the warnings)
+        desc["warnings"] = [
+            f"solid shaft modelled as a rigid core of {SOLID_SHAFT_BORE_FRACTION:g} of the bore: the inner ring's "
+            "compliance depends at first order on that choice (docs/rings.md §7); give the shaft's bore "
+            "(inner_diameter) or rigid = true for a defined seat"]
     from .shared import is_unit
 
     if is_unit(bearing, spec):
@@ -470,14 +478,7 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
     res.warnings = static_warnings(res)
     res.ring_model, res.ring_offsets, res.ring_iterations, res.ring_residual = "fe", off, it, change
     res.ring_description = rings.description
-    shaft = (rings.description or {}).get("shaft") or {}
-    if shaft.get("diameter_m") == 0.0 and not shaft.get("rigid"):
-        from .spec import SOLID_SHAFT_BORE_FRACTION
-
-        res.warnings = list(res.warnings) + [
-            f"solid shaft modelled as a rigid core of {SOLID_SHAFT_BORE_FRACTION:g} of the bore: the inner ring's "
-            "compliance depends at first order on that choice (docs/rings.md §7); give the shaft's bore "
-            "(inner_diameter) or rigid = true for a defined seat"]
+    res.warnings = list(res.warnings) + list((rings.description or {}).get("warnings", ()))
     return res
 
 
