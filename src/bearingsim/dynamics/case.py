@@ -12,7 +12,9 @@ Example (``examples/spindle-7011.toml``)::
     duration = "20 ms"
     output_interval = "0.05 ms"
     traction = "slices"                 # slices (lubricated kernel), coulomb (test stand-in), none
-    n_slices = 8
+    n_slices = 8                        # strips per ellipse, or with slice_rule = "gauss" nodes per stretch
+    slice_rule = "strips"               # "strips" (equal strips, default) or "gauss" (Gauss–Legendre between the
+                                        # zeros of the rolling slip: smooth in the state, contact/slices.py)
     tolerance = 1e-6                    # integrator tolerance (relative; lengths scaled by 1 mm)
     integrator = "auto"                 # ros34w (W-method, implicit per ball) for traction = "slices", else dopri5;
                                         # or "dopri5", "ros2w", "ros34w"
@@ -71,6 +73,13 @@ from dataclasses import dataclass, field
 from ..errors import InputError
 from .loads import LoadHistory, SpeedHistory
 
+
+def _gauss_max() -> int:
+    """Most Gauss nodes per stretch of the contact kernel (imported when asked: the kernel module is heavy)."""
+    from ..contact.slices import GAUSS_MAX
+
+    return GAUSS_MAX
+
 #: initial-state options (Case.start)
 START_MODES = ("consistent", "rest")
 #: small-slip compliance of the lubricated traction kernel (Case.traction_compliance)
@@ -97,6 +106,9 @@ class Case:
     temperature: float = 333.15
     traction: str = "slices"
     n_slices: int = 8
+    #: "strips": ``n_slices`` equal strips along the major axis; "gauss": ``n_slices`` Gauss–Legendre nodes on each
+    #: stretch between the zeros of the rolling-direction slip (:func:`bearingsim.contact.slices.rolling_slip_zeros`)
+    slice_rule: str = "strips"
     tolerance: float = 1e-6
     contact_damping: float | str = 0.05  #: Hunt–Crossley α [s/m] or "ehl" (:meth:`damping_alpha`)
     gravity: tuple = (0.0, 0.0, 0.0)
@@ -139,6 +151,11 @@ class Case:
                              'add lubricant = "iso-vg-68" or set traction = "none"')
         if isinstance(self.n_slices, bool) or not (isinstance(self.n_slices, int) and 1 <= self.n_slices <= 64):
             raise InputError("n_slices", f"must be an integer in 1..64, got {self.n_slices!r}", "e.g. 8")
+        if self.slice_rule not in ("strips", "gauss"):
+            raise InputError("slice_rule", f"unknown rule {self.slice_rule!r}"[:120], 'use "strips" or "gauss"')
+        if self.slice_rule == "gauss" and self.n_slices > (GAUSS_MAX := _gauss_max()):
+            raise InputError("n_slices", f"with slice_rule = \"gauss\" it counts nodes per stretch: 1..{GAUSS_MAX}, "
+                             f"got {self.n_slices}", "e.g. n_slices = 4")
         if isinstance(self.chunk, bool) or not (isinstance(self.chunk, int) and 1 <= self.chunk <= MAX_CHUNK):
             raise InputError("chunk", f"must be an integer in 1..{MAX_CHUNK}, got {self.chunk!r}", "e.g. 200")
         if isinstance(self.contact_damping, str):
@@ -222,7 +239,8 @@ class Case:
         if self.traction_compliance == "film+solids":
             lub["solids"] = self.solids_shear()
         return dict(ring_mass=self.ring_mass, ring_inertia=self.ring_inertia, gravity=self.gravity,
-                    damping_alpha=self.damping_alpha(), traction=self.traction, n_slices=self.n_slices,
+                    damping_alpha=self.damping_alpha(), traction=self.traction,
+                    n_slices=-self.n_slices if self.slice_rule == "gauss" else self.n_slices,
                     load_point=self.load_point, speed=self.speed.as_tuple(), lubricant=self.lubricant,
                     temperature=self.temperature, lubrication=lub or None, ball_orbit=self.ball_orbit,
                     cage_mass=c.get("mass"), pocket_clearance=c.get("pocket_clearance"),

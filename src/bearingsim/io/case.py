@@ -20,7 +20,7 @@ from .files import read_toml
 _KEYS = {"bearing", "lubricant", "temperature", "speed", "duration", "output_interval", "traction", "n_slices",
          "tolerance", "contact_damping", "gravity", "load_point", "chunk", "control", "loads", "inner_ring", "cage",
          "lubrication", "name", "description", "checkpoint_every", "integrator", "start", "ramp_in",
-         "traction_compliance", "ball_orbit"}
+         "traction_compliance", "ball_orbit", "slice_rule"}
 
 #: elastic-cage ring data in [cage] (bearingsim.cage_modes.CageRing fields) and their dimensions
 _CAGE_RING = {"axial_width": "length", "radial_thickness": "length", "pocket_diameter": "length",
@@ -151,6 +151,7 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
                 duration=parse_quantity(data["duration"], "time", "duration"),
                 output_interval=parse_quantity(data["output_interval"], "time", "output_interval"),
                 lubricant=lub, temperature=temperature, traction=traction, n_slices=data.get("n_slices", 8),
+                slice_rule=data.get("slice_rule", "strips"),
                 tolerance=float(tol), contact_damping=damping if isinstance(damping, str) else float(damping),
                 gravity=tuple(gvec), load_point=load_point,
                 ring_mass=ring_mass, ring_inertia=inertia, cage=cage, lubrication=data.get("lubrication", {}),

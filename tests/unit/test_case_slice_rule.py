@@ -1,0 +1,70 @@
+"""The case-file key ``slice_rule`` (issue 14): the sliced traction by equal strips (default) or by Gauss–Legendre
+nodes between the zeros of the rolling slip (``contact.slices``, n_slices < 0 inside the kernel)."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+import pytest
+
+from bearingsim.contact.slices import GAUSS_MAX
+from bearingsim.dynamics.case import case_from_dict
+from bearingsim.errors import InputError
+
+from _cli import run  # tests/unit/_cli.py: the installed console script
+
+ROOT = Path(__file__).resolve().parents[2]
+HUB = ROOT / "examples" / "hub-moment-50hz.toml"
+
+
+def _data(**kw):
+    return {**tomllib.loads(HUB.read_text()), **kw}
+
+
+def test_default_is_strips_and_gauss_reaches_the_kernel_as_negative_count():
+    strips = case_from_dict(_data(), base=HUB.parent)
+    gauss = case_from_dict(_data(slice_rule="gauss", n_slices=4), base=HUB.parent)
+    assert strips.slice_rule == "strips" and strips.model_options()["n_slices"] == 8
+    assert gauss.model_options()["n_slices"] == -4
+    assert strips.fingerprint() != gauss.fingerprint()  # a resume never mixes the two rules
+
+
+@pytest.mark.parametrize("bad, field", [({"slice_rule": "simpson"}, "slice_rule"), ({"slice_rule": 3}, "slice_rule"),
+                                        ({"slice_rule": "gauss", "n_slices": GAUSS_MAX + 1}, "n_slices"),
+                                        ({"slice_rule": "gauss", "n_slices": 0}, "n_slices")])
+def test_bad_rule_or_node_count_names_the_field(bad, field):
+    with pytest.raises(InputError) as e:
+        case_from_dict(_data(**bad), base=HUB.parent)
+    assert e.value.field == field
+
+
+def test_example_gauss_case_differs_from_the_benchmark_case_only_by_the_rule():
+    """examples/hub-moment-gauss.toml (the hub study's case) is benchmark case (b) with the Gauss rule."""
+    gauss = tomllib.loads((ROOT / "examples" / "hub-moment-gauss.toml").read_text())
+    base = tomllib.loads(HUB.read_text())
+    assert {k: v for k, v in gauss.items() if k not in ("slice_rule", "n_slices")} == \
+        {k: v for k, v in base.items() if k != "n_slices"}
+    assert gauss["slice_rule"] == "gauss" and 1 <= gauss["n_slices"] <= GAUSS_MAX
+
+
+def test_console_script_refuses_a_bad_rule_in_one_line(tmp_path):
+    text = HUB.read_text().replace("n_slices = 8", 'n_slices = 8\nslice_rule = "trapezoid"')
+    case = tmp_path / "case.toml"
+    case.write_text(text)
+    p = run("simulate", str(case), "--out", str(tmp_path / "o.nc"), check=False)
+    assert p.returncode == 2, p.stderr
+    lines = [ln for ln in p.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and "slice_rule" in lines[0] and "Traceback" not in p.stderr, p.stderr
+
+
+def test_gauss_case_runs_through_the_console_script_and_says_its_rule(tmp_path):
+    """0.2 ms of the hub study's case: the file names the quadrature it was computed with."""
+    import xarray as xr
+
+    out = tmp_path / "g.nc"
+    run("simulate", str(ROOT / "examples" / "hub-moment-gauss.toml"), "--duration", "0.2 ms", "--out", str(out),
+        "--quiet")
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["traction_quadrature"].startswith("Gauss-Legendre, 4 nodes"), ds.attrs
+        assert ds.sizes["time"] == 3
