@@ -7,12 +7,11 @@ import tomllib
 from pathlib import Path
 
 import pytest
+from _cli import run  # tests/unit/_cli.py: the installed console script
 
 from bearingsim.contact.slices import GAUSS_MAX
 from bearingsim.dynamics.case import case_from_dict
 from bearingsim.errors import InputError
-
-from _cli import run  # tests/unit/_cli.py: the installed console script
 
 ROOT = Path(__file__).resolve().parents[2]
 HUB = ROOT / "examples" / "hub-moment-50hz.toml"

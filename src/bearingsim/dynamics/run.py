@@ -137,8 +137,8 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
              "conventions": "x bearing axis, outer ring fixed, psi = 0 on +y, SI units",
              "integrator": integrator_text(case.method, model, stepper.ring_coupling)}
     if case.traction == "slices":
-        attrs["traction_quadrature"] = (f"Gauss-Legendre, {case.n_slices} nodes per stretch between the zeros of the "
-                                        "rolling slip" if case.slice_rule == "gauss" else f"{case.n_slices} equal strips")
+        gauss = f"Gauss-Legendre, {case.n_slices} nodes per stretch between the zeros of the rolling slip"
+        attrs["traction_quadrature"] = gauss if case.slice_rule == "gauss" else f"{case.n_slices} equal strips"
     n_total = case.n_samples
     start = 0
     writer = None
