@@ -5,8 +5,10 @@ Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 2
 50 Hz moment, 0.1 s.  Target for (b): ≤ 300 s wall per simulated second on one core.
 
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
-         [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8]
-         [--profile] [--kernel] [--accuracy] [--threads N] [--steps]
+         [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8] [--slice-rule strips|gauss]
+         [--vehicle-speed KMH] [--profile] [--kernel] [--accuracy] [--threads N] [--steps]
+--slice-rule gauss integrates the traction with --n-slices Gauss nodes per stretch between the zeros of the rolling
+slip (the case key slice_rule); --vehicle-speed runs the hub case (b) at that vehicle speed (10 km/h: 83.55 rpm).
 --accuracy compares the ring displacement of the chosen settings with a DOPRI5 run at
 tolerance 1e-7 over the same (short) duration and prints the largest deviation of each
 ring coordinate relative to its range (issue 14: ≤ 1e-4 for the loaded coordinates over 5 ms).
@@ -36,13 +38,29 @@ ROOT = Path(__file__).resolve().parents[1]
 CASES = {"a": ROOT / "examples" / "spindle-7011.toml", "b": ROOT / "examples" / "hub-moment-50hz.toml"}
 
 
+def load_bench_case(name: str, vehicle_speed: float | None = None, slice_rule: str | None = None):
+    """The case file of ``name``, with the hub's shaft speed for a vehicle speed [km/h] (the study's tyre,
+    :func:`bearingsim.studies.hub_static.vehicle_speed_to_shaft`) and the traction quadrature rule replaced."""
+    import math
+
+    from bearingsim.dynamics.case import case_from_dict
+    from bearingsim.io import read_toml
+    from bearingsim.studies.hub_static import vehicle_speed_to_shaft
+
+    data = read_toml(CASES[name], "case")
+    if vehicle_speed is not None:
+        data["speed"] = f"{vehicle_speed_to_shaft(vehicle_speed) * 30 / math.pi!r} rpm"
+    if slice_rule is not None:
+        data["slice_rule"] = slice_rule
+    return case_from_dict(data, base=CASES[name].parent)
+
+
 def run(name: str, duration: float | None, traction: str | None, profile: bool, integrator: str | None = None,
         tolerance: float | None = None, n_slices: int | None = None, keep=None, cage_modes: int = 0,
-        threads: int = 1) -> dict:
-    from bearingsim.dynamics.case import load_case
+        threads: int = 1, vehicle_speed: float | None = None, slice_rule: str | None = None) -> dict:
     from bearingsim.dynamics.run import simulate
 
-    case = load_case(CASES[name])
+    case = load_bench_case(name, vehicle_speed, slice_rule)
     if traction:
         case = dataclasses.replace(case, traction=traction)
     if integrator:
@@ -79,7 +97,7 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
             ds.close()
     peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
     out = {"case": name, "traction": full.traction, "integrator": full.method, "tolerance": full.tolerance,
-           "n_slices": full.n_slices, "cage_modes": cage_modes, "threads": threads, "simulated_s": full.duration, "wall_s": wall,
+           "n_slices": full.n_slices, "slice_rule": full.slice_rule, "cage_modes": cage_modes, "threads": threads, "simulated_s": full.duration, "wall_s": wall,
            "wall_per_simulated_s": wall / full.duration, "cpu_per_simulated_s": cpu / full.duration,
            "steps": res.summary["steps"],
            "rejected": res.summary["rejected_steps"], "peak_rss_MB": peak}
@@ -209,7 +227,12 @@ def main(argv=None):
     ap.add_argument("--traction", default=None, choices=["slices", "coulomb", "none"])
     ap.add_argument("--integrator", default=None, choices=["auto", "dopri5", "ros2w", "ros34w"])
     ap.add_argument("--tolerance", type=float, default=None, help="integrator tolerance (default: the case file)")
-    ap.add_argument("--n-slices", type=int, default=None, help="slices per contact ellipse (default: the case file)")
+    ap.add_argument("--n-slices", type=int, default=None, help="slices per contact ellipse, or Gauss nodes per "
+                    "stretch with --slice-rule gauss (default: the case file)")
+    ap.add_argument("--slice-rule", default=None, choices=["strips", "gauss"],
+                    help="traction quadrature (default: the case file's, strips)")
+    ap.add_argument("--vehicle-speed", type=float, default=None, help="hub case (b) at this vehicle speed [km/h] "
+                    "(default: the case file's 100 km/h)")
     ap.add_argument("--accuracy", action="store_true", help="compare with a DOPRI5 run at tolerance 1e-7")
     ap.add_argument("--cage-modes", type=int, default=0, help="elastic cages with this many modes each (default rigid)")
     ap.add_argument("--profile", action="store_true", help="cProfile the run")
@@ -235,10 +258,13 @@ def main(argv=None):
     dur = parse_quantity(a.duration, "time", "--duration") if a.duration else None
     for name in (["a", "b"] if a.case == "both" else [a.case]):
         keep = [] if a.accuracy else None
+        vs = a.vehicle_speed if name == "b" else None
         r = run(name, dur, a.traction, a.profile, a.integrator, a.tolerance, a.n_slices, keep, a.cage_modes,
-                a.threads)
+                a.threads, vs, a.slice_rule)
         print(f"case ({r['case']}) traction={r['traction']} integrator={r['integrator']} tol={r['tolerance']:g} "
-              f"n_slices={r['n_slices']} cage_modes={r['cage_modes']} threads={r['threads']}: "
+              f"n_slices={r['n_slices']} slice_rule={r['slice_rule']} "
+              + (f"vehicle_speed={vs:g} km/h " if vs is not None else "")
+              + f"cage_modes={r['cage_modes']} threads={r['threads']}: "
               f"{r['simulated_s'] * 1e3:.4g} ms simulated in "
               f"{r['wall_s']:.3g} s -> {r['wall_per_simulated_s']:.4g} wall s per simulated s "
               f"({r['cpu_per_simulated_s']:.4g} CPU s); "
@@ -247,7 +273,8 @@ def main(argv=None):
         if a.accuracy:
             import numpy as np
 
-            run(name, dur, a.traction, False, "dopri5", 1e-7, None, keep, a.cage_modes, a.threads)
+            run(name, dur, a.traction, False, "dopri5", 1e-7, None, keep, a.cage_modes, a.threads, vs,
+                a.slice_rule)
             test, ref = keep
             span = np.ptp(ref, axis=0) + 1e-30
             dev = np.abs(test - ref).max(axis=0) / span
