@@ -293,6 +293,28 @@ def periodicity_change(response_coef: np.ndarray) -> np.ndarray:
     return out
 
 
+def stationary_floor(response_coef: np.ndarray, change: np.ndarray, factor: float = 1.5) -> float:
+    """Scatter floor of the periodicity measure once the response is stationary [-]: ``factor`` × the median
+    Δ_k (:func:`periodicity_change`) over the last half of the cycles (k ≥ max(1, n // 2), at least 3 of them)
+    when the fitted mean's changes over those cycles are not all of one sign; 0 when they are (a drift is no
+    floor) or when there are too few cycles.
+
+    Why: a response that is periodic in the load only up to a ripple at a frequency the load's period does not
+    divide — the ball passage under a 1 Hz moment (≈ 9 passes per cycle at 10 km/h, in another phase each
+    cycle) — changes its fitted mean and fundamental from cycle to cycle by a stationary scatter that no
+    start-up decay goes below; a fixed tolerance under that scatter would never call the run periodic.  The
+    scatter enters the interval of W_H; a drift (one sign) would bias it and is not accepted as a floor.
+    """
+    n = len(change)
+    ks = np.arange(max(1, n // 2), n)
+    if len(ks) < 3:
+        return 0.0
+    d0 = response_coef[ks, 0] - response_coef[ks - 1, 0]
+    if np.all(d0 > 0) or np.all(d0 < 0):
+        return 0.0
+    return factor * float(np.median(change[ks]))
+
+
 def hysteresis_estimate(t, load, response, frequency: float, level: float, n_harmonics: int = 5,
                         min_cycles: int = 6, tolerance: float = 1e-3, first_cycle: int | None = None) -> LoopEstimate:
     """Loop width W_H, loop area, phase lag and compliance of ``response`` against a periodic ``load``.
@@ -309,9 +331,10 @@ def hysteresis_estimate(t, load, response, frequency: float, level: float, n_har
 
     Start-up (periodicity criterion): the measure Δ_k of :func:`periodicity_change` compares the fitted
     mean and fundamental of cycle k with those of cycle k − 1, relative to the fundamental's amplitude.
-    The first cycle used is the first k ≥ 1 with Δ_k ≤ ``tolerance`` and Δ_{k+1} ≤ ``tolerance``
-    (two successive changes, so that one chance agreement during a transient does not count); cycle 0
-    (the start) is never used.  Why 10⁻³: a drift δ of the mean over a cycle biases W_H by about
+    The first cycle used is the first k ≥ 1 with Δ_k ≤ τ and Δ_{k+1} ≤ τ (two successive changes, so that
+    one chance agreement during a transient does not count), τ = max(``tolerance``, the stationary scatter
+    floor of :func:`stationary_floor`: 1.5 × the median Δ of the last half of the cycles unless the mean
+    drifts); cycle 0 (the start) is never used.  Why 10⁻³: a drift δ of the mean over a cycle biases W_H by about
     δ (θ_f − θ_r)/2π (a ramp in the fitted window), i.e. δ/3 at 0.3 of a 0.6 kN·m sine; at the hub's
     |Γ1| ≈ 0.06 ° a change of 10⁻³|Γ1| is ≈ 0.02·10⁻³ ° of W_H, below the loops studied (≈ 0.1·10⁻³ °).
     ``first_cycle`` overrides the criterion.
@@ -353,12 +376,16 @@ def hysteresis_estimate(t, load, response, frequency: float, level: float, n_har
     cr = fit_cycles(t, response, frequency, n_harmonics)
     n = len(cr)
     change = periodicity_change(cr) if n else np.zeros(0)
+    floor = stationary_floor(cr, change) if n else 0.0
+    tau = max(tolerance, floor)
     criterion = (f"cycle k is used from the first k ≥ 1 where the fitted mean and fundamental of the response "
-                 f"change from cycle k−1 to k and from k to k+1 by ≤ {tolerance:g} × the fundamental's amplitude "
-                 f"(harmonics 0…{n_harmonics} of {frequency:g} Hz fitted per cycle)")
+                 f"change from cycle k−1 to k and from k to k+1 by ≤ {tau:.3g} × the fundamental's amplitude "
+                 f"(harmonics 0…{n_harmonics} of {frequency:g} Hz fitted per cycle; the larger of {tolerance:g} "
+                 f"and the stationary scatter floor {floor:.3g}: 1.5 × the median change of the last half of "
+                 "the cycles, 0 when the mean drifts)")
     periodic_from = n
     for k in range(1, n):
-        if change[k] <= tolerance and (k + 1 >= n or change[k + 1] <= tolerance):
+        if change[k] <= tau and (k + 1 >= n or change[k + 1] <= tau):
             periodic_from = k
             break
     if first_cycle is not None:
