@@ -40,16 +40,14 @@ CASES = {"a": ROOT / "examples" / "spindle-7011.toml", "b": ROOT / "examples" / 
 
 def load_bench_case(name: str, vehicle_speed: float | None = None, slice_rule: str | None = None):
     """The case file of ``name``, with the hub's shaft speed for a vehicle speed [km/h] (the study's tyre,
-    :func:`bearingsim.studies.hub_static.vehicle_speed_to_shaft`) and the traction quadrature rule replaced."""
-    import math
-
+    :func:`bearingsim.studies.hub_static.shaft_speed_entry`) and the traction quadrature rule replaced."""
     from bearingsim.dynamics.case import case_from_dict
     from bearingsim.io import read_toml
-    from bearingsim.studies.hub_static import vehicle_speed_to_shaft
+    from bearingsim.studies.hub_static import shaft_speed_entry
 
     data = read_toml(CASES[name], "case")
     if vehicle_speed is not None:
-        data["speed"] = f"{vehicle_speed_to_shaft(vehicle_speed) * 30 / math.pi!r} rpm"
+        data["speed"] = shaft_speed_entry(vehicle_speed)
     if slice_rule is not None:
         data["slice_rule"] = slice_rule
     return case_from_dict(data, base=CASES[name].parent)

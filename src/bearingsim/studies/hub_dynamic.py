@@ -53,7 +53,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
-from .hub_static import TYRE_RADIUS, vehicle_speed_to_shaft
+from .hub_static import TYRE_RADIUS, shaft_speed_entry, vehicle_speed_to_shaft  # noqa: F401 (tests, scripts)
 
 #: [S1] Fig. 9, W_H [1e-3 deg] by (vehicle speed [km/h], load frequency [Hz]); our reading (module docstring)
 SEED_FIG9 = {(10, 50): 6.7, (50, 50): 4.2, (100, 50): 0.9,
@@ -123,7 +123,7 @@ def cell_case(case_data: dict, base: Path | None, speed_kmh: float, frequency_hz
     from ..units import file_input, parse_quantity
 
     d = copy.deepcopy(case_data)
-    d["speed"] = f"{vehicle_speed_to_shaft(speed_kmh) * 30 / math.pi!r} rpm"
+    d["speed"] = shaft_speed_entry(speed_kmh)
     loads = d.get("loads") or {}
     if not any(isinstance(v, (dict, list)) for v in loads.values()):
         raise InputError("loads", "no load channel varies in time", "give the moment as a sine, e.g. mz = "

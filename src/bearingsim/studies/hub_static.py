@@ -54,6 +54,11 @@ def vehicle_speed_to_shaft(v_kmh: float, tyre_radius: float = TYRE_RADIUS) -> fl
     return v_kmh / 3.6 / tyre_radius
 
 
+def shaft_speed_entry(v_kmh: float) -> str:
+    """The case-file ``speed`` entry (full precision, in rpm) of the shaft at vehicle speed v [km/h]."""
+    return f"{vehicle_speed_to_shaft(v_kmh) * 30 / math.pi!r} rpm"
+
+
 @dataclass
 class HubStaticResult:
     """Tilt–moment curve of the hub unit (SI)."""
