@@ -71,8 +71,9 @@ def test_two_threads_give_the_one_thread_result_bit_for_bit(tmp_path):
 
 def test_thread_count_is_checked():
     assert resolve_threads(1) == 1
-    assert resolve_threads(None) == 1  # serial by default: 2 threads did not pay on 2 cores (stepper.Stepper.threads)
-    for bad in (0, -1, 10_000, 1.5, True):
+    assert resolve_threads(None) == 1  # the library stays serial by default (stepper.Stepper.threads)
+    assert resolve_threads("auto") == 1  # the idle cores, capped by NUMBA_NUM_THREADS = 1 in the suite (conftest)
+    for bad in (0, -1, 10_000, 1.5, True, "many"):
         with pytest.raises(InputError, match="threads"):
             resolve_threads(bad)
 
@@ -109,3 +110,31 @@ def test_serial_loop_is_the_per_ball_function_written_out():
 
     assert norm(copy) == norm(body)
     assert len(norm(body)) > 80
+
+
+def test_idle_cores_counts_only_cores_the_others_leave(monkeypatch):
+    """--threads auto: the cores this process may use less the one-minute load, rounded, within 1..NUMBA_NUM_THREADS
+    (the OpenMP layer's spinning threads cost several times the work on busy cores: forces.py)."""
+    import os
+
+    import numba
+
+    from bearingsim.dynamics import stepper
+
+    monkeypatch.setattr(numba.config, "NUMBA_NUM_THREADS", 16)
+    monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(8)))
+    for load, want in ((0.0, 8), (0.4, 8), (0.6, 7), (3.2, 5), (7.9, 1), (40.0, 1)):
+        monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, load, load))
+        assert stepper.idle_cores() == want, (load, stepper.idle_cores())
+    monkeypatch.setattr(numba.config, "NUMBA_NUM_THREADS", 2)
+    monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
+    assert stepper.idle_cores() == 2
+
+
+def test_cli_rejects_a_word_for_the_thread_count_in_one_line(tmp_path):
+    r = subprocess.run(["bearingsim", "simulate", str(ROOT / "examples" / "spindle-7011.toml"), "--out",
+                        str(tmp_path / "x.nc"), "--threads", "lots", "--quiet"], capture_output=True, text=True,
+                       timeout=300)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and "--threads" in lines[0] and "auto" in lines[0], r.stderr

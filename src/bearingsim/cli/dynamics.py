@@ -28,9 +28,9 @@ def simulate(case: CaseArg,
                                                     help="override the case duration, e.g. '2 ms'"),
              json_out: bool = typer.Option(False, "--json", help="print a JSON summary (SI)"),
              quiet: bool = typer.Option(False, "--quiet", help="no progress bar"),
-             threads: Optional[int] = typer.Option(
-                 None, "--threads", help="threads for the ball contacts (default 1; at most NUMBA_NUM_THREADS, "
-                 "the cores); the result is the same bit for bit")):
+             threads: str = typer.Option(
+                 "auto", "--threads", help="threads for the ball contacts: a count (at most NUMBA_NUM_THREADS) or "
+                 "auto, the idle cores (default); the result is the same bit for bit")):
     """Run a dynamic simulation of rings, balls and cage in time."""
     import dataclasses
 
@@ -55,7 +55,7 @@ def simulate(case: CaseArg,
     announce_compilation()
     with writing("--out", out):  # a full disk while streaming: one line; the checkpoint (if any) allows --resume
         res = run_sim(c, out=out, resume=resume, progress=not (quiet or json_out), console=con,
-                      checkpoint_seconds=every, threads=threads)
+                      checkpoint_seconds=every, threads=_thread_count(threads))
     summary = dict(res.summary)
     summary["output"] = str(out)
     try:
@@ -67,7 +67,8 @@ def simulate(case: CaseArg,
     else:
         con.print(f"wrote {out}: {summary['simulated_seconds'] * 1e3:.4g} ms simulated in "
                   f"{summary['wall_seconds']:.3g} s ({summary['wall_per_simulated_second']:.4g} wall s per "
-                  f"simulated s, {summary['steps']} steps)")
+                  f"simulated s, {summary['steps']} steps, {summary['threads']} "
+                  + ("thread)" if summary['threads'] == 1 else "threads)"))
         ss = summary.get("steady_state")
         if ss:
             con.print(f"last half of the run: heat {ss['heat_generation_total_W']:.4g} W (ball-inner "
@@ -88,3 +89,17 @@ def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None
 
 
 __all__ = ["register", "simulate"]
+
+
+def _thread_count(text: str):
+    """``--threads``: "auto" or a whole number (the range is checked by :func:`.stepper.resolve_threads`)."""
+    from ..errors import InputError
+
+    t = text.strip()
+    if t.lower() == "auto":
+        return "auto"
+    try:
+        return int(t)
+    except ValueError:
+        raise InputError("--threads", f"must be a whole number or auto, got {text!r}",
+                         "e.g. --threads 1 for one core") from None

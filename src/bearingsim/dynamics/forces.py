@@ -190,12 +190,17 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
     dy[o + 8] = mb[2] / jb
 
 
-# numba's threading layer: "workqueue" unless the user chose one (NUMBA_THREADING_LAYER).  It ships with every
-# numba wheel (omp needs libgomp, tbb the tbb package), and on a shared, oversubscribed machine it measured
-# 0.44 ms per hub right-hand side on 2 threads against 1.9 ms for omp, whose idle threads spin (load 14 on
-# 2 cores, issue 14).  Set before the first parallel region runs; the result does not depend on it.
+# numba's threading layer: OpenMP first, else workqueue, unless the user chose one (NUMBA_THREADING_LAYER).
+# A right-hand side is ≈ 90 µs of work split once per call, so the layer's wake-up decides: on this idle 2-core
+# machine, hub case (b), 20 ms, 2 threads: omp 110 wall s per simulated s against 171 on one thread, workqueue
+# 310 (it wakes sleeping threads for every call; omp's threads spin briefly between calls).  Spinning threads
+# are the wrong choice on an oversubscribed machine (load 14 on 2 cores: 1.9 ms per call against 0.44 for
+# workqueue), which is why the CLI's default thread count counts only idle cores (stepper.resolve_threads).
+# omp needs libgomp (on every Linux with gcc); without it numba falls back to workqueue.  Set before the first
+# parallel region runs; the result does not depend on it (bit for bit).
 if "NUMBA_THREADING_LAYER" not in os.environ:
-    numba.config.THREADING_LAYER = "workqueue"
+    numba.config.THREADING_LAYER = "default"
+    numba.config.THREADING_LAYER_PRIORITY = ["omp", "workqueue", "tbb"]
 
 
 @njit(cache=True, parallel=True)

@@ -108,9 +108,9 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     console : a ``rich`` console for the progress bar and notes
     checkpoint_seconds : wall-clock interval between checkpoints [s] (default: the case's
         ``checkpoint_every = "… s"``, else :data:`CHECKPOINT_SECONDS`)
-    threads : threads for the ball contacts of the right-hand side (None: 1; at most
-        NUMBA_NUM_THREADS; the trajectory is the same bit for bit for any count; serial by default
-        because the threads did not pay on 2 cores, :attr:`Stepper.threads`)
+    threads : threads for the ball contacts of the right-hand side (None: 1; ``"auto"``: the idle cores,
+        :func:`.stepper.idle_cores`; at most NUMBA_NUM_THREADS; the trajectory is the same bit for bit for any
+        count; serial by default so that runs in parallel processes do not oversubscribe, :attr:`Stepper.threads`)
 
     Returns :class:`Results`.  On a diverging step or when every ball has separated
     the data so far are saved and :class:`SimulationError` is raised.
@@ -250,6 +250,7 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
         _checkpoint_tmp(ckpt).unlink(missing_ok=True)  # (nor one half-saved when an earlier run was killed)
     wall = time.perf_counter() - t_wall0
     summary = {"wall_seconds": wall, "simulated_seconds": stepper.t - t_sim0, "steps": stepper.steps,
+               "threads": stepper.threads,
                "rejected_steps": stepper.rejected,
                "wall_per_simulated_second": wall / max(stepper.t - t_sim0, 1e-30),
                "initial_static_converged": bool(static.converged)}

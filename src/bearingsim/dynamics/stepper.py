@@ -11,6 +11,7 @@ packs the output quantities (:func:`sample_from`), named as in :data:`.output.VA
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numba
@@ -59,11 +60,11 @@ class Stepper:
     jac_every: int = 20  #: steps between Jacobian refreshes (also after two rejections in a row)
     ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
     max_steps_per_interval: int = 10_000_000
-    #: threads for the ball contacts of the right-hand side (None or 1: serial; up to NUMBA_NUM_THREADS).  The
-    #: result is the same bit for bit (:func:`.forces.balls_on_raceways`).  Serial by default: on this 2-core
-    #: machine 2 threads ran the hub case at 206–252 wall s per simulated s against 142–146 on one (numba's
-    #: workqueue layer wakes its threads for every right-hand side, ~50 µs against ~100–300 µs of work; the omp
-    #: layer was far slower still), so the threads do not pay at this grain (issue 14).
+    #: threads for the ball contacts of the right-hand side (None or 1: serial; up to NUMBA_NUM_THREADS; "auto":
+    #: :func:`idle_cores`, the CLI's default).  The result is the same bit for bit
+    #: (:func:`.forces.balls_on_raceways`).  The library's default stays serial (a caller running several cases
+    #: in processes, as the hub study does, must not oversubscribe the cores); with the OpenMP layer 2 threads ran
+    #: the hub case at 110 wall s per simulated s against 171 on one on this idle 2-core machine (issue 14).
     threads: int | None = None
     steps: int = 0
     rejected: int = 0
@@ -136,15 +137,38 @@ class Stepper:
 
 
 def resolve_threads(threads) -> int:
-    """The thread count of a run: None → 1 (serial, :attr:`Stepper.threads`); else an integer in
-    1..NUMBA_NUM_THREADS (InputError otherwise)."""
+    """The thread count of a run: None → 1 (serial, :attr:`Stepper.threads`); ``"auto"`` → :func:`idle_cores`;
+    else an integer in 1..NUMBA_NUM_THREADS (InputError otherwise)."""
     top = numba.config.NUMBA_NUM_THREADS
     if threads is None:
         return 1
+    if isinstance(threads, str) and threads.strip().lower() == "auto":
+        return idle_cores()
     if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 1 <= threads <= top:
-        raise InputError("threads", f"must be an integer in 1..{top} (NUMBA_NUM_THREADS), got {threads!r}",
+        raise InputError("threads", f"must be an integer in 1..{top} (NUMBA_NUM_THREADS) or auto, got {threads!r}",
                          "e.g. --threads 1 for one core; set NUMBA_NUM_THREADS for more")
     return int(threads)
+
+
+def idle_cores() -> int:
+    """Threads for ``--threads auto`` (the CLI's default): the cores this process may run on
+    (``os.sched_getaffinity``) less the one-minute load average (the others' work), rounded to the nearest
+    core, at least 1 and at most NUMBA_NUM_THREADS (1 in the test suite, tests/conftest.py).  The OpenMP
+    layer's threads spin between right-hand sides: on idle cores that is what makes them pay, on busy ones it
+    costs several times the work (forces.py, issue 14), so a loaded machine gets fewer threads.  The
+    trajectory is the same for any count."""
+    import os
+
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):  # (not on every platform)
+        cores = os.cpu_count() or 1
+    try:
+        busy = os.getloadavg()[0]
+    except (AttributeError, OSError):
+        busy = 0.0
+    free = int(math.floor(cores - busy + 0.5))
+    return max(1, min(free, cores, numba.config.NUMBA_NUM_THREADS))
 
 
 def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: np.ndarray) -> dict:
