@@ -21,13 +21,16 @@ class _CompileNote:
     """numba listener: says once, on stderr, that kernels are being compiled (a cache miss: first run after an
     install or a change of the kernels), with a count on a terminal, and how long it took at the end.  Only
     bearingsim's kernels are counted (numba compiles some of its own helpers inside them); kernels without
-    ``cache=True`` are counted apart, since they compile on every run."""
+    ``cache=True`` are counted apart, since they compile on every run — unless they are compiled inside a cached
+    kernel (the integrators inside their cached specialisations, :mod:`bearingsim.dynamics.integrate.specialised`),
+    whose disk cache holds them: the next run loads that kernel and compiles neither."""
 
     HEAD = "compiling numerical kernels"
 
     def __init__(self):
         self.cached = 0
         self.uncached = 0
+        self.inside = 0  #: cached kernels being compiled now (a kernel compiled inside one is cached with it)
         self.t0 = None
         self.tty = False
 
@@ -95,12 +98,16 @@ def announce_compilation() -> None:
         def on_start(self, ev):
             k = kernel(ev)
             if k is not None:
-                note.start(*k)
+                name, cached = k
+                note.start(name, cached or note.inside > 0)
+                note.inside += cached
 
         def on_end(self, ev):
             k = kernel(ev)
             if k is not None:
-                note.end(k[1])
+                cached = k[1]
+                note.inside -= cached
+                note.end(cached or note.inside > 0)
 
     event.register("numba:compile", _Listener())
     _NOTE = note

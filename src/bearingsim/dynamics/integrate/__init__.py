@@ -1,17 +1,19 @@
 """Time integrators of the dynamic engine, in the shape of scipy's ``integrate._ivp``.
 
-=================  =====================================================================
-:mod:`.base`       the contract: :class:`Workspace` and ``advance(workspace, t_end) -> status``
-:mod:`.common`     status codes (:class:`Status`, :data:`STATUS_TEXT`), error norm, step-size
-                   control, step clipping
-:mod:`.dopri5`     DOPRI5, explicit Runge–Kutta 5(4) — the default without traction or with the
-                   Coulomb stand-in
-:mod:`.ros2`       ROS2, second-order W-method (per-ball block Jacobian)
-:mod:`.ros34pw2`   ROS34PW2, third-order W-method — the default with the lubricated traction
-                   kernel, with the inner ring's block and its coupling with the balls in J
-:mod:`.jacobian`   finite-difference Jacobians of the W-methods
-:mod:`.linalg`     W = I − γhJ: per-ball block inverses and the arrowhead (Schur complement) solve
-=================  =====================================================================
+=====================  =====================================================================
+:mod:`.base`           the contract: :class:`Workspace` and ``advance(workspace, t_end) -> status``
+:mod:`.common`         status codes (:class:`Status`, :data:`STATUS_TEXT`), error norm, step-size
+                       control, step clipping
+:mod:`.dopri5`         DOPRI5, explicit Runge–Kutta 5(4) — the default without traction or with the
+                       Coulomb stand-in
+:mod:`.ros2`           ROS2, second-order W-method (per-ball block Jacobian)
+:mod:`.ros34pw2`       ROS34PW2, third-order W-method — the default with the lubricated traction
+                       kernel, with the inner ring's block and its coupling with the balls in J
+:mod:`.jacobian`       finite-difference Jacobians of the W-methods
+:mod:`.linalg`         W = I − γhJ: per-ball block inverses and the arrowhead (Schur complement) solve
+:mod:`.specialised`    the methods' kernels specialised for the engine's right-hand sides
+                       (``forces.rhs_args``, ``rhs_args_threaded``), cached on disk
+=====================  =====================================================================
 
 Every method: ``METHODS[name].advance(ws, t_end)`` integrates a :class:`Workspace` to exactly t_end
 and returns a :class:`Status`; the numba kernel behind it is ``METHODS[name].integrate(...)``.

@@ -10,11 +10,11 @@ with the lubricated kernel, traction creep makes the problem stiff (eigenvalue
 ROS34PW2 (:mod:`.ros34pw2`) takes much longer steps (docs/dynamics.md).  An unstable step shows up
 as a large error estimate and is rejected, so DOPRI5 stays correct there, only slow.
 
-Compilation: the kernels that take the right-hand side as an argument (``stages``, ``integrate`` here,
-and those of the W-methods) are not cached by numba (``cache=True`` is unreliable for functions that
-take another jitted function as an argument), so each process compiles them once; the step control,
-error norm and linear algebra they call (:mod:`.common`, :mod:`.linalg`) and the right-hand sides are
-cached on disk.
+Compilation: numba does not cache on disk the kernels that take the right-hand side as an argument
+(``stages``, ``integrate`` here, and those of the W-methods), so a process that calls them compiles them
+once; ``advance`` on the engine's own right-hand sides calls their specialisations of :mod:`.specialised`
+instead, which are cached (with them compiled inside).  The step control, error norm and linear algebra
+(:mod:`.common`, :mod:`.linalg`) and the right-hand sides are cached on disk too.
 """
 
 from __future__ import annotations
@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .base import Workspace
+from .base import Workspace, engine_kernel
 from .common import (
     MAX_STEPS,
     NOT_FINITE,
@@ -159,7 +159,13 @@ def fixed_steps(fun, args, t, y, h, nsteps):
 
 
 def advance(ws: Workspace, t_end: float) -> Status:
-    """Integrate the workspace to t_end [s] with DOPRI5 (the contract of :mod:`.base`)."""
-    status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
-                             ws.max_steps, ws.info)
+    """Integrate the workspace to t_end [s] with DOPRI5 (the contract of :mod:`.base`; the engine's right-hand
+    sides run the cached kernel of :mod:`.specialised`, the same code)."""
+    kernel = engine_kernel("dopri5", ws.fun)
+    if kernel is not None:
+        status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
+                              ws.info)
+    else:
+        status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
+                                 ws.max_steps, ws.info)
     return ws.finish(status, t, h)

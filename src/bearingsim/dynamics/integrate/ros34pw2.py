@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .base import Workspace, ros34_workspace
+from .base import Workspace, engine_kernel, ros34_workspace
 from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm, pi_factor, reject_factor
 from .jacobian import block_jac, ring_jac, ring_rows
 from .linalg import NR, coupled_w, j_times, no_coupling, w_inverse, w_solve
@@ -233,9 +233,16 @@ def fixed_steps(fun, args, t, y, h, nsteps, blk, nbk):
 
 def advance(ws: Workspace, t_end: float) -> Status:
     """Integrate the workspace to t_end [s] with ROS34PW2 (the contract of :mod:`.base`); the Jacobian
-    lives in ``ws.jacobian`` (made here on first use)."""
+    lives in ``ws.jacobian`` (made here on first use).  The engine's right-hand sides run the cached kernel of
+    :mod:`.specialised` (the same code)."""
     if ws.jacobian is None:
         ws.jacobian = ros34_workspace(ws.blk.shape[0], ws.nbk, ws.rmass.shape[0] == 5)
-    status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
-                             ws.max_steps, ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass)
+    kernel = engine_kernel("ros34pw2", ws.fun)
+    if kernel is not None:
+        status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
+                              ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass)
+    else:
+        status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
+                                 ws.max_steps, ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass,
+                                 ws.bmass)
     return ws.finish(status, t, h)

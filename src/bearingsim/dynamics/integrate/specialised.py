@@ -1,0 +1,164 @@
+"""The integrators specialised for the engine's two right-hand sides, cached on disk.
+
+The generic kernels (``dopri5.integrate``, ``ros2.integrate``, ``ros34pw2.integrate``) take the right-hand
+side as an argument; numba does not cache such a function on disk, so each process compiled them again
+(~7 s of CPU for the hub case, most of a short ``bearingsim simulate``).  The kernels here call the generic
+ones with :func:`bearingsim.dynamics.forces.rhs_args` or :func:`~bearingsim.dynamics.forces.rhs_args_threaded`
+named as a module global and take no function argument, so numba caches them, the generic kernels compiled
+inside them included: from the second process on they are loaded, not compiled.  They compile to the very
+same code as the generic kernel called with that right-hand side (the same results bit for bit).  Every
+method's ``advance(ws, t_end)`` picks the kernel here when ``ws.fun`` is one of the two
+(:func:`.base.engine_kernel`) and the generic kernel for any other right-hand side (the tests' own).
+
+Cache invalidation: numba checks a cached function against its own source file only, not against the
+functions it calls, so these kernels (which hold compiled copies of the integrators, of the right-hand side
+and of the contact kernels) would run stale code after an edit of ``forces.py`` or of an integrator module.
+Their cache stamp therefore also holds :func:`sources_digest`, a hash of every module of the kernel packages
+(``contact``, ``statics``, ``dynamics``; those of ``bearingsim._KERNEL_PACKAGES``): an edit of any of them
+compiles these kernels again (once, ~10 s), an unchanged install loads them.  When they are compiled again,
+numba takes the right-hand side from its own cache (``cache=True`` in forces.py, checked against forces.py
+alone): an edit of contacts.py or contact/slices.py alone still leaves ``forces.rhs_args`` stale, as it did
+before these kernels existed (clear the ``__pycache__`` numba files after such an edit).  The stamp goes
+through numba's cache-locator interface (``numba.core.caching``, not a public API): if that ever fails, the
+kernels are compiled per process again (correct, only slower); ``tests/unit/test_integrator_cache.py``
+notices it.
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+import os
+
+from numba import njit
+
+from .. import forces
+from . import dopri5, ros2, ros34pw2
+
+#: the packages (folders of bearingsim) whose modules the cached kernels can hold compiled code of (every
+#: module there counts, so that no dependency is missed: global constants such as the layout indices too)
+KERNEL_PACKAGES = ("contact", "statics", "dynamics")
+#: src/bearingsim
+PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+_DIGEST: str | None = None
+
+
+def kernel_sources(root: str = PACKAGE_DIR) -> list[str]:
+    """The modules of :data:`KERNEL_PACKAGES` under ``root`` (paths relative to it, with ``/``, sorted)."""
+    files = []
+    for pkg in KERNEL_PACKAGES:
+        for folder, dirs, names in os.walk(os.path.join(root, pkg)):
+            dirs[:] = [d for d in dirs if d != "__pycache__"]
+            files += [os.path.relpath(os.path.join(folder, n), root).replace(os.sep, "/")
+                      for n in names if n.endswith(".py")]
+    return sorted(files)
+
+
+def sources_digest(root: str | None = None) -> str:
+    """sha256 of the path and content of every module of :func:`kernel_sources` (of the installed package when
+    ``root`` is None, computed once per process: ~1 ms)."""
+    global _DIGEST
+    if root is None and _DIGEST is not None:
+        return _DIGEST
+    h = hashlib.sha256()
+    for rel in kernel_sources(root or PACKAGE_DIR):
+        with open(os.path.join(root or PACKAGE_DIR, rel), "rb") as fh:
+            h.update(rel.encode() + b"\0" + hashlib.sha256(fh.read()).digest())
+    if root is None:
+        _DIGEST = h.hexdigest()
+        return _DIGEST
+    return h.hexdigest()
+
+
+@functools.lru_cache(maxsize=1)
+def _sources_cache_class():
+    """numba's FunctionCache with the source stamp (the freshness check of the cache index) extended by
+    :func:`sources_digest`; a stamp that differs drops the index, so the kernel is compiled again."""
+    from numba.core.caching import CompileResultCacheImpl, FunctionCache
+
+    class _StampedLocator:
+        """numba's cache locator for the function, with the kernel packages' digest in its source stamp."""
+
+        def __init__(self, locator):
+            self._locator = locator
+
+        def get_source_stamp(self):
+            return self._locator.get_source_stamp(), sources_digest()
+
+        def __getattr__(self, name):
+            return getattr(self._locator, name)
+
+    class _Impl(CompileResultCacheImpl):
+        def __init__(self, py_func):
+            super().__init__(py_func)
+            self._locator = _StampedLocator(self._locator)
+
+    class KernelSourcesCache(FunctionCache):
+        _impl_class = _Impl
+
+    return KernelSourcesCache
+
+
+def _cached(func):
+    """``njit`` with the disk cache of :func:`_sources_cache_class` (no cache if numba's interface changed)."""
+    disp = njit(func)
+    try:
+        disp._cache = _sources_cache_class()(disp.py_func)
+    except Exception:  # noqa: BLE001 - never stop an import over a cache: compiled per process instead
+        pass
+    return disp
+
+
+# ---- DOPRI5 ------------------------------------------------------------------------------------------------
+@_cached
+def dopri5_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
+    """:func:`.dopri5.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
+    return dopri5.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info)
+
+
+@_cached
+def dopri5_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
+    """:func:`.dopri5.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
+    return dopri5.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info)
+
+
+# ---- ROS2 --------------------------------------------------------------------------------------------------
+@_cached
+def ros2_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every):
+    """:func:`.ros2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
+    return ros2.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk,
+                          jac_every)
+
+
+@_cached
+def ros2_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every):
+    """:func:`.ros2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
+    return ros2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk,
+                          nbk, jac_every)
+
+
+# ---- ROS34PW2 (without the profiling statistics of bench_dynamics --steps, which calls the generic kernel) ---
+@_cached
+def ros34_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass, bmass):
+    """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
+    return ros34pw2.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk,
+                              jac_every, ws, rmass, bmass)
+
+
+@_cached
+def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass,
+                   bmass):
+    """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
+    return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
+                              blk, nbk, jac_every, ws, rmass, bmass)
+
+
+#: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel
+KERNELS = {
+    ("dopri5", "serial"): dopri5_serial,
+    ("dopri5", "threaded"): dopri5_threaded,
+    ("ros2", "serial"): ros2_serial,
+    ("ros2", "threaded"): ros2_threaded,
+    ("ros34pw2", "serial"): ros34_serial,
+    ("ros34pw2", "threaded"): ros34_threaded,
+}
