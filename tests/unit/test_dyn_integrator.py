@@ -193,7 +193,8 @@ def test_arrowhead_w_solve_and_product_equal_the_dense_ones():
     winv = np.zeros((nb, nbk, nbk))
     q = np.zeros((nb, nbk, ig.NR))
     sinv = np.zeros((ig.NR, ig.NR))
-    ig._coupled_w(jac, jrr, jbr, jrb, hs, g, winv, np.zeros((nbk, nbk)), q, sinv, np.zeros((ig.NR, ig.NR)))
+    ig._coupled_w(jac, jrr, jbr, jrb, hs, g, winv, np.zeros((nbk, nbk)), q, sinv, np.zeros((ig.NR, ig.NR)),
+                  np.zeros((nb, ig.NR, ig.NR)))
     v = rng.normal(size=n)
     out = np.zeros(n)
     ig._coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, np.zeros((nb, nbk)), np.zeros(ig.NR))

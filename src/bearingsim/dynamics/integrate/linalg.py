@@ -17,7 +17,7 @@ W x = v with them in O(n_balls) work.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from ..layout import N_RING
 
@@ -131,36 +131,63 @@ def w_inverse(jac, hs, g, winv, wm):
 
 
 @njit(cache=True)
-def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr):
+def _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb):
+    """Ball b's part of :func:`coupled_w` (c = −g hs): winv[b] = W_bb⁻¹, q[b] = Q_b = W_bb⁻¹ W_br and
+    sb = W_rb Q_b (its term of the Schur complement), with wm a 9 × 9 work array."""
+    nbk = jac.shape[1]
+    for i in range(nbk):
+        for j in range(nbk):
+            wm[i, j] = c * jac[b, i, j]
+        wm[i, i] += 1.0
+    invert_small(wm, winv[b])
+    for i in range(nbk):
+        for j in range(NR):
+            acc = 0.0
+            for k in range(nbk):
+                acc += winv[b, i, k] * c * jbr[b, k, j]
+            q[b, i, j] = acc
+    for i in range(NR):
+        for j in range(NR):
+            acc = 0.0
+            for k in range(nbk):
+                acc += c * jrb[b, i, k] * q[b, k, j]
+            sb[i, j] = acc
+
+
+@njit(cache=True)
+def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr, sb):
     """Arrowhead W = I − g hs J with ring block, ball blocks and ring–ball coupling: ball block
     inverses winv, Q_b = W_bb⁻¹ W_br, and the inverse of the ring's Schur complement
-    S = W_rr − Σ_b W_rb Q_b."""
+    S = W_rr − Σ_b W_rb Q_b (the balls' terms subtracted in ball order).  sb: (n_balls, NR, NR) work."""
     nb = jac.shape[0]
-    nbk = jac.shape[1]
     c = -g * hs
     for b in range(nb):
-        for i in range(nbk):
-            for j in range(nbk):
-                wm[i, j] = c * jac[b, i, j]
-            wm[i, i] += 1.0
-        invert_small(wm, winv[b])
+        _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb[b])
+    _schur_inverse(jrr, c, sb, sinv, srr)
+
+
+@njit(cache=True, parallel=True)
+def coupled_w_threaded(jac, jrr, jbr, jrb, hs, g, winv, wmb, q, sinv, srr, sb):
+    """:func:`coupled_w` with the balls on ``numba.get_num_threads()`` threads (wmb: a 9 × 9 work array per
+    ball); the Schur complement is summed serially in ball order, so the result is the same bit for bit."""
+    nb = jac.shape[0]
+    c = -g * hs
+    for b in prange(nb):
+        _coupled_w_ball(b, jac, jbr, jrb, c, winv, wmb[b], q, sb[b])
+    _schur_inverse(jrr, c, sb, sinv, srr)
+
+
+@njit(cache=True)
+def _schur_inverse(jrr, c, sb, sinv, srr):
+    """sinv = S⁻¹, S = I + c J_rr − Σ_b sb[b] (subtracted in ball order); srr is overwritten."""
     for i in range(NR):
         for j in range(NR):
             srr[i, j] = c * jrr[i, j]
         srr[i, i] += 1.0
-    for b in range(nb):
-        for i in range(nbk):
-            for j in range(NR):
-                acc = 0.0
-                for k in range(nbk):
-                    acc += winv[b, i, k] * c * jbr[b, k, j]
-                q[b, i, j] = acc
+    for b in range(sb.shape[0]):
         for i in range(NR):
             for j in range(NR):
-                acc = 0.0
-                for k in range(nbk):
-                    acc += c * jrb[b, i, k] * q[b, k, j]
-                srr[i, j] -= acc
+                srr[i, j] -= sb[b, i, j]
     invert_small(srr, sinv)
 
 

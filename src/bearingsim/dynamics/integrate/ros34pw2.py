@@ -23,7 +23,7 @@ from numba import njit
 from .base import Workspace, engine_kernel, ros34_workspace
 from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm, pi_factor, reject_factor
 from .jacobian import block_jac, ring_jac, ring_rows
-from .linalg import NR, coupled_w, j_times, no_coupling, w_inverse, w_solve
+from .linalg import NR, coupled_w, coupled_w_threaded, j_times, no_coupling, w_inverse, w_solve
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
 R34_G = 0.435866521508459
@@ -84,7 +84,7 @@ def stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft,
 
 @njit
 def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
-              rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0)):
+              rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False):
     """ROS34PW2 from t to t_end in place (module docstring).
 
     ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
@@ -94,7 +94,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     4 right-hand sides per step.  Same other arguments and return values as :func:`.dopri5.integrate`.
     ``stats`` (profiling: ``benchmarks/bench_dynamics.py --steps``): when it holds 2n floats, every attempted
     step adds each component's squared scaled error to stats[i] and 1 to stats[n + i] of its largest component
-    (the results do not change).
+    (the results do not change).  ``threaded``: W's ball blocks formed on ``numba.get_num_threads()`` threads
+    (:func:`.linalg.coupled_w_threaded`, the same result bit for bit; 33 µs per step size serially on the hub
+    case, issue 14).
     """
     n = y.shape[0]
     nb = blk.shape[0]
@@ -119,6 +121,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     qm = np.zeros((nc, nbk, NR))
     sinv = np.zeros((NR, NR))
     srr = np.zeros((NR, NR))
+    sb = np.zeros((nc, NR, NR))
+    wmb = np.zeros((nc if threaded else 0, nbk, nbk))
     zb = np.zeros((nc, nbk))
     rr = np.zeros(NR)
     # the coupling's arrays, or empty ones (then W and J are the per-ball blocks alone)
@@ -150,7 +154,10 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             h_w = -1.0
         if hs != h_w:
             if coupled:
-                coupled_w(jac, jrr, jbr, jrb, hs, R34_G, winv, wm, qm, sinv, srr)
+                if threaded:
+                    coupled_w_threaded(jac, jrr, jbr, jrb, hs, R34_G, winv, wmb, qm, sinv, srr, sb)
+                else:
+                    coupled_w(jac, jrr, jbr, jrb, hs, R34_G, winv, wm, qm, sinv, srr, sb)
             else:
                 w_inverse(jac, hs, R34_G, winv, wm)
             h_w = hs

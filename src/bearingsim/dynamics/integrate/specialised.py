@@ -30,6 +30,7 @@ import functools
 import hashlib
 import os
 
+import numpy as np
 from numba import njit
 
 from .. import forces
@@ -150,7 +151,7 @@ def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                    bmass):
     """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
     return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
-                              blk, nbk, jac_every, ws, rmass, bmass)
+                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True)
 
 
 #: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel
