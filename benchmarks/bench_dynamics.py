@@ -2,7 +2,7 @@
 
 Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 20 ms;
 (b) examples/hub-moment-50hz.toml — seed-001 hub unit, 2 × 16 balls, 2 cages, 100 km/h,
-50 Hz moment, 0.1 s.  Target for (b): ≤ 300 s wall per simulated second on one core.
+50 Hz moment, 0.1 s.  Targets (issue 14): (b) ≤ 60 s wall per simulated second on one core, ≤ 35 with 2 threads.
 
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
          [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8] [--slice-rule strips|gauss]
