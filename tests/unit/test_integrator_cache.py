@@ -16,7 +16,7 @@ import textwrap
 import pytest
 
 from bearingsim.dynamics import forces as fo
-from bearingsim.dynamics.integrate import base, specialised
+from bearingsim.dynamics.integrate import specialised
 
 CASE = """
 bearing = "skf-7011-cdga-hc"
@@ -89,14 +89,14 @@ def test_engine_right_hand_sides_select_the_cached_kernels():
     from numba import njit
 
     for method in ("dopri5", "ros2", "ros34pw2"):
-        assert base.engine_kernel(method, fo.rhs_args) is specialised.KERNELS[method, "serial"]
-        assert base.engine_kernel(method, fo.rhs_args_threaded) is specialised.KERNELS[method, "threaded"]
+        assert specialised.engine_kernel(method, fo.rhs_args) is specialised.KERNELS[method, "serial"]
+        assert specialised.engine_kernel(method, fo.rhs_args_threaded) is specialised.KERNELS[method, "threaded"]
 
     @njit
     def decay(t, y, dy, args):
         dy[0] = -y[0]
 
-    assert base.engine_kernel("dopri5", decay) is None
+    assert specialised.engine_kernel("dopri5", decay) is None
     # every specialised kernel has the disk cache whose stamp holds the kernel packages' digest (not a silent
     # fallback to no cache after a change of numba's interface)
     for k in specialised.KERNELS.values():

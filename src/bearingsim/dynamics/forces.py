@@ -195,7 +195,7 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
 # machine, hub case (b), 20 ms, 2 threads: omp 110 wall s per simulated s against 171 on one thread, workqueue
 # 310 (it wakes sleeping threads for every call; omp's threads spin briefly between calls).  Spinning threads
 # are the wrong choice on an oversubscribed machine (load 14 on 2 cores: 1.9 ms per call against 0.44 for
-# workqueue), which is why the CLI's default thread count counts only idle cores (stepper.resolve_threads).
+# workqueue), which is why the CLI's default thread count counts only idle cores (stepper.idle_cores).
 # omp needs libgomp (on every Linux with gcc); without it numba falls back to workqueue.  Set before the first
 # parallel region runs; the result does not depend on it (bit for bit).
 if "NUMBA_THREADING_LAYER" not in os.environ:

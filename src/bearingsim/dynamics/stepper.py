@@ -22,6 +22,7 @@ from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import forces as fo
 from . import integrate as ig
 from . import model as md
+from .integrate.specialised import engine_kernel
 
 
 class SimulationError(BearingSimError):
@@ -65,7 +66,7 @@ class Stepper:
     #: (:func:`.forces.balls_on_raceways`).  The library's default stays serial (a caller running several cases
     #: in processes, as the hub study does, must not oversubscribe the cores); with the OpenMP layer 2 threads ran
     #: the hub case at 110 wall s per simulated s against 171 on one on this idle 2-core machine (issue 14).
-    threads: int | None = None
+    threads: int | str | None = None
     steps: int = 0
     rejected: int = 0
     atol: np.ndarray = field(default=None, repr=False)
@@ -91,7 +92,8 @@ class Stepper:
         self._ws = ig.ros34_workspace(m.n_balls, md.N_BALL, self._rmass.shape[0] == 5)
         self.threads = resolve_threads(self.threads)
         fun = fo.rhs_args_threaded if self.threads > 1 else fo.rhs_args
-        self.workspace = ig.Workspace(fun, self._args, self.y, self.atol, self.rtol, blk=self._blk,
+        kernel = engine_kernel(ig.METHODS[self.method].__name__.rsplit(".", 1)[1], fun)
+        self.workspace = ig.Workspace(fun, self._args, self.y, self.atol, self.rtol, blk=self._blk, kernel=kernel,
                                       nbk=md.N_BALL, rmass=self._rmass, bmass=self._bmass, jacobian=self._ws,
                                       info=self._info)
 

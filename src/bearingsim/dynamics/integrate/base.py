@@ -15,10 +15,10 @@ checkpoint saves).  Each method module (:mod:`.dopri5`, :mod:`.ros2`, :mod:`.ros
   ws.h the proposed step; on failure ws.t is the time reached and ws.h unchanged; ws.steps and
   ws.rejected count the steps.
 
-For the engine's own right-hand sides (``forces.rhs_args`` and ``forces.rhs_args_threaded``) ``advance`` calls
-the kernel specialised for that function (:mod:`.specialised`, cached on disk, see :func:`engine_kernel`)
-instead of the generic ``integrate``: the same code, the same results bit for bit, without compiling it again
-in every process.
+When ``ws.kernel`` holds the method's kernel specialised for ``ws.fun`` (:mod:`.specialised`, cached on disk;
+the stepper sets it for the engine's own right-hand sides with :func:`.specialised.engine_kernel`), ``advance``
+calls it instead of the generic ``integrate``: the same code, the same results bit for bit, without compiling it
+again in every process.
 
 Status codes and messages: :mod:`.common`.  Determinism: no randomness, a fixed arithmetic order,
 and every call stops exactly at t_end and returns the proposed next step, so a run restarted from
@@ -27,7 +27,6 @@ and every call stops exactly at t_end and returns the proposed next step, so a r
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -44,25 +43,6 @@ def ros34_workspace(nb: int, nbk: int, coupled: bool) -> tuple:
     nc = nb if coupled else 0
     return (np.zeros((nb, nbk, nbk)), np.zeros((nr, nr)), np.zeros((nc, nbk, nr)), np.zeros((nc, nr, nbk)),
             np.zeros(2, dtype=np.int64))
-
-
-def engine_kernel(method: str, fun):
-    """The cached kernel of :mod:`.specialised` for the method module ``method`` (``"dopri5"``, ``"ros2"``,
-    ``"ros34pw2"``) when ``fun`` is :func:`bearingsim.dynamics.forces.rhs_args` or ``rhs_args_threaded``; None
-    for any other right-hand side (then ``advance`` calls the generic kernel with ``fun``).  It neither imports
-    the forces module nor the specialised kernels unless ``fun`` comes from there."""
-    forces = sys.modules.get("bearingsim.dynamics.forces")
-    if forces is None:
-        return None
-    if fun is forces.rhs_args:
-        variant = "serial"
-    elif fun is forces.rhs_args_threaded:
-        variant = "threaded"
-    else:
-        return None
-    from .specialised import KERNELS
-
-    return KERNELS[method, variant]
 
 
 @dataclass
@@ -92,6 +72,8 @@ class Workspace:
     info: np.ndarray = field(default_factory=lambda: np.zeros(4))  #: see the module docstring
     steps: int = 0  #: accepted steps so far
     rejected: int = 0  #: rejected steps so far
+    #: the method's kernel specialised for ``fun`` (:func:`.specialised.engine_kernel`), or None: the generic one
+    kernel: object = None
 
     def finish(self, status: int, t: float, h: float) -> Status:
         """Book the result of one kernel call (see the module docstring) and return its status."""

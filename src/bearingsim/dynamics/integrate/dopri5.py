@@ -22,7 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .base import Workspace, engine_kernel
+from .base import Workspace
 from .common import (
     MAX_STEPS,
     NOT_FINITE,
@@ -161,7 +161,7 @@ def fixed_steps(fun, args, t, y, h, nsteps):
 def advance(ws: Workspace, t_end: float) -> Status:
     """Integrate the workspace to t_end [s] with DOPRI5 (the contract of :mod:`.base`; the engine's right-hand
     sides run the cached kernel of :mod:`.specialised`, the same code)."""
-    kernel = engine_kernel("dopri5", ws.fun)
+    kernel = ws.kernel
     if kernel is not None:
         status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
                               ws.info)

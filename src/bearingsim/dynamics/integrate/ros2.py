@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .base import Workspace, engine_kernel
+from .base import Workspace
 from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm
 from .jacobian import block_jac
 from .linalg import apply_w
@@ -102,7 +102,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
 def advance(ws: Workspace, t_end: float) -> Status:
     """Integrate the workspace to t_end [s] with ROS2 (the contract of :mod:`.base`; the engine's right-hand
     sides run the cached kernel of :mod:`.specialised`, the same code)."""
-    kernel = engine_kernel("ros2", ws.fun)
+    kernel = ws.kernel
     if kernel is not None:
         status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
                               ws.info, ws.blk, ws.nbk, ws.jac_every)

@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .base import Workspace, engine_kernel, ros34_workspace
+from .base import Workspace, ros34_workspace
 from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm, pi_factor, reject_factor
 from .jacobian import block_jac, ring_jac, ring_rows
 from .linalg import NR, coupled_w, coupled_w_threaded, j_times, no_coupling, w_inverse, w_solve
@@ -244,7 +244,7 @@ def advance(ws: Workspace, t_end: float) -> Status:
     :mod:`.specialised` (the same code)."""
     if ws.jacobian is None:
         ws.jacobian = ros34_workspace(ws.blk.shape[0], ws.nbk, ws.rmass.shape[0] == 5)
-    kernel = engine_kernel("ros34pw2", ws.fun)
+    kernel = ws.kernel
     if kernel is not None:
         status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
                               ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass)

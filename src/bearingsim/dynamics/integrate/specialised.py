@@ -7,8 +7,9 @@ ones with :func:`bearingsim.dynamics.forces.rhs_args` or :func:`~bearingsim.dyna
 named as a module global and take no function argument, so numba caches them, the generic kernels compiled
 inside them included: from the second process on they are loaded, not compiled.  They compile to the very
 same code as the generic kernel called with that right-hand side (the same results bit for bit).  Every
-method's ``advance(ws, t_end)`` picks the kernel here when ``ws.fun`` is one of the two
-(:func:`.base.engine_kernel`) and the generic kernel for any other right-hand side (the tests' own).
+method's ``advance(ws, t_end)`` runs the kernel here when the workspace holds it (``ws.kernel``, set by the
+stepper with :func:`engine_kernel` when ``ws.fun`` is one of the two) and the generic kernel for any other
+right-hand side (the tests' own).
 
 Cache invalidation: numba checks a cached function against its own source file only, not against the
 functions it calls, so these kernels (which hold compiled copies of the integrators, of the right-hand side
@@ -163,3 +164,14 @@ KERNELS = {
     ("ros34pw2", "serial"): ros34_serial,
     ("ros34pw2", "threaded"): ros34_threaded,
 }
+
+
+def engine_kernel(method: str, fun):
+    """The cached kernel of :data:`KERNELS` for the method module ``method`` (``"dopri5"``, ``"ros2"``,
+    ``"ros34pw2"``) when ``fun`` is :func:`bearingsim.dynamics.forces.rhs_args` or ``rhs_args_threaded``; None
+    for any other right-hand side (then ``advance`` calls the generic kernel with ``fun``)."""
+    if fun is forces.rhs_args:
+        return KERNELS[method, "serial"]
+    if fun is forces.rhs_args_threaded:
+        return KERNELS[method, "threaded"]
+    return None
