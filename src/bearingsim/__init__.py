@@ -195,12 +195,79 @@ def _private_folder(path: str, uid: int | None) -> bool:
             and (uid is None or st.st_uid == uid))
 
 
-def _configure_numba_cache() -> None:
-    """Apply :func:`_choose_numba_cache_dir` to this process (before numba reads its configuration)."""
+#: the in-tree stamp of the kernel packages' sources the cached kernels were compiled from
+_SOURCES_STAMP = "kernel-sources.stamp"
+
+
+def _kernel_sources_stamp(package_dir: str) -> str:
+    """sha256 of (path, size, modification time) of every module of :data:`_KERNEL_PACKAGES` (≈ 1 ms)."""
+    import hashlib
+
+    entries = []
+    for sub in _KERNEL_PACKAGES:
+        for folder, dirs, names in os.walk(os.path.join(package_dir, sub)):
+            dirs[:] = [d for d in dirs if d != "__pycache__"]
+            for n in names:
+                if n.endswith(".py"):
+                    path = os.path.join(folder, n)
+                    st = os.stat(path)
+                    entries.append(f"{os.path.relpath(path, package_dir)}\0{st.st_size}\0{st.st_mtime_ns}\n")
+    h = hashlib.sha256()
+    for e in sorted(entries):
+        h.update(e.encode())
+    return h.hexdigest()
+
+
+def _drop_stale_kernel_caches(package_dir: str) -> int:
+    """Delete numba's in-tree cache files (``__pycache__/*.nbi``, ``*.nbc`` of :data:`_KERNEL_PACKAGES`) when
+    a module of those packages changed since they were written; returns how many files were deleted.
+
+    numba checks a cached kernel against its own source file only: after an edit of one module, a cached kernel
+    of another module that calls into it is loaded with the old code inlined — wrong results, or a segmentation
+    fault when a signature or an array layout changed (seen in this project's tests).  An installed release
+    never changes, so this only acts after a developer's edit (or a checkout), once: the next run compiles again
+    (≈ 40 s).  A package folder that cannot be written is left alone."""
+    stamp_file = os.path.join(package_dir, "__pycache__", _SOURCES_STAMP)
+    stamp = _kernel_sources_stamp(package_dir)
     try:
-        cache_dir, note = _choose_numba_cache_dir(os.environ, os.path.dirname(os.path.abspath(__file__)))
+        with open(stamp_file, encoding="ascii") as fh:
+            if fh.read().strip() == stamp:
+                return 0
+    except OSError:
+        pass
+    dropped = 0
+    for sub in _KERNEL_PACKAGES:
+        for folder, _dirs, names in os.walk(os.path.join(package_dir, sub)):
+            if os.path.basename(folder) != "__pycache__":
+                continue
+            for n in names:
+                if n.endswith((".nbi", ".nbc")):
+                    try:
+                        os.remove(os.path.join(folder, n))
+                        dropped += 1
+                    except OSError:
+                        pass
+    os.makedirs(os.path.dirname(stamp_file), exist_ok=True)
+    tmp = f"{stamp_file}.{os.getpid()}.tmp"
+    with open(tmp, "w", encoding="ascii") as fh:
+        fh.write(stamp + "\n")
+    os.replace(tmp, stamp_file)
+    return dropped
+
+
+def _configure_numba_cache() -> None:
+    """Apply :func:`_choose_numba_cache_dir` to this process (before numba reads its configuration); with
+    numba's in-tree cache, first drop the kernel caches that older sources left (:func:`_drop_stale_kernel_caches`)."""
+    package_dir = os.path.dirname(os.path.abspath(__file__))
+    try:
+        cache_dir, note = _choose_numba_cache_dir(os.environ, package_dir)
     except Exception:  # noqa: BLE001 - a cache decision must never stop the import
         return
+    if cache_dir is None and not os.environ.get("NUMBA_CACHE_DIR"):
+        try:
+            _drop_stale_kernel_caches(package_dir)
+        except Exception:  # noqa: BLE001 - (a read-only or half-writable tree): numba's own checks remain
+            pass
     if cache_dir is not None:
         os.environ["NUMBA_CACHE_DIR"] = cache_dir
         cfg = sys.modules.get("numba.core.config")

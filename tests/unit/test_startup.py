@@ -201,3 +201,37 @@ def test_unwritable_numba_cache_dir_falls_back_with_one_line(tmp_path):
     c = run_py(COMPILE_SMALL, env)
     assert c.returncode == 0 and "cannot cache" not in c.stderr, c.stderr
     assert list(fallback.rglob("hertz.elliptic_ke-*.nbi")), sorted(fallback.rglob("*"))
+
+
+def test_stale_kernel_caches_are_dropped_once_when_a_kernel_module_changes(tmp_path):
+    """numba checks a cached kernel against its own file only, so a kernel calling into an edited module is served
+    stale (a segmentation fault in forces.evaluate was seen after such an edit): the in-tree caches of the kernel
+    packages go when any of their modules changes, and only then."""
+    import os
+
+    from bearingsim import _drop_stale_kernel_caches
+
+    pkg = tmp_path / "bearingsim"
+    for sub in ("contact", "statics", "dynamics"):
+        (pkg / sub / "__pycache__").mkdir(parents=True)
+        (pkg / sub / "m.py").write_text("x = 1\n")
+    caches = [pkg / "dynamics" / "__pycache__" / "m.f-1.py311.nbi", pkg / "contact" / "__pycache__" / "m.g-3.py311.nbc"]
+    keep = pkg / "dynamics" / "__pycache__" / "m.cpython-311.pyc"
+
+    def fill():
+        for f in caches + [keep]:
+            f.write_bytes(b"x")
+
+    fill()
+    assert _drop_stale_kernel_caches(str(pkg)) == 2  # no stamp yet: whatever is there is of unknown sources
+    assert not any(f.exists() for f in caches) and keep.exists()
+    fill()
+    assert _drop_stale_kernel_caches(str(pkg)) == 0  # unchanged sources: the caches stay
+    assert all(f.exists() for f in caches)
+    st = os.stat(pkg / "statics" / "m.py")
+    os.utime(pkg / "statics" / "m.py", ns=(st.st_atime_ns, st.st_mtime_ns + 10**9))  # an edit of one module
+    assert _drop_stale_kernel_caches(str(pkg)) == 2
+    assert not any(f.exists() for f in caches) and keep.exists()
+    (pkg / "contact" / "new.py").write_text("y = 2\n")  # a new module counts too
+    fill()
+    assert _drop_stale_kernel_caches(str(pkg)) == 2
