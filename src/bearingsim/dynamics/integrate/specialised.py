@@ -18,8 +18,8 @@ Their cache stamp therefore also holds :func:`sources_digest`, a hash of every m
 (``contact``, ``statics``, ``dynamics``; those of ``bearingsim._KERNEL_PACKAGES``): an edit of any of them
 compiles these kernels again (once, ~10 s), an unchanged install loads them.  When they are compiled again,
 numba takes the right-hand side from its own cache (``cache=True`` in forces.py, checked against forces.py
-alone): an edit of contacts.py or contact/slices.py alone still leaves ``forces.rhs_args`` stale, as it did
-before these kernels existed (clear the ``__pycache__`` numba files after such an edit).  The stamp goes
+alone), which ``bearingsim._drop_stale_kernel_caches`` empties whenever a module of the kernel packages changed
+(with numba's in-tree cache; a NUMBA_CACHE_DIR of the user's own is left alone).  The stamp goes
 through numba's cache-locator interface (``numba.core.caching``, not a public API): if that ever fails, the
 kernels are compiled per process again (correct, only slower); ``tests/unit/test_integrator_cache.py``
 notices it.
