@@ -92,14 +92,17 @@ __all__ = ["register", "simulate"]
 
 
 def _thread_count(text: str):
-    """``--threads``: "auto" or a whole number (the range is checked by :func:`.stepper.resolve_threads`)."""
+    """``--threads``: "auto" or a whole number in 1..NUMBA_NUM_THREADS (:func:`.stepper.resolve_threads`), with
+    the option's own name in the message."""
+    from ..dynamics.stepper import resolve_threads
     from ..errors import InputError
 
     t = text.strip()
     if t.lower() == "auto":
         return "auto"
     try:
-        return int(t)
-    except ValueError:
-        raise InputError("--threads", f"must be a whole number or auto, got {text!r}",
-                         "e.g. --threads 1 for one core") from None
+        return resolve_threads(int(t))
+    except ValueError as e:  # int() of a word, or InputError (a ValueError) of a count out of range
+        problem = e.problem if isinstance(e, InputError) else f"must be a whole number or auto, got {text!r}"
+        raise InputError("--threads", problem, "e.g. --threads 1 for one core; set NUMBA_NUM_THREADS for more") \
+            from None
