@@ -15,7 +15,7 @@ Cache invalidation: numba checks a cached function against its own source file o
 functions it calls, so these kernels (which hold compiled copies of the integrators, of the right-hand side
 and of the contact kernels) would run stale code after an edit of ``forces.py`` or of an integrator module.
 Their cache stamp therefore also holds :func:`sources_digest`, a hash of every module of the kernel packages
-(``contact``, ``statics``, ``dynamics``; those of ``bearingsim._KERNEL_PACKAGES``): an edit of any of them
+(``contact``, ``statics``, ``dynamics``: ``bearingsim._kernel_modules``): an edit of any of them
 compiles these kernels again (once, ~10 s), an unchanged install loads them.  When they are compiled again,
 numba takes the right-hand side from its own cache (``cache=True`` in forces.py, checked against forces.py
 alone), which ``bearingsim._drop_stale_kernel_caches`` empties whenever a module of the kernel packages changed
@@ -34,26 +34,19 @@ import os
 import numpy as np
 from numba import njit
 
+from ... import _kernel_modules
 from .. import forces
 from . import dopri5, ros2, ros34pw2
 
-#: the packages (folders of bearingsim) whose modules the cached kernels can hold compiled code of (every
-#: module there counts, so that no dependency is missed: global constants such as the layout indices too)
-KERNEL_PACKAGES = ("contact", "statics", "dynamics")
 #: src/bearingsim
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 _DIGEST: str | None = None
 
 
 def kernel_sources(root: str = PACKAGE_DIR) -> list[str]:
-    """The modules of :data:`KERNEL_PACKAGES` under ``root`` (paths relative to it, with ``/``, sorted)."""
-    files = []
-    for pkg in KERNEL_PACKAGES:
-        for folder, dirs, names in os.walk(os.path.join(root, pkg)):
-            dirs[:] = [d for d in dirs if d != "__pycache__"]
-            files += [os.path.relpath(os.path.join(folder, n), root).replace(os.sep, "/")
-                      for n in names if n.endswith(".py")]
-    return sorted(files)
+    """The modules of the kernel packages under ``root`` (``bearingsim._kernel_modules``: every module of
+    ``contact``, ``statics``, ``dynamics``, so that no dependency is missed)."""
+    return _kernel_modules(root)
 
 
 def sources_digest(root: str | None = None) -> str:
