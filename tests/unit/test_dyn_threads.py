@@ -139,3 +139,30 @@ def test_idle_cores_counts_only_cores_the_others_leave(monkeypatch):
     monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
     assert stepper.idle_cores() == 2
 
+
+
+_SEQUENCE = textwrap.dedent("""
+    import sys, numpy as np
+    from bearingsim.dynamics import run as R, forces as fo
+    from bearingsim.dynamics.case import load_case
+    m, ls, y, _ = R.build(load_case("examples/hub-moment-50hz.toml"))
+    if sys.argv[1] == "threaded":
+        fo.rhs_args_threaded(0.0, y, np.zeros_like(y), fo.args_of(m, ls))
+    else:
+        dy = fo.evaluate(m, 0.0, y, ls)[0]
+        assert np.isfinite(dy).all() and np.abs(dy).max() > 0
+    print("ok")
+""")
+
+
+def test_a_cached_kernel_calling_the_parallel_one_loads_in_a_fresh_process(tmp_path):
+    """The sequence that killed a hub-study worker: process 1 caches the parallel ball loop (a threaded right-hand
+    side), process 2 compiles the Python-side right-hand side (``evaluate``: threads as a run-time flag, so it
+    links the cached parallel loop) and caches it, process 3 loads that from the cache.  Before forces.py started
+    the threading layer at import, process 3 died (segmentation fault, or "LLVM ERROR: Symbol not found:
+    allocate_sched"), since numba registers the layer's symbols only when the layer starts."""
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), NUMBA_NUM_THREADS="2")
+    for step in ("threaded", "evaluate", "evaluate"):
+        r = subprocess.run([sys.executable, "-c", _SEQUENCE, step], cwd=ROOT, env=env, capture_output=True,
+                           text=True, timeout=900)
+        assert r.returncode == 0 and "ok" in r.stdout, (step, r.returncode, r.stderr[-2000:])

@@ -201,6 +201,12 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
 if "NUMBA_THREADING_LAYER" not in os.environ:
     numba.config.THREADING_LAYER = "default"
     numba.config.THREADING_LAYER_PRIORITY = ["omp", "workqueue", "tbb"]
+# Launch the threading layer now (numba.get_num_threads does it): a cached kernel that calls a parallel one
+# (rhs → balls_on_raceways → _balls_parallel) needs the layer's scheduling symbols when it is loaded, and numba
+# registers them only when the layer starts; without this, a process that loads such a kernel from the disk cache
+# before any parallel region ran failed with "LLVM ERROR: Symbol not found: allocate_sched" or a segmentation
+# fault (seen this session with a hub-study worker).  Starting the layer runs no parallel region.
+numba.get_num_threads()
 
 
 @njit(cache=True, parallel=True)
