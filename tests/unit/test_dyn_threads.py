@@ -122,8 +122,9 @@ def test_serial_loop_is_the_per_ball_function_written_out():
 
 
 def test_idle_cores_counts_only_cores_the_others_leave(monkeypatch):
-    """--threads auto: the cores this process may use less the one-minute load, rounded, within 1..NUMBA_NUM_THREADS
-    (the OpenMP layer's spinning threads cost several times the work on busy cores: forces.py)."""
+    """--threads auto: the cores this process may use less the cores busy now, rounded, within
+    1..NUMBA_NUM_THREADS (the OpenMP layer's spinning threads cost several times the work on busy cores:
+    forces.py); the one-minute load average only where /proc/stat cannot be read."""
     import os
 
     import numba
@@ -132,13 +133,36 @@ def test_idle_cores_counts_only_cores_the_others_leave(monkeypatch):
 
     monkeypatch.setattr(numba.config, "NUMBA_NUM_THREADS", 16)
     monkeypatch.setattr(os, "sched_getaffinity", lambda pid: set(range(8)))
-    for load, want in ((0.0, 8), (0.4, 8), (0.6, 7), (3.2, 5), (7.9, 1), (40.0, 1)):
-        monkeypatch.setattr(os, "getloadavg", lambda load=load: (load, load, load))
-        assert stepper.idle_cores() == want, (load, stepper.idle_cores())
+    for busy, want in ((0.0, 8), (0.4, 8), (0.6, 7), (3.2, 5), (7.9, 1), (40.0, 1)):
+        monkeypatch.setattr(stepper, "busy_cores", lambda window, busy=busy: busy)
+        assert stepper.idle_cores() == want, (busy, stepper.idle_cores())
+    monkeypatch.setattr(stepper, "busy_cores", lambda window: None)  # no /proc/stat: the load average
+    monkeypatch.setattr(os, "getloadavg", lambda: (2.2, 0.0, 0.0))
+    assert stepper.idle_cores() == 6
     monkeypatch.setattr(numba.config, "NUMBA_NUM_THREADS", 2)
     monkeypatch.setattr(os, "getloadavg", lambda: (0.0, 0.0, 0.0))
     assert stepper.idle_cores() == 2
 
+
+def test_busy_cores_from_two_reads_of_proc_stat(monkeypatch, tmp_path):
+    """The busy share between two reads of /proc/stat's first line, times the CPU count."""
+    import os
+
+    from bearingsim.dynamics import stepper
+
+    stat = tmp_path / "stat"
+    reads = iter(["cpu  100 0 50 800 50 0 0 0 0 0\n", "cpu  250 0 100 1000 50 0 0 0 0 0\n"])
+
+    def read():
+        stat.write_text(next(reads))
+        return stepper._cpu_times(str(stat))
+
+    monkeypatch.setattr(os, "cpu_count", lambda: 4)
+    # busy 150 + 50 = 200 of 400 jiffies: half of 4 CPUs
+    assert stepper.busy_cores(0.0, read) == 2.0
+    stat.write_text("not a stat file\n")
+    assert stepper._cpu_times(str(stat)) is None
+    assert stepper._cpu_times(str(tmp_path / "missing")) is None
 
 
 _SEQUENCE = textwrap.dedent("""

@@ -152,25 +152,60 @@ def resolve_threads(threads) -> int:
     return int(threads)
 
 
-def idle_cores() -> int:
+def idle_cores(window: float = 0.1) -> int:
     """Threads for ``--threads auto`` (the CLI's default): the cores this process may run on
-    (``os.sched_getaffinity``) less the one-minute load average (the others' work), rounded to the nearest
-    core, at least 1 and at most NUMBA_NUM_THREADS (1 in the test suite, tests/conftest.py).  The OpenMP
-    layer's threads spin between right-hand sides: on idle cores that is what makes them pay, on busy ones it
-    costs several times the work (forces.py, issue 14), so a loaded machine gets fewer threads.  The
-    trajectory is the same for any count."""
+    (``os.sched_getaffinity``) less the cores the others keep busy now (:func:`busy_cores` over ``window`` [s];
+    where /proc/stat is missing, the one-minute load average), rounded to the nearest core, at least 1 and at
+    most NUMBA_NUM_THREADS (1 in the test suite, tests/conftest.py).  The OpenMP layer's threads spin between
+    right-hand sides: on idle cores that is what makes them pay, on busy ones it costs several times the work
+    (forces.py, issue 14), so a loaded machine gets fewer threads.  A present measurement rather than the load
+    average, which would still count a run that has just ended for a minute.  The trajectory is the same for
+    any count."""
     import os
 
     try:
         cores = len(os.sched_getaffinity(0))
     except (AttributeError, OSError):  # (not on every platform)
         cores = os.cpu_count() or 1
-    try:
-        busy = os.getloadavg()[0]
-    except (AttributeError, OSError):
-        busy = 0.0
+    busy = busy_cores(window)
+    if busy is None:
+        try:
+            busy = os.getloadavg()[0]
+        except (AttributeError, OSError):
+            busy = 0.0
     free = int(math.floor(cores - busy + 0.5))
     return max(1, min(free, cores, numba.config.NUMBA_NUM_THREADS))
+
+
+def _cpu_times(path: str = "/proc/stat") -> tuple[float, float] | None:
+    """(busy, total) jiffies of all CPUs from the first line of /proc/stat (idle and iowait count as idle; guest
+    time is already inside user), or None where it cannot be read."""
+    try:
+        with open(path, encoding="ascii") as fh:
+            fields = fh.readline().split()
+        vals = [float(v) for v in fields[1:9]]  # user nice system idle iowait irq softirq steal
+    except (OSError, ValueError, IndexError):
+        return None
+    if len(vals) < 5 or fields[0] != "cpu":
+        return None
+    total = sum(vals)
+    return total - vals[3] - vals[4], total
+
+
+def busy_cores(window: float = 0.1, read=_cpu_times) -> float | None:
+    """Cores busy now [-]: the busy share of all CPUs' time over ``window`` [s] (two reads of /proc/stat) times
+    the CPU count; None where /proc/stat is missing or did not advance."""
+    import os
+    import time
+
+    a = read()
+    if a is None:
+        return None
+    time.sleep(window)
+    b = read()
+    if b is None or b[1] <= a[1]:
+        return None
+    return (b[0] - a[0]) / (b[1] - a[1]) * (os.cpu_count() or 1)
 
 
 def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: np.ndarray) -> dict:
