@@ -98,10 +98,8 @@ def _thread_count(text: str):
     from ..errors import InputError
 
     t = text.strip()
-    if t.lower() == "auto":
-        return "auto"
     try:
-        return resolve_threads(int(t))
+        return resolve_threads(t if t.lower() == "auto" else int(t))
     except ValueError as e:  # int() of a word, or InputError (a ValueError) of a count out of range
         problem = e.problem if isinstance(e, InputError) else f"must be a whole number or auto, got {text!r}"
         raise InputError("--threads", problem, "e.g. --threads 1 for one core; set NUMBA_NUM_THREADS for more") \

@@ -20,14 +20,13 @@ eccentricity of the cage beyond the land clearance.
 from __future__ import annotations
 
 import math
-import os
 
-import numba
 import numpy as np
 from numba import njit, prange
 
 from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import layout as ly
+from . import threads as _threads  # noqa: F401 - numba's threading layer, chosen and started (before any parallel kernel)
 
 # the contact laws (re-exported: ``forces.race_contact``, ``forces.coulomb_slices`` ... keep working)
 from .contacts import (  # noqa: F401
@@ -190,23 +189,7 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
     dy[o + 8] = mb[2] / jb
 
 
-# numba's threading layer: OpenMP first, else workqueue, unless the user chose one (NUMBA_THREADING_LAYER).
-# A right-hand side is ≈ 90 µs of work split once per call, so the layer's wake-up decides: on this idle 2-core
-# machine, hub case (b), 20 ms, 2 threads: omp 110 wall s per simulated s against 171 on one thread, workqueue
-# 310 (it wakes sleeping threads for every call; omp's threads spin briefly between calls).  Spinning threads
-# are the wrong choice on an oversubscribed machine (load 14 on 2 cores: 1.9 ms per call against 0.44 for
-# workqueue), which is why the CLI's default thread count counts only idle cores (stepper.idle_cores).
-# omp needs libgomp (on every Linux with gcc); without it numba falls back to workqueue.  Set before the first
-# parallel region runs; the result does not depend on it (bit for bit).
-if "NUMBA_THREADING_LAYER" not in os.environ:
-    numba.config.THREADING_LAYER = "default"
-    numba.config.THREADING_LAYER_PRIORITY = ["omp", "workqueue", "tbb"]
-# Launch the threading layer now (numba.get_num_threads does it): a cached kernel that calls a parallel one
-# (rhs → balls_on_raceways → _balls_parallel) needs the layer's scheduling symbols when it is loaded, and numba
-# registers them only when the layer starts; without this, a process that loads such a kernel from the disk cache
-# before any parallel region ran failed with "LLVM ERROR: Symbol not found: allocate_sched" or a segmentation
-# fault (seen this session with a hub-study worker).  Starting the layer runs no parallel region.
-numba.get_num_threads()
+# the threading layer of _balls_parallel is chosen and started by .threads (imported above)
 
 
 @njit(cache=True, parallel=True)

@@ -19,6 +19,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit, prange
 
+from .. import threads as _threads  # noqa: F401 - numba's threading layer, chosen and started
 from ..layout import N_RING
 
 NR = N_RING  #: inner-ring states (q, q̇) at the start of the state vector
