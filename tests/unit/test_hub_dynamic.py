@@ -252,3 +252,27 @@ def test_cell_case_output_interval_needs_its_unit():
     del data["output_interval"]
     with pytest.raises(InputError, match="output_interval"):
         hd.cell_case(data, CASE.parent, 100.0, 50.0, 3)
+
+
+def test_cells_are_handed_out_longest_first(monkeypatch):
+    """The 3 x 3 grid goes to the workers longest simulated time first, higher speed first among equals (the
+    longest-processing-time-first schedule): the 1 Hz cells start at once, the short cells fill in."""
+    grid = [(v, f) for v in (100.0, 50.0, 10.0) for f in (1.0, 10.0, 50.0)]
+    assert hd.longest_first(grid, 10) == [(100.0, 1.0), (50.0, 1.0), (10.0, 1.0), (100.0, 10.0), (50.0, 10.0),
+                                          (10.0, 10.0), (100.0, 50.0), (50.0, 50.0), (10.0, 50.0)]
+    import bearingsim.sweep as sw
+
+    seen = []
+
+    class Stop(Exception):
+        pass
+
+    def capture(fn, args, keys, done, n, **kw):
+        seen.extend(keys)
+        raise Stop
+
+    monkeypatch.setattr(sw, "run_tasks_locally", capture)
+    with pytest.raises(Stop):
+        hd.run_study(CASE, speeds_kmh=(10.0, 100.0), frequencies_hz=(50.0, 1.0), cycles=2, startup=1,
+                     traction="none", workers=2)
+    assert seen == [(100.0, 1.0), (10.0, 1.0), (100.0, 50.0), (10.0, 50.0)]

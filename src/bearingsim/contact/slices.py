@@ -55,9 +55,10 @@ j and n−1−j evaluated as a pair (mirror images: one mean pressure, Roelands 
 limiting shear stress per pair, and two independent chains the CPU overlaps); the velocity
 fields moved from the centre to each slice with constant cross-product matrices; the
 Hamrock–Dowson films, regime map and Zhu–Cheng factor from shared logarithms, powers as
-exp(c ln x); ln η(p̄) fed straight into asinh x = ln 2x + 1/(4x²) for x = ηγ̇/τ₀ ≥ 10⁶
-(next term < 1e-25) and, for the heat-balance step, asinh(x e^(−βΔT)) = ln 2x − βΔT (error
-≤ 2.5e-13 absolute when x e^(−βΔT) ≥ 10⁶); tanh z = (e^(2z) − 1)/(e^(2z) + 1) for
+exp(c ln x); the Eyring argument x = ηγ̇/τ₀ carried as ln 2x = ln u_s + ln η(p̄) + const only
+(:func:`_asinh_l2x`: asinh x = ln 2x for x ≥ 10⁶, error ≤ 2.5e-13 absolute, asinh(e^(ln 2x − ln 2))
+below; so η = e^(ln η) is never formed where the film is glassy), the same for the heat-balance step's
+asinh(x e^(−βΔT)) with ln 2x − βΔT; tanh z = (e^(2z) − 1)/(e^(2z) + 1) for
 1e-3 ≤ z ≤ 20 (≤ ~1e-13 relative).  No fastmath, no allocation.  The heat-balance secant
 step stays per slice: solving it once on the central slice would change results by far
 more than 1e-10 (each slice has its own pressure and sliding speed).  Strip counts n ≤ 64 take their load
@@ -66,6 +67,10 @@ is u₀^0.648 (u/u₀)^0.648 with the second factor by its binomial series when 
 < 5e-15); the contact type's film constants (ln αE′, ellipticity terms, the regime map's isoviscous-rigid
 film) are stored in ``lub`` by :func:`pack_lubrication_parameters` and used while α E′ and R_y/R_x still match
 (:func:`film_constants`).  Issue 14: kernel −12 %, hub right-hand side −10 %, forces equal to ~1e-15.
+The Gauss rule (n_slices < 0) sets up the film law's contact-level constants once per call (ln η₀, 1/h_c,
+the limiting-stress denominator, the film-elasticity factors) and takes the rolling resistance's u^0.648 like
+the strip loop; :func:`contact_traction_reference` evaluates its nodes one at a time with the model
+functions (tests at 1e-10).
 """
 
 from __future__ import annotations
@@ -360,7 +365,7 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     if n_slices < 0:
         _gauss_quadrature(-n_slices, q, a, b, curv, nx, ny, nz, mx, my, mz, c0x - cbx, c0y - cby, c0z - cbz,
                           c0x - crx, c0y - cry, c0z - crz, s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez,
-                          need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out)
+                          u0, need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out)
         return
 
     fx = fy = fz = 0.0
@@ -448,24 +453,19 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
                     # Roelands: ln η(p̄) = ln η0 + (ln η0 + 9.67)((1 + p̄/1.96e8)^z − 1); the logarithm
                     # feeds ln 2x directly (x = η γ̇/τ0), η itself only the small-x branch
                     ln_eta_p = ln_eta0 + roe_ln * (math.exp(roe_z * math.log(1.0 + pbar / 1.96e8)) - 1.0)
-                    kx = math.exp(ln_eta_p) * inv_hc_tau0
                     fl = lss_floor * pbar
                     tl = lss_r * (lss_c1 * pbar / den0 - lss_c4)
                     if tl < fl:
                         tl = fl
                     ctl = tau0 / tl
-                    xe_a = kx * smag_a
-                    xe_b = kx * smag_b
                     l2x_a = math.log(two_inv_hc_tau0 * smag_a) + ln_eta_p
                     l2x_b = math.log(two_inv_hc_tau0 * smag_b) + ln_eta_p
-                    ash_a = _asinh_from(xe_a, l2x_a)
-                    ash_b = _asinh_from(xe_b, l2x_b)
-                    tau_a = tl * _tanh_pos(ctl * ash_a)
-                    tau_b = tl * _tanh_pos(ctl * ash_b)
+                    tau_a = tl * _tanh_pos(ctl * _asinh_l2x(l2x_a))
+                    tau_b = tl * _tanh_pos(ctl * _asinh_l2x(l2x_b))
                     if theta > 0.0:
-                        tau_a = _heated_stress(tau_a, theta * smag_a, xe_a, l2x_a, pbar, fl, tau0, t0c, lss_r, lss_c1,
+                        tau_a = _heated_stress(tau_a, theta * smag_a, l2x_a, pbar, fl, tau0, t0c, lss_r, lss_c1,
                                                lss_c2, lss_c3, lss_c4, beta_v)
-                        tau_b = _heated_stress(tau_b, theta * smag_b, xe_b, l2x_b, pbar, fl, tau0, t0c, lss_r, lss_c1,
+                        tau_b = _heated_stress(tau_b, theta * smag_b, l2x_b, pbar, fl, tau0, t0c, lss_r, lss_c1,
                                                lss_c2, lss_c3, lss_c4, beta_v)
                     if visco:
                         # traction.elastic_plastic_mean_stress with τ_e = G ℓ_j s/h (no rolling: τ_e = ∞)
@@ -635,6 +635,7 @@ def _pow_0648(x):
 
 #: ln(2·10⁶): asinh x = ln 2x within 2.5e-13 for x ≥ 10⁶
 _LN_2E6 = math.log(2.0e6)
+_LN_2 = math.log(2.0)
 
 
 @njit(cache=True, error_model="numpy")
@@ -676,28 +677,27 @@ def _slice_kinematics(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx,
 
 
 @njit(cache=True, error_model="numpy")
-def _asinh_from(x, l2x):
-    """asinh x for x ≥ 0 given l2x = ln 2x: ln 2x + 1/(4x²) when x ≥ 1e6 (next term 3/(32x⁴) < 1e-25)."""
+def _asinh_l2x(l2x):
+    """asinh x for x > 0 from l2x = ln 2x alone [-]: ln 2x when x ≥ 1e6 (the dropped term 1/(4x²) ≤ 2.5e-13
+    absolute, ≤ 1.8e-14 of the value), asinh(e^(l2x − ln 2)) below.  The film law never needs x itself, so the
+    viscosity η(p̄) = e^(ln η) is not formed where x is large (the usual case in a loaded EHL contact)."""
     if l2x >= _LN_2E6:
-        return l2x + 0.25 / (x * x)
-    return math.asinh(x)
+        return l2x
+    return math.asinh(math.exp(l2x - _LN_2))
 
 
 @njit(cache=True, error_model="numpy")
-def _heated_stress(tau, theta_us, x, l2x, p, floor_p, tau0, t0c, r_l, c1, c2, c3, c4, beta_v):
+def _heated_stress(tau, theta_us, l2x, p, floor_p, tau0, t0c, r_l, c1, c2, c3, c4, beta_v):
     """Secant step of the film heat balance of :func:`traction.fluid_shear_stress` [Pa].
 
-    τ ← τ²/(2τ − τ₁), τ₁ = τ_L(t₀ + ΔT) tanh[τ₀ asinh(x e^(−β ΔT))/τ_L], ΔT = θ u_s τ (theta_us = θ u_s).
-    For x e^(−β ΔT) ≥ 1e6, asinh = ln 2x − β ΔT within 2.5e-13 (absolute).
+    τ ← τ²/(2τ − τ₁), τ₁ = τ_L(t₀ + ΔT) tanh[τ₀ asinh(x e^(−β ΔT))/τ_L], ΔT = θ u_s τ (theta_us = θ u_s),
+    with x given by l2x = ln 2x; asinh by :func:`_asinh_l2x` of ln 2x − β ΔT.
     """
     if not tau > 0.0:
         return 0.0
     dT = theta_us * tau
     bdt = beta_v * dT
-    if l2x - bdt >= _LN_2E6:
-        ash1 = l2x - bdt
-    else:
-        ash1 = math.asinh(x * math.exp(-bdt))
+    ash1 = _asinh_l2x(l2x - bdt)
     # τ_L at the heated temperature: num1/den1 (Dyson via Zhou & Hoeprich, floored)
     den1 = c2 + c3 * (t0c + dT)
     num1 = r_l * (c1 * p - c4 * den1)
@@ -780,49 +780,8 @@ def rolling_slip_zeros(sig0, sig1, sig2, a, curv):
 
 
 @njit(cache=True, error_model="numpy")
-def _point_mu(smag, u, pbar, chord, need_b, need_f, fluid_kind, wfl, hc, theta, lub, b_roll=0.0):
-    """Traction coefficient μ [-] at one point of the ellipse ([S1] eq. 2; the same formulae as the
-    strip loop of :func:`contact_traction`, for one point): sliding speed smag [m/s], entraining
-    speed u [m/s], mean pressure across the chord pbar [Pa], chord length in the rolling direction
-    [m] (film elasticity, Johnson & Tevaarwerk 1977), film hc [m], heat-balance factor theta
-    [K m/(s Pa)]·… (ΔT = theta u_s τ, as in the strip loop)."""
-    sr = smag / u if u > 0.0 else 1e300
-    mu = 0.0
-    if need_b:
-        mu = (lub[L_BA] + lub[L_BB] * sr) * math.exp(-lub[L_BC] * sr) + lub[L_BD]
-    if need_f:
-        if fluid_kind == 0:
-            mu += ((lub[L_FA] + lub[L_FB] * sr) * math.exp(-lub[L_FC] * sr) + lub[L_FD] - mu) * wfl
-        elif hc > 0.0 and smag > 0.0:
-            tau0 = lub[L_TAU0]
-            t0c = lub[L_T0C]
-            lss_r, c1, c2, c3, c4 = lub[L_LSS_R], lub[L_LSS_C1], lub[L_LSS_C2], lub[L_LSS_C3], lub[L_LSS_C4]
-            ln_eta_p = math.log(lub[L_ETA0]) + lub[L_ROE_LN] * (
-                math.exp(lub[L_ROE_Z] * math.log(1.0 + pbar / 1.96e8)) - 1.0)
-            k = smag / (hc * tau0)
-            xe = math.exp(ln_eta_p) * k
-            l2x = math.log(2.0 * k) + ln_eta_p
-            fl = lub[L_LSS_FLOOR] * pbar
-            tl = lss_r * (c1 * pbar / (c2 + c3 * t0c) - c4)
-            if tl < fl:
-                tl = fl
-            tau = tl * _tanh_pos(tau0 / tl * _asinh_from(xe, l2x))
-            if theta > 0.0:
-                tau = _heated_stress(tau, theta * smag, xe, l2x, pbar, fl, tau0, t0c, lss_r, c1, c2, c3, c4,
-                                     lub[L_BETA_V])
-            if lub[L_VISCO] != 0.0 and lss_r > 0.0 and u > 0.0:
-                g_f = tl / lss_r * lub[L_GF_SCALE]
-                ser = 1.0 / (1.0 + g_f * lub[L_SFLEX] * b_roll / hc)  # solids in series (Kalker L1)
-                tau = elastic_plastic_mean_stress(tau, g_f * chord / hc * sr * ser)
-            mu += (tau / pbar - mu) * wfl
-        else:
-            mu -= mu * wfl
-    return mu
-
-
-@njit(cache=True, error_model="numpy")
 def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0bz, d0rx, d0ry, d0rz,
-                      s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez,
+                      s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez, u0,
                       need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out):
     """The integrals of the strip model in its limit of infinitely many strips, by Gauss–Legendre
     quadrature with ``ng`` nodes on each sub-interval of ξ = x/a ∈ [−1, 1] between the zeros of the
@@ -833,7 +792,10 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
     length from Zhou & Hoeprich (1991) eq. 17 (or Martin's) with the line load (3Q/4a)(1 − ξ²).
     The load density is a polynomial, so each sub-interval is integrated exactly for integrands
     polynomial in ξ of degree ≤ 2 ng − 3 (e.g. constant μ with a linear moment arm).
-    Writes out[0:10] like :func:`contact_traction`.  All SI."""
+    u0 [m/s] the entraining speed at the ellipse centre (the rolling resistance's u^0.648 is
+    u0^0.648 (u/u0)^0.648 with the second factor by :func:`_pow_0648`, as in the strip loop).
+    The traction coefficient at a node is the strip loop's film law (seed eq. 2) for one point, its
+    contact-level constants set up once per call.  Writes out[0:10] like :func:`contact_traction`.  All SI."""
     # rolling direction and the rates of the velocity fields along e_major and n
     rdx, rdy, rdz = ny * mz - nz * my, nz * mx - nx * mz, nx * my - ny * mx
     asx, asy, asz = wsy * mz - wsz * my, wsz * mx - wsx * mz, wsx * my - wsy * mx
@@ -848,17 +810,47 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
     alpha = lub[L_ALPHA]
     e_eff = lub[L_EEFF]
     eta0 = lub[L_ETA0]
-    k_zh = 0.0
+    # rolling resistance: Martin k_ir √(u (1 − ξ²)), or Zhou–Hoeprich k_zh e^ln_zh u^0.648 (1 − ξ²)^0.246 per unit ξ
     k_ir = 0.0
+    k_zh = 0.0
     ln_zh = 0.0
+    k_zh_u0 = 0.0
+    roll_zh = do_roll and reg != 0 and u0 > 0.0
     if do_roll:
         if reg == 0:
             k_ir = MARTIN_ROLLING * a * fr_scale * math.sqrt(0.75 * eta0 * q / a)
         else:
             k_zh = 29.2 * (rx / alpha) * a * fr_scale
             ln_zh = 0.648 * math.log(alpha * eta0 / rx) + 0.246 * math.log(0.75 * q / (a * e_eff * rx))
+            if roll_zh:
+                k_zh_u0 = k_zh * math.exp(ln_zh + 0.648 * math.log(u0))
+    inv_u0 = 1.0 / u0 if u0 > 0.0 else 0.0
+    # film law (traction.fluid_shear_stress, the strip loop's fast forms): contact-level constants
+    ba, bb, bc, bd = lub[L_BA], lub[L_BB], lub[L_BC], lub[L_BD]
+    fa, fb, fc, fd = lub[L_FA], lub[L_FB], lub[L_FC], lub[L_FD]
+    phys = need_f and fluid_kind != 0 and hc > 0.0
+    tau0 = lub[L_TAU0]
+    t0c = lub[L_T0C]
+    lss_r, c1, c2, c3, c4 = lub[L_LSS_R], lub[L_LSS_C1], lub[L_LSS_C2], lub[L_LSS_C3], lub[L_LSS_C4]
+    lss_floor = lub[L_LSS_FLOOR]
+    beta_v = lub[L_BETA_V]
+    roe_ln = lub[L_ROE_LN]
+    roe_z = lub[L_ROE_Z]
+    inv_den0 = 1.0 / (c2 + c3 * t0c)
+    l2x_c = 0.0  # ln 2x = ln u_s + l2x_c + Roelands' pressure term, x = η(p̄) u_s/(h τ0)
+    visco = False
+    gf_c = 0.0
+    sol_c = 0.0
+    inv_hc = 0.0
+    if phys:
+        l2x_c = math.log(2.0 / (hc * tau0)) + math.log(eta0)
+        inv_hc = 1.0 / hc
+        visco = lub[L_VISCO] != 0.0 and lss_r > 0.0
+        if visco:
+            gf_c = lub[L_GF_SCALE] / lss_r  # G_f = τ_L/r_L (× scale)
+            sol_c = lub[L_SFLEX] * b * inv_hc  # solids in series (Kalker L1)
+    p_c = 0.375 * q / (a * b)  # p̄ = p_c √(1 − ξ²)
     two_rx = 2.0 * rx
-    inv_ab = 1.0 / (a * b)
     fx = fy = fz = 0.0
     mbx = mby = mbz = 0.0
     mrx = mry = mrz = 0.0
@@ -904,9 +896,36 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             qz = x * mz + off * nz
             dbx, dby, dbz = d0bx + qx, d0by + qy, d0bz + qz
             drx, dry, drz = d0rx + qx, d0ry + qy, d0rz + qz
+            inv_u = 1.0 / uj if uj > 0.0 else 0.0
             if smag > 0.0:
-                mu = _point_mu(smag, uj, 0.375 * q * sq * inv_ab, 2.0 * b * sq, need_b, need_f, fluid_kind, wfl,
-                               hc, theta, lub, b)
+                # traction coefficient at the node (seed eq. 2; the strip loop's formulae for one point)
+                sr = smag * inv_u if uj > 0.0 else 1e300
+                mu = 0.0
+                if need_b:
+                    mu = (ba + bb * sr) * math.exp(-bc * sr) + bd
+                if need_f:
+                    if fluid_kind == 0:
+                        mu += ((fa + fb * sr) * math.exp(-fc * sr) + fd - mu) * wfl
+                    elif phys:
+                        pbar = p_c * sq
+                        # Roelands: ln η(p̄) − ln η0 = (ln η0 + 9.67)((1 + p̄/1.96e8)^z − 1), fed into ln 2x
+                        l2x = (math.log(smag) + l2x_c
+                               + roe_ln * (math.exp(roe_z * math.log(1.0 + pbar / 1.96e8)) - 1.0))
+                        fl = lss_floor * pbar
+                        tl = lss_r * (c1 * pbar * inv_den0 - c4)
+                        if tl < fl:
+                            tl = fl
+                        tau = tl * _tanh_pos(tau0 / tl * _asinh_l2x(l2x))
+                        if theta > 0.0:
+                            tau = _heated_stress(tau, theta * smag, l2x, pbar, fl, tau0, t0c, lss_r, c1, c2, c3, c4,
+                                                 beta_v)
+                        if visco and uj > 0.0:
+                            g_f = tl * gf_c
+                            tau = elastic_plastic_mean_stress(tau, g_f * 2.0 * b * sq * inv_hc * sr
+                                                              / (1.0 + g_f * sol_c))
+                        mu += (tau / pbar - mu) * wfl
+                    else:
+                        mu -= mu * wfl
                 f = -mu * qj / smag
                 tx, ty, tz = f * sx, f * sy, f * sz
                 fx += tx
@@ -922,9 +941,10 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             if do_roll and uj > 0.0:
                 if reg == 0:
                     fr = k_ir * wgt * math.sqrt(uj * om)
-                else:
+                elif roll_zh:
+                    fr = k_zh_u0 * wgt * _pow_0648(uj * inv_u0) * math.exp(0.246 * math.log(om))
+                else:  # no entraining speed at the centre (u0 = 0): the formula as it stands
                     fr = k_zh * wgt * math.exp(0.648 * math.log(uj) + 0.246 * math.log(om) + ln_zh)
-                inv_u = 1.0 / uj
                 hx, hy, hz = ex * inv_u, ey * inv_u, ez * inv_u
                 r1 = math.sqrt(dbx * dbx + dby * dby + dbz * dbz)
                 c = fr * two_rx
@@ -1113,7 +1133,7 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
     (``py_func``) of the model functions; the tests compare the two to 1e-10.
     """
     out[:] = 0.0
-    if not (q > 0 and a > 0 and b > 0) or n_slices < 1:
+    if not (q > 0 and a > 0 and b > 0) or n_slices == 0:
         return
     n = np.asarray(normal, float)
     m = np.asarray(major, float)
@@ -1156,83 +1176,121 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
     theta = 0.0
     if lub[L_THERMAL] != 0:
         theta = hc / (12 * lub[L_KOIL]) + (0.5 * _FLASH * math.sqrt(2 * b / u0) / lub[L_EFFUS] if u0 > 0 else 0.0)
-    width = 2 * a / n_slices
+    lss = [lub[k] for k in (L_LSS_R, L_LSS_C1, L_LSS_C2, L_LSS_C3, L_LSS_C4, L_LSS_FLOOR)]
+
+    def tau_limit(pbar, dT):
+        return max(lss[0] * (lss[1] * pbar / (lss[2] + lss[3] * (lub[L_T0C] + dT)) - lss[4]), lss[5] * pbar)
+
+    def point_mu(smag, uj, pbar, chord):
+        """μ at one point: sliding speed, entraining speed, mean pressure across the chord, chord length."""
+        sr = smag / uj if uj > 0 else 1e300
+        mu = 0.0
+        if w < 1:
+            mu = traction.four_parameter.py_func(sr, *lub[L_BA:L_BD + 1])
+        if w > 0:
+            if kind == 0:
+                muf = traction.four_parameter.py_func(sr, *lub[L_FA:L_FD + 1])
+            else:
+                eta_p = traction.roelands_viscosity.py_func(pbar, eta0, lub[L_ROE_LN], lub[L_ROE_Z])
+
+                def stress(dT):
+                    eta = eta_p * math.exp(-lub[L_BETA_V] * dT)
+                    tl = tau_limit(pbar, dT)
+                    return tl * math.tanh(lub[L_TAU0] * math.asinh(eta * (smag / hc) / lub[L_TAU0]) / tl)
+
+                if hc <= 0:
+                    tau = 0.0
+                else:
+                    tau = stress(0.0)
+                    if theta > 0:
+                        t1 = stress(theta * tau * smag)
+                        tau = tau * tau / (2 * tau - t1)
+                    if lub[L_VISCO] != 0 and lss[0] > 0 and uj > 0:
+                        # Johnson-Tevaarwerk elastic/plastic film: G = τ_L(p̄, t₀)/r_L over the chord
+                        g_mod = tau_limit(pbar, 0.0) / lss[0] * lub[L_GF_SCALE]
+                        ser = 1.0 / (1.0 + g_mod * lub[L_SFLEX] * b / hc)  # solids in series (Kalker L1)
+                        tau = traction.elastic_plastic_mean_stress.py_func(tau, g_mod * chord * sr / hc * ser)
+                muf = tau / pbar
+            mu = mu + (muf - mu) * w
+        return mu
+
     F = np.zeros(3)
     Mb = np.zeros(3)
     Mr = np.zeros(3)
     power = 0.0
-    for j in range(n_slices):
-        xi0, xi1 = -1 + 2 * j / n_slices, -1 + 2 * (j + 1) / n_slices
-        Fc = lambda z: (3 * z - z**3) / 4  # noqa: E731
-        Gc = lambda z: 0.75 * (z * z / 2 - z**4 / 4)  # noqa: E731
-        qj = q * (Fc(xi1) - Fc(xi0))
-        if qj <= 0:
-            continue
-        x = a * (Gc(xi1) - Gc(xi0)) / (Fc(xi1) - Fc(xi0))
+
+    def add_point(x, qj, pbar, chord, roll):
+        """Traction and rolling resistance of one strip or node at x along the major axis, load qj; ``roll``
+        (u, nj) → the rolling-resistance force F_R [N]."""
+        nonlocal power
         root = math.sqrt(max(0.0, 1 - (c * x) ** 2))
         p = p0 + x * m + (c * x * x / (1 + root)) * n
         nj = root * n - c * x * m
         s, e = kin(p, nj)
         smag, uj = float(np.linalg.norm(s)), float(np.linalg.norm(e))
         if smag > 0:
-            sr = smag / uj if uj > 0 else 1e300
-            mu = 0.0
-            if w < 1:
-                mu = traction.four_parameter.py_func(sr, *lub[L_BA:L_BD + 1])
-            if w > 0:
-                if kind == 0:
-                    muf = traction.four_parameter.py_func(sr, *lub[L_FA:L_FD + 1])
-                else:
-                    H = lambda z: z * math.sqrt(max(0.0, 1 - z * z)) + math.asin(min(1.0, max(-1.0, z)))  # noqa
-                    pbar = qj / (a * b * (H(xi1) - H(xi0)))
-                    eta_p = traction.roelands_viscosity.py_func(pbar, eta0, lub[L_ROE_LN], lub[L_ROE_Z])
-
-                    def stress(dT):
-                        eta = eta_p * math.exp(-lub[L_BETA_V] * dT)
-                        tl = lub[L_LSS_R] * (lub[L_LSS_C1] * pbar / (lub[L_LSS_C2] + lub[L_LSS_C3] * (lub[L_T0C] + dT))
-                                             - lub[L_LSS_C4])
-                        tl = max(tl, lub[L_LSS_FLOOR] * pbar)
-                        return tl * math.tanh(lub[L_TAU0] * math.asinh(eta * (smag / hc) / lub[L_TAU0]) / tl)
-
-                    if hc <= 0:
-                        tau = 0.0
-                    else:
-                        tau = stress(0.0)
-                        if theta > 0:
-                            t1 = stress(theta * tau * smag)
-                            tau = tau * tau / (2 * tau - t1)
-                        if lub[L_VISCO] != 0 and lub[L_LSS_R] > 0 and uj > 0:
-                            # Johnson-Tevaarwerk elastic/plastic film: G = τ_L(p̄, t₀)/r_L, ℓ = strip mean chord
-                            g_mod = max(lub[L_LSS_R] * (lub[L_LSS_C1] * pbar / (lub[L_LSS_C2] + lub[L_LSS_C3]
-                                                                                   * lub[L_T0C]) - lub[L_LSS_C4]),
-                                        lub[L_LSS_FLOOR] * pbar) / lub[L_LSS_R]
-                            chord = a * b * (H(xi1) - H(xi0)) / width
-                            g_mod *= lub[L_GF_SCALE]
-                            ser = 1.0 / (1.0 + g_mod * lub[L_SFLEX] * b / hc)  # solids in series (Kalker L1)
-                            tau = traction.elastic_plastic_mean_stress.py_func(tau, g_mod * chord * sr / hc * ser)
-                    muf = tau / pbar
-                mu = mu + (muf - mu) * w
+            mu = point_mu(smag, uj, pbar, chord)
             f = -mu * qj * s / smag
-            F += f
-            Mb += np.cross(p - cb, f)
-            Mr += np.cross(p - cr, -f)
+            F[:] += f
+            Mb[:] += np.cross(p - cb, f)
+            Mr[:] += np.cross(p - cr, -f)
             power += mu * qj * smag
         if lub[L_ROLLRES] != 0 and w > 0 and uj > 0:
-            if reg == 0:
-                fr = traction.MARTIN_ROLLING * width * math.sqrt(eta0 * uj * qj / width)
-            else:
-                U = eta0 * uj / (e_eff * rx)
-                fr = 29.2 * (rx / alpha) * width * (alpha * e_eff * U) ** 0.648 * (qj / (width * e_eff * rx)) ** 0.246
-            fr *= phi * w
+            fr = roll(uj) * phi * w
             h = e / uj
             r1 = float(np.linalg.norm(p - cb))
             inv_r2 = 1 / rx - 1 / r1
             p1 = 2 * fr * rx / r1
             p2 = 2 * fr * rx * inv_r2
-            F += (p1 - fr) * h
-            Mb += np.cross(p - cb, -fr * h)
-            Mr += np.cross(p - cr, (p2 - fr) * h) - 2 * fr * rx * np.cross(nj, h)
+            F[:] += (p1 - fr) * h
+            Mb[:] += np.cross(p - cb, -fr * h)
+            Mr[:] += np.cross(p - cr, (p2 - fr) * h) - 2 * fr * rx * np.cross(nj, h)
             power += 2 * fr * uj
+
+    def rolling(length, load):
+        """Rolling resistance of a line contact of ``length`` [m] carrying ``load`` [N] (Martin or Zhou–Hoeprich)."""
+        if reg == 0:
+            return lambda u: traction.MARTIN_ROLLING * length * math.sqrt(eta0 * u * load / length)
+        return lambda u: traction.rolling_resistance_zh.py_func(eta0 * u / (e_eff * rx), alpha * e_eff,
+                                                                 load / (length * e_eff * rx), rx, alpha, length)
+
+    H = lambda z: z * math.sqrt(max(0.0, 1 - z * z)) + math.asin(min(1.0, max(-1.0, z)))  # noqa: E731
+    if n_slices > 0:
+        width = 2 * a / n_slices
+        for j in range(n_slices):
+            xi0, xi1 = -1 + 2 * j / n_slices, -1 + 2 * (j + 1) / n_slices
+            Fc = lambda z: (3 * z - z**3) / 4  # noqa: E731
+            Gc = lambda z: 0.75 * (z * z / 2 - z**4 / 4)  # noqa: E731
+            qj = q * (Fc(xi1) - Fc(xi0))
+            if qj <= 0:
+                continue
+            x = a * (Gc(xi1) - Gc(xi0)) / (Fc(xi1) - Fc(xi0))
+            area = a * b * (H(xi1) - H(xi0))
+            add_point(x, qj, qj / area, area / width, rolling(width, qj))
+    else:
+        # Gauss nodes between the zeros of the rolling slip, graded towards the zeros (the kernel's rule,
+        # _gauss_quadrature): densities per unit ξ — load (3Q/4)(1 − ξ²), p̄ = 3Q√(1 − ξ²)/(8ab), chord 2b√(1 − ξ²)
+        ng = -n_slices
+        rdir = np.cross(n, m)
+        ws = wb - wr
+        sc, _ = kin(p0, n)
+        sig = (float(sc @ rdir), a * float(np.cross(ws, m) @ rdir), float(np.cross(ws, n) @ rdir))
+        nroot, z1, z2 = rolling_slip_zeros.py_func(*sig, a, c)
+        edges = [-1.0] + [z1, z2][:nroot] + [1.0]
+        xg, wg = np.polynomial.legendre.leggauss(ng)
+        for k in range(nroot + 1):
+            lo, hi = edges[k], edges[k + 1]
+            zlo, zhi = k > 0, k < nroot
+            for t, wt in zip(0.5 + 0.5 * xg, wg):
+                psi, dpsi = {(True, True): (3 * t * t - 2 * t**3, 6 * t * (1 - t)), (True, False): (t * t, 2 * t),
+                             (False, True): (t * (2 - t), 2 * (1 - t)), (False, False): (t, 1.0)}[(zlo, zhi)]
+                xi = lo + (hi - lo) * psi
+                wgt = 0.5 * (hi - lo) * dpsi * wt
+                om = 1 - xi * xi
+                if om <= 0:
+                    continue
+                add_point(a * xi, 0.75 * q * om * wgt, 3 * q * math.sqrt(om) / (8 * a * b), 2 * b * math.sqrt(om),
+                          rolling(a * wgt, 0.75 * q * om * wgt))
     out[0:3] = F
     out[3:6] = Mb
     out[6:9] = Mr

@@ -171,6 +171,15 @@ def cell_name(speed_kmh: float, frequency_hz: float) -> str:
     return f"hub_{speed_kmh:g}kmh_{frequency_hz:g}Hz"
 
 
+def longest_first(cells, total_cycles: int) -> list:
+    """The order the cells are handed to the workers: the longest simulated time first ((startup + cycles)/f),
+    the higher speed first among equal times (more steps per simulated second).  Workers take tasks in
+    submission order, so this is the longest-processing-time-first schedule (Graham 1969): the long 1 Hz cells
+    start at once instead of behind the short ones, and the short cells fill the other workers' time.  The
+    study's results and files do not depend on it (cells are keyed by speed and frequency)."""
+    return sorted(cells, key=lambda vf: (-total_cycles / vf[1], -vf[0]))
+
+
 # ---- one cell (a task: runs here, in a local process or on a Dask worker) ---------------------
 def run_cell(case_data: dict, base, speed_kmh: float, frequency_hz: float, total_cycles: int,
              traction: str | None = None, out_dir=None) -> dict:
@@ -577,7 +586,7 @@ def run_study(case_path, speeds_kmh=(100.0,), frequencies_hz=(50.0,), cycles: in
             rec = load_cell(folder, vf[0], vf[1], cases[vf].fingerprint())
             if rec is not None:
                 records[vf] = rec
-    todo = [vf for vf in grid if vf not in records]
+    todo = longest_first([vf for vf in grid if vf not in records], total)
     notes = []
     if finished_only:
         if folder is None:
