@@ -170,3 +170,41 @@ def test_checked_entry_takes_the_quadrature_by_name():
         S.contact_traction_checked(Q, HC.a, HC.b, math.inf, *vec.values(), lub, 4, quadrature="simpson")
     with pytest.raises(InputError, match="n_slices"):
         S.contact_traction_checked(Q, HC.a, HC.b, math.inf, *vec.values(), lub, S.GAUSS_MAX + 1, quadrature="gauss")
+
+
+@pytest.mark.parametrize("a", [0.246, 0.5])
+def test_gauss_jacobi_rule_matches_scipy_and_is_exact(a):
+    """The rolling resistance's fixed nodes (Golub–Welsch) equal scipy's Gauss–Jacobi rule, and integrate
+    ξ^k (1 − ξ²)^a exactly for k ≤ 2n − 1 (moments B((k+1)/2, a+1) for even k, zero for odd k)."""
+    from scipy.special import beta, roots_jacobi
+
+    n = S.ROLL_NODES
+    x, w = S.gauss_jacobi(n, a)
+    xs, ws = roots_jacobi(n, a, a)
+    np.testing.assert_allclose(x, xs, atol=1e-14)
+    np.testing.assert_allclose(w, ws, rtol=1e-13)
+    for k in range(2 * n):
+        exact = 0.0 if k % 2 else beta((k + 1) / 2, a + 1)
+        assert np.dot(w, x**k) == pytest.approx(exact, abs=1e-14)
+
+
+@pytest.mark.parametrize("spin", [0.0, 40.0])
+def test_gauss_rule_rolling_resistance_converges_to_the_strip_limit(spin):
+    """Traction off (μ ≡ 0), rolling resistance and oil-film force only (Zhou & Hoeprich 1991 per unit
+    length, seed eqs. 4–5): the Gauss rule's 4 fixed Gauss–Jacobi nodes give the strip model's limit — 4096
+    strips, whose own error falls as n^−1.25 (the (1 − ξ²)^0.246 edge factor) — within 1e-4 of the largest
+    entry, forces, moments and power, with and without spin (the entraining speed varies across the ellipse)."""
+    lub = _lub(model="fluid", fluid_model="curve", fluid_curve=(0.0, 0.06, 0.01, 0.045))
+    lub[S.L_FA:S.L_FD + 1] = 0.0  # the curve μ(s) = (A + B s)e^(−C s) + D with A = B = D = 0: no traction
+    wb = np.array([-2.5 / R_BALL, 0.0, spin])
+    args = (Q, HC.a, HC.b, S.deformed_surface_radius(D, 0.52 * D), np.zeros(3), np.array([0.0, 0.0, 1.0]),
+            np.array([1.0, 0.0, 0.0]), np.array([0.0, 0.0, R_BALL]), np.zeros(3), wb, np.array([0.0, 0.0, -0.025]),
+            np.zeros(3), np.array([100.0, 0.0, 0.0]), lub)
+    ref, ref2, out = np.zeros(10), np.zeros(10), np.zeros(10)
+    S.contact_traction(*args, 4096, ref)
+    S.contact_traction(*args, 1024, ref2)
+    S.contact_traction(*args, -4, out)
+    scale = np.max(np.abs(ref))
+    assert scale > 0 and ref[9] > 0
+    strip_err = np.max(np.abs(ref2 - ref)) / scale  # the strips' own convergence: 1024 against 4096
+    assert np.max(np.abs(out - ref)) / scale < max(1e-4, 2 * strip_err), (out, ref, strip_err)

@@ -56,8 +56,9 @@ limiting shear stress per pair, and two independent chains the CPU overlaps); th
 fields moved from the centre to each slice with constant cross-product matrices; the
 Hamrock–Dowson films, regime map and Zhu–Cheng factor from shared logarithms, powers as
 exp(c ln x); the Eyring argument x = ηγ̇/τ₀ carried as ln 2x = ln u_s + ln η(p̄) + const only
-(:func:`_asinh_l2x`: asinh x = ln 2x for x ≥ 10⁶, error ≤ 2.5e-13 absolute, asinh(e^(ln 2x − ln 2))
-below; so η = e^(ln η) is never formed where the film is glassy), the same for the heat-balance step's
+(:func:`_asinh_l2x`: asinh x = ln 2x for x ≥ 10⁶, error ≤ 2.5e-13 absolute, its asymptotic series in
+1/x² for 100 ≤ x < 10⁶, asinh(e^(ln 2x − ln 2)) below; so η = e^(ln η) is never formed and asinh rarely
+called), the same for the heat-balance step's
 asinh(x e^(−βΔT)) with ln 2x − βΔT; tanh z = (e^(2z) − 1)/(e^(2z) + 1) for
 1e-3 ≤ z ≤ 20 (≤ ~1e-13 relative).  No fastmath, no allocation.  The heat-balance secant
 step stays per slice: solving it once on the central slice would change results by far
@@ -636,6 +637,7 @@ def _pow_0648(x):
 #: ln(2·10⁶): asinh x = ln 2x within 2.5e-13 for x ≥ 10⁶
 _LN_2E6 = math.log(2.0e6)
 _LN_2 = math.log(2.0)
+_LN_200 = math.log(200.0)
 
 
 @njit(cache=True, error_model="numpy")
@@ -679,10 +681,15 @@ def _slice_kinematics(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx,
 @njit(cache=True, error_model="numpy")
 def _asinh_l2x(l2x):
     """asinh x for x > 0 from l2x = ln 2x alone [-]: ln 2x when x ≥ 1e6 (the dropped term 1/(4x²) ≤ 2.5e-13
-    absolute, ≤ 1.8e-14 of the value), asinh(e^(l2x − ln 2)) below.  The film law never needs x itself, so the
-    viscosity η(p̄) = e^(ln η) is not formed where x is large (the usual case in a loaded EHL contact)."""
+    absolute, ≤ 1.8e-14 of the value); for 100 ≤ x < 1e6 the asymptotic series ln 2x + w/4 − 3w²/32 + 5w³/96
+    − 35w⁴/1024, w = 1/x² = 4e^(−2 ln 2x) (Abramowitz & Stegun 4.6.31; next term 63w⁵/2560 < 2.5e-22); below,
+    asinh(e^(ln 2x − ln 2)).  The film law never needs x itself, so the viscosity η(p̄) = e^(ln η) is not formed,
+    and no asinh call is made where x ≥ 100 (the loaded EHL contact's usual range)."""
     if l2x >= _LN_2E6:
         return l2x
+    if l2x >= _LN_200:
+        w = 4.0 * math.exp(-2.0 * l2x)
+        return l2x + w * (0.25 + w * (-3.0 / 32.0 + w * (5.0 / 96.0 - w * (35.0 / 1024.0))))
     return math.asinh(math.exp(l2x - _LN_2))
 
 
@@ -721,6 +728,27 @@ _GL_X = np.zeros((GAUSS_MAX + 1, GAUSS_MAX))
 _GL_W = np.zeros((GAUSS_MAX + 1, GAUSS_MAX))
 for _n in range(1, GAUSS_MAX + 1):
     _GL_X[_n, :_n], _GL_W[_n, :_n] = np.polynomial.legendre.leggauss(_n)
+
+
+def gauss_jacobi(n: int, a: float) -> tuple[np.ndarray, np.ndarray]:
+    """Nodes and weights of the n-point Gauss rule for ∫₋₁¹ f(ξ) (1 − ξ²)^a dξ (Gauss–Jacobi, α = β = a > −1),
+    by Golub & Welsch (1969): eigenvalues of the symmetric Jacobi matrix, off-diagonal
+    √(4k(k + a)²(k + 2a)/(s²(s² − 1))), s = 2k + 2a; weights μ₀ v₀², μ₀ = √π Γ(a + 1)/Γ(a + 3/2)."""
+    k = np.arange(1, n)
+    s = 2.0 * k + 2.0 * a
+    off = np.sqrt(4.0 * k * (k + a) ** 2 * (k + 2.0 * a) / (s**2 * (s**2 - 1.0)))
+    x, v = np.linalg.eigh(np.diag(off, 1) + np.diag(off, -1))
+    return x, math.sqrt(math.pi) * math.gamma(a + 1.0) / math.gamma(a + 1.5) * v[0] ** 2
+
+
+#: rolling resistance of the Gauss rule: ROLL_NODES fixed nodes on ξ ∈ [−1, 1] with the weight of its line-load
+#: factor — (1 − ξ²)^0.246 (Zhou–Hoeprich, row 1) or (1 − ξ²)^0.5 (Martin, row 0) — built in (Gauss–Jacobi): the
+#: density is smooth times that weight (no zeros of the slip in it), so 4 nodes are exact to degree 7
+ROLL_NODES = 4
+_RJ_X = np.zeros((2, ROLL_NODES))
+_RJ_W = np.zeros((2, ROLL_NODES))
+_RJ_X[0], _RJ_W[0] = gauss_jacobi(ROLL_NODES, 0.5)
+_RJ_X[1], _RJ_W[1] = gauss_jacobi(ROLL_NODES, 0.246)
 
 
 @njit(cache=True, error_model="numpy")
@@ -791,9 +819,12 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
     p̄ = 3Q√(1 − ξ²)/(8ab), chord 2b√(1 − ξ²) (film elasticity), rolling resistance per unit
     length from Zhou & Hoeprich (1991) eq. 17 (or Martin's) with the line load (3Q/4a)(1 − ξ²).
     The load density is a polynomial, so each sub-interval is integrated exactly for integrands
-    polynomial in ξ of degree ≤ 2 ng − 3 (e.g. constant μ with a linear moment arm).
-    u0 [m/s] the entraining speed at the ellipse centre (the rolling resistance's u^0.648 is
-    u0^0.648 (u/u0)^0.648 with the second factor by :func:`_pow_0648`, as in the strip loop).
+    polynomial in ξ of degree ≤ 2 ng − 3 (e.g. constant μ with a linear moment arm).  The rolling
+    resistance has no zeros of the slip in it: it is integrated on its own ROLL_NODES fixed
+    Gauss–Jacobi nodes whose weight is its line-load factor (1 − ξ²)^0.246 (or ^0.5, Martin), exact for
+    the factor and smooth in the rest (u^0.648, the arms).  u0 [m/s] the entraining speed at the
+    ellipse centre (u^0.648 is u0^0.648 (u/u0)^0.648 with the second factor by :func:`_pow_0648`, as in
+    the strip loop).
     The traction coefficient at a node is the strip loop's film law (seed eq. 2) for one point, its
     contact-level constants set up once per call.  Writes out[0:10] like :func:`contact_traction`.  All SI."""
     # rolling direction and the rates of the velocity fields along e_major and n
@@ -938,29 +969,42 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
                 mry -= drz * tx - drx * tz
                 mrz -= drx * ty - dry * tx
                 power += mu * qj * smag
-            if do_roll and uj > 0.0:
-                if reg == 0:
-                    fr = k_ir * wgt * math.sqrt(uj * om)
-                elif roll_zh:
-                    fr = k_zh_u0 * wgt * _pow_0648(uj * inv_u0) * math.exp(0.246 * math.log(om))
-                else:  # no entraining speed at the centre (u0 = 0): the formula as it stands
-                    fr = k_zh * wgt * math.exp(0.648 * math.log(uj) + 0.246 * math.log(om) + ln_zh)
-                hx, hy, hz = ex * inv_u, ey * inv_u, ez * inv_u
-                r1 = math.sqrt(dbx * dbx + dby * dby + dbz * dbz)
-                c = fr * two_rx
-                p1 = c / r1
-                gb = p1 - fr
-                fx += gb * hx
-                fy += gb * hy
-                fz += gb * hz
-                mbx -= fr * (dby * hz - dbz * hy)
-                mby -= fr * (dbz * hx - dbx * hz)
-                mbz -= fr * (dbx * hy - dby * hx)
-                gr = fr - p1
-                mrx += gr * (dry * hz - drz * hy) - c * (njy * hz - njz * hy)
-                mry += gr * (drz * hx - drx * hz) - c * (njz * hx - njx * hz)
-                mrz += gr * (drx * hy - dry * hx) - c * (njx * hy - njy * hx)
-                power += 2.0 * fr * uj
+    # rolling resistance and oil-film force on the fixed Gauss-Jacobi nodes (the line-load factor in the weight)
+    row = 0 if reg == 0 else 1
+    for j in range(ROLL_NODES if do_roll else 0):
+        x = a * _RJ_X[row, j]
+        wgt = _RJ_W[row, j]
+        off, root = slice_point_offset(x, curv)
+        (sx, sy, sz, smag, ex, ey, ez, uj, njx, njy, njz) = _slice_kinematics(
+            x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz,
+            asx, asy, asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
+        if not uj > 0.0:
+            continue
+        inv_u = 1.0 / uj
+        if reg == 0:
+            fr = k_ir * wgt * math.sqrt(uj)
+        elif roll_zh:
+            fr = k_zh_u0 * wgt * _pow_0648(uj * inv_u0)
+        else:  # no entraining speed at the centre (u0 = 0): the formula as it stands
+            fr = k_zh * wgt * math.exp(0.648 * math.log(uj) + ln_zh)
+        dbx, dby, dbz = d0bx + x * mx + off * nx, d0by + x * my + off * ny, d0bz + x * mz + off * nz
+        drx, dry, drz = d0rx + x * mx + off * nx, d0ry + x * my + off * ny, d0rz + x * mz + off * nz
+        hx, hy, hz = ex * inv_u, ey * inv_u, ez * inv_u
+        r1 = math.sqrt(dbx * dbx + dby * dby + dbz * dbz)
+        c = fr * two_rx
+        p1 = c / r1
+        gb = p1 - fr
+        fx += gb * hx
+        fy += gb * hy
+        fz += gb * hz
+        mbx -= fr * (dby * hz - dbz * hy)
+        mby -= fr * (dbz * hx - dbx * hz)
+        mbz -= fr * (dbx * hy - dby * hx)
+        gr = fr - p1
+        mrx += gr * (dry * hz - drz * hy) - c * (njy * hz - njz * hy)
+        mry += gr * (drz * hx - drx * hz) - c * (njz * hx - njx * hz)
+        mrz += gr * (drx * hy - dry * hx) - c * (njx * hy - njy * hx)
+        power += 2.0 * fr * uj
     out[0] = fx
     out[1] = fy
     out[2] = fz
@@ -1228,14 +1272,14 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
         nj = root * n - c * x * m
         s, e = kin(p, nj)
         smag, uj = float(np.linalg.norm(s)), float(np.linalg.norm(e))
-        if smag > 0:
+        if smag > 0 and qj > 0:
             mu = point_mu(smag, uj, pbar, chord)
             f = -mu * qj * s / smag
             F[:] += f
             Mb[:] += np.cross(p - cb, f)
             Mr[:] += np.cross(p - cr, -f)
             power += mu * qj * smag
-        if lub[L_ROLLRES] != 0 and w > 0 and uj > 0:
+        if roll is not None and lub[L_ROLLRES] != 0 and w > 0 and uj > 0:
             fr = roll(uj) * phi * w
             h = e / uj
             r1 = float(np.linalg.norm(p - cb))
@@ -1290,7 +1334,17 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                 if om <= 0:
                     continue
                 add_point(a * xi, 0.75 * q * om * wgt, 3 * q * math.sqrt(om) / (8 * a * b), 2 * b * math.sqrt(om),
-                          rolling(a * wgt, 0.75 * q * om * wgt))
+                          None)
+        # rolling resistance: Gauss-Jacobi nodes with the line-load factor (1 - ξ²)^0.246 (Zhou-Hoeprich) or
+        # (1 - ξ²)^0.5 (Martin) as the weight; per unit ξ the line contact of length a carrying (3Q/4)(1 - ξ²)
+        xr, wr_ = gauss_jacobi(ROLL_NODES, 0.5 if reg == 0 else 0.246)
+        for xi, wgt in zip(xr, wr_):
+            if reg == 0:
+                per_xi = lambda u: traction.rolling_resistance_ir.py_func(eta0, u, 0.75 * q / a, a)  # noqa: E731
+            else:
+                per_xi = lambda u: traction.rolling_resistance_zh.py_func(  # noqa: E731
+                    eta0 * u / (e_eff * rx), alpha * e_eff, 0.75 * q / (a * e_eff * rx), rx, alpha, a)
+            add_point(a * xi, 0.0, 0.0, 0.0, lambda u, f=per_xi, wgt=wgt: wgt * f(u))
     out[0:3] = F
     out[3:6] = Mb
     out[6:9] = Mr
