@@ -102,9 +102,11 @@ def run(name: str, duration: float | None, traction: str | None, profile: bool, 
     return out
 
 
-def kernel_profile(name: str, threads: int = 1) -> None:
+def kernel_profile(name: str, threads: int = 1, vehicle_speed: float | None = None, slice_rule: str | None = None,
+                   n_slices: int | None = None) -> None:
     """Cost of one right-hand-side evaluation per traction model, and the step of the integrator the case's
-    runs use (``case.method``: ROS34PW2 with sliced traction under "auto", else DOPRI5) and what limits it."""
+    runs use (``case.method``: ROS34PW2 with sliced traction under "auto", else DOPRI5) and what limits it;
+    the case as the runs take it (--vehicle-speed, --slice-rule, --n-slices)."""
     import collections
 
     import numpy as np
@@ -112,9 +114,10 @@ def kernel_profile(name: str, threads: int = 1) -> None:
     from bearingsim.dynamics import forces as fo
     from bearingsim.dynamics import model as md
     from bearingsim.dynamics import run as R
-    from bearingsim.dynamics.case import load_case
 
-    case = load_case(CASES[name])
+    case = load_bench_case(name, vehicle_speed, slice_rule)
+    if n_slices:
+        case = dataclasses.replace(case, n_slices=n_slices)
     for trac in ("none", "coulomb", "slices"):
         c = dataclasses.replace(case, traction=trac)
         m, ls, y, _ = R.build(c)
@@ -249,7 +252,7 @@ def main(argv=None):
         return
     if a.kernel:
         for name in (["a", "b"] if a.case == "both" else [a.case]):
-            kernel_profile(name, a.threads)
+            kernel_profile(name, a.threads, a.vehicle_speed if name == "b" else None, a.slice_rule, a.n_slices)
         return
     from bearingsim.units import parse_quantity
 
