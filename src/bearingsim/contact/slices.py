@@ -69,9 +69,10 @@ is u₀^0.648 (u/u₀)^0.648 with the second factor by its binomial series when 
 film) are stored in ``lub`` by :func:`pack_lubrication_parameters` and used while α E′ and R_y/R_x still match
 (:func:`film_constants`).  Issue 14: kernel −12 %, hub right-hand side −10 %, forces equal to ~1e-15.
 The Gauss rule (n_slices < 0) sets up the film law's contact-level constants once per call (ln η₀, 1/h_c,
-the limiting-stress denominator, the film-elasticity factors) and takes the rolling resistance's u^0.648 like
-the strip loop; :func:`contact_traction_reference` evaluates its nodes one at a time with the model
-functions (tests at 1e-10).
+the limiting-stress denominator, the film-elasticity factors) and integrates the rolling resistance on its own
+ROLL_NODES Gauss–Jacobi nodes (its line-load factor (1 − ξ²)^0.246 as the weight, u^0.648 as in the strip
+loop); :func:`contact_traction_reference` evaluates the same rule one point at a time with the model functions
+(tests at 1e-10).  Issue 14, fifth pass: Gauss kernel −21 % (docs/dynamics.md).
 """
 
 from __future__ import annotations
