@@ -175,6 +175,58 @@ def slice_area_fraction(xi0, xi1):
 
 
 @njit(cache=True, error_model="numpy")
+def _law_constants(lub):
+    """The traction laws' constants from ``lub``: boundary and fluid four-parameter curves (A, B, C, D each), then
+    the physical film law's τ₀ [Pa], t₀ [°C], limiting-stress coefficients r_L, c₁…c₄ and floor, β_v [1/K] and
+    Roelands' ln η₀ + 9.67 and index z (:func:`pack_lubrication_parameters`)."""
+    return (lub[L_BA], lub[L_BB], lub[L_BC], lub[L_BD], lub[L_FA], lub[L_FB], lub[L_FC], lub[L_FD],
+            lub[L_TAU0], lub[L_T0C], lub[L_LSS_R], lub[L_LSS_C1], lub[L_LSS_C2], lub[L_LSS_C3], lub[L_LSS_C4],
+            lub[L_LSS_FLOOR], lub[L_BETA_V], lub[L_ROE_LN], lub[L_ROE_Z])
+
+
+@njit(cache=True, error_model="numpy")
+def add_point_traction(out, f, sx, sy, sz, dbx, dby, dbz, drx, dry, drz, power):
+    """Add the traction f·(sx, sy, sz) [N] acting at a point (arm d_b from the ball centre, d_r from the race
+    centre [m]) to out (module docstring, item 4): force and moment on the ball, moment on the race (whose force
+    is minus the ball's), and ``power`` [W] to out[9]."""
+    tx, ty, tz = f * sx, f * sy, f * sz
+    out[0] += tx
+    out[1] += ty
+    out[2] += tz
+    out[3] += dby * tz - dbz * ty
+    out[4] += dbz * tx - dbx * tz
+    out[5] += dbx * ty - dby * tx
+    out[6] -= dry * tz - drz * ty
+    out[7] -= drz * tx - drx * tz
+    out[8] -= drx * ty - dry * tx
+    out[9] += power
+
+
+@njit(cache=True, error_model="numpy")
+def add_point_rolling(out, fr, uj, hx, hy, hz, dbx, dby, dbz, drx, dry, drz, njx, njy, njz, two_rx):
+    """Add the rolling resistance fr [N] at a point with entraining speed uj [m/s] along the unit vector h to out
+    ([S1] eqs. 4–5, module docstring item 5): shear −fr on both surfaces, the pressure-centre shift as P₁ =
+    2 fr R_x/R₁ on the ball through its centre (R₁ = |d_b|) and P₂ = 2 fr − P₁ on the race through its centre of
+    curvature p − R₂ n_j (P₂ R₂ = 2 fr R_x): the race's moment (p − c_r) × ((P₂ − fr) h) − 2 fr R_x (n_j × h);
+    power 2 fr uj [W]."""
+    r1 = math.sqrt(dbx * dbx + dby * dby + dbz * dbz)
+    c = fr * two_rx
+    p1 = c / r1
+    gb = p1 - fr
+    out[0] += gb * hx
+    out[1] += gb * hy
+    out[2] += gb * hz
+    out[3] -= fr * (dby * hz - dbz * hy)
+    out[4] -= fr * (dbz * hx - dbx * hz)
+    out[5] -= fr * (dbx * hy - dby * hx)
+    gr = fr - p1
+    out[6] += gr * (dry * hz - drz * hy) - c * (njy * hz - njz * hy)
+    out[7] += gr * (drz * hx - drx * hz) - c * (njz * hx - njx * hz)
+    out[8] += gr * (drx * hy - dry * hx) - c * (njx * hy - njy * hx)
+    out[9] += 2.0 * fr * uj
+
+
+@njit(cache=True, error_model="numpy")
 def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball, w_ball,
                      race_centre, v_race, w_race, lub, n_slices, out):
     """Tangential forces of one lubricated ball–race contact on n slices ([S1] eqs. 1–5).
@@ -331,17 +383,10 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     need_b = wfl < 1.0
     need_f = wfl > 0.0
     phys = need_f and fluid_kind != 0
-    ba, bb, bc, bd = lub[L_BA], lub[L_BB], lub[L_BC], lub[L_BD]
-    fa, fb, fc, fd = lub[L_FA], lub[L_FB], lub[L_FC], lub[L_FD]
-    # physical fluid model, slice-independent terms (traction.fluid_shear_stress)
-    tau0 = lub[L_TAU0]
+    # the laws' constants; physical fluid model, slice-independent terms (traction.fluid_shear_stress)
+    (ba, bb, bc, bd, fa, fb, fc, fd, tau0, t0c, lss_r, lss_c1, lss_c2, lss_c3, lss_c4, lss_floor, beta_v, roe_ln,
+     roe_z) = _law_constants(lub)
     inv_tau0 = 1.0 / tau0
-    t0c = lub[L_T0C]
-    lss_r, lss_c1, lss_c2, lss_c3, lss_c4 = lub[L_LSS_R], lub[L_LSS_C1], lub[L_LSS_C2], lub[L_LSS_C3], lub[L_LSS_C4]
-    lss_floor = lub[L_LSS_FLOOR]
-    beta_v = lub[L_BETA_V]
-    roe_ln = lub[L_ROE_LN]
-    roe_z = lub[L_ROE_Z]
     den0 = lss_c2 + lss_c3 * t0c
     inv_ab = 1.0 / (a * b)
     inv_hc = 1.0 / hc if hc > 0.0 else 0.0
@@ -370,10 +415,6 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
                           u0, need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out)
         return
 
-    fx = fy = fz = 0.0
-    mbx = mby = mbz = 0.0
-    mrx = mry = mrz = 0.0
-    power = 0.0
     # rates of the sliding and entraining velocities along the major axis and the normal
     asx, asy, asz = wsy * mz - wsz * my, wsz * mx - wsx * mz, wsx * my - wsy * mx
     bsx, bsy, bsz = wsy * nz - wsz * ny, wsz * nx - wsx * nz, wsx * ny - wsy * nx
@@ -514,50 +555,10 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
             dbx, dby, dbz = d0bx + qx, d0by + qy, d0bz + qz
             drx, dry, drz = d0rx + qx, d0ry + qy, d0rz + qz
             if smag > 0.0:
-                f = -mu * qj / smag
-                tx, ty, tz = f * sx, f * sy, f * sz
-                fx += tx
-                fy += ty
-                fz += tz
-                mbx += dby * tz - dbz * ty
-                mby += dbz * tx - dbx * tz
-                mbz += dbx * ty - dby * tx
-                mrx -= dry * tz - drz * ty
-                mry -= drz * tx - drx * tz
-                mrz -= drx * ty - dry * tx
-                power += mu * qj * smag
-
+                add_point_traction(out, -mu * qj / smag, sx, sy, sz, dbx, dby, dbz, drx, dry, drz, mu * qj * smag)
             if do_roll and uj > 0.0:
-                hx, hy, hz = ex * inv_u, ey * inv_u, ez * inv_u
-                r1 = math.sqrt(dbx * dbx + dby * dby + dbz * dbz)
-                c = fr * two_rx
-                p1 = c / r1
-                # ball: shear -fr at p, pressure p1 through its centre
-                gb = p1 - fr
-                fx += gb * hx
-                fy += gb * hy
-                fz += gb * hz
-                mbx -= fr * (dby * hz - dbz * hy)
-                mby -= fr * (dbz * hx - dbx * hz)
-                mbz -= fr * (dbx * hy - dby * hx)
-                # race: shear -fr at p, pressure p2 = 2 fr - p1 through its centre of curvature
-                # p - R2 n_j with p2 R2 = 2 fr rx:  moment (p - cr) x ((p2 - fr) h) - 2 fr rx (n_j x h)
-                gr = fr - p1
-                mrx += gr * (dry * hz - drz * hy) - c * (njy * hz - njz * hy)
-                mry += gr * (drz * hx - drx * hz) - c * (njz * hx - njx * hz)
-                mrz += gr * (drx * hy - dry * hx) - c * (njx * hy - njy * hx)
-                power += 2.0 * fr * uj
-    # race force is -(ball force) exactly
-    out[0] = fx
-    out[1] = fy
-    out[2] = fz
-    out[3] = mbx
-    out[4] = mby
-    out[5] = mbz
-    out[6] = mrx
-    out[7] = mry
-    out[8] = mrz
-    out[9] = power
+                add_point_rolling(out, fr, uj, ex * inv_u, ey * inv_u, ez * inv_u, dbx, dby, dbz, drx, dry, drz, njx,
+                                  njy, njz, two_rx)
 
 
 @njit(cache=True, error_model="numpy")
@@ -858,16 +859,9 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
                 k_zh_u0 = k_zh * math.exp(ln_zh + 0.648 * math.log(u0))
     inv_u0 = 1.0 / u0 if u0 > 0.0 else 0.0
     # film law (traction.fluid_shear_stress, the strip loop's fast forms): contact-level constants
-    ba, bb, bc, bd = lub[L_BA], lub[L_BB], lub[L_BC], lub[L_BD]
-    fa, fb, fc, fd = lub[L_FA], lub[L_FB], lub[L_FC], lub[L_FD]
+    (ba, bb, bc, bd, fa, fb, fc, fd, tau0, t0c, lss_r, c1, c2, c3, c4, lss_floor, beta_v, roe_ln,
+     roe_z) = _law_constants(lub)
     phys = need_f and fluid_kind != 0 and hc > 0.0
-    tau0 = lub[L_TAU0]
-    t0c = lub[L_T0C]
-    lss_r, c1, c2, c3, c4 = lub[L_LSS_R], lub[L_LSS_C1], lub[L_LSS_C2], lub[L_LSS_C3], lub[L_LSS_C4]
-    lss_floor = lub[L_LSS_FLOOR]
-    beta_v = lub[L_BETA_V]
-    roe_ln = lub[L_ROE_LN]
-    roe_z = lub[L_ROE_Z]
     inv_den0 = 1.0 / (c2 + c3 * t0c)
     l2x_c = 0.0  # ln 2x = ln u_s + l2x_c + Roelands' pressure term, x = η(p̄) u_s/(h τ0)
     visco = False
@@ -883,10 +877,6 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             sol_c = lub[L_SFLEX] * b * inv_hc  # solids in series (Kalker L1)
     p_c = 0.375 * q / (a * b)  # p̄ = p_c √(1 − ξ²)
     two_rx = 2.0 * rx
-    fx = fy = fz = 0.0
-    mbx = mby = mbz = 0.0
-    mrx = mry = mrz = 0.0
-    power = 0.0
     for k in range(nroot + 1):
         lo = -1.0 if k == 0 else (z1 if k == 1 else z2)
         hi = 1.0 if k == nroot else (z1 if k == 0 else z2)
@@ -958,18 +948,7 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
                         mu += (tau / pbar - mu) * wfl
                     else:
                         mu -= mu * wfl
-                f = -mu * qj / smag
-                tx, ty, tz = f * sx, f * sy, f * sz
-                fx += tx
-                fy += ty
-                fz += tz
-                mbx += dby * tz - dbz * ty
-                mby += dbz * tx - dbx * tz
-                mbz += dbx * ty - dby * tx
-                mrx -= dry * tz - drz * ty
-                mry -= drz * tx - drx * tz
-                mrz -= drx * ty - dry * tx
-                power += mu * qj * smag
+                add_point_traction(out, -mu * qj / smag, sx, sy, sz, dbx, dby, dbz, drx, dry, drz, mu * qj * smag)
     # rolling resistance and oil-film force on the fixed Gauss-Jacobi nodes (the line-load factor in the weight)
     row = 0 if reg == 0 else 1
     for j in range(ROLL_NODES if do_roll else 0):
@@ -990,32 +969,8 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             fr = k_zh * wgt * math.exp(0.648 * math.log(uj) + ln_zh)
         dbx, dby, dbz = d0bx + x * mx + off * nx, d0by + x * my + off * ny, d0bz + x * mz + off * nz
         drx, dry, drz = d0rx + x * mx + off * nx, d0ry + x * my + off * ny, d0rz + x * mz + off * nz
-        hx, hy, hz = ex * inv_u, ey * inv_u, ez * inv_u
-        r1 = math.sqrt(dbx * dbx + dby * dby + dbz * dbz)
-        c = fr * two_rx
-        p1 = c / r1
-        gb = p1 - fr
-        fx += gb * hx
-        fy += gb * hy
-        fz += gb * hz
-        mbx -= fr * (dby * hz - dbz * hy)
-        mby -= fr * (dbz * hx - dbx * hz)
-        mbz -= fr * (dbx * hy - dby * hx)
-        gr = fr - p1
-        mrx += gr * (dry * hz - drz * hy) - c * (njy * hz - njz * hy)
-        mry += gr * (drz * hx - drx * hz) - c * (njz * hx - njx * hz)
-        mrz += gr * (drx * hy - dry * hx) - c * (njx * hy - njy * hx)
-        power += 2.0 * fr * uj
-    out[0] = fx
-    out[1] = fy
-    out[2] = fz
-    out[3] = mbx
-    out[4] = mby
-    out[5] = mbz
-    out[6] = mrx
-    out[7] = mry
-    out[8] = mrz
-    out[9] = power
+        add_point_rolling(out, fr, uj, ex * inv_u, ey * inv_u, ez * inv_u, dbx, dby, dbz, drx, dry, drz, njx, njy,
+                          njz, two_rx)
 
 
 # --------------------------------------------------------------------------- Python side

@@ -137,21 +137,9 @@ def coulomb_on_slices(q, a, r_dev, centre, normal, major, bc, vb, wb, rc, vr, wr
         u = math.sqrt(ur0 * ur0 + ur1 * ur1 + ur2 * ur2)
         den = math.sqrt(vs * vs + (s0 * u) ** 2 + vref * vref)
         c = -mu0 * qk / den
-        f0 = c * vs0
-        f1 = c * vs1
-        f2 = c * vs2
         if k == nsl // 2:
             srr_c = vs / max(u, 1e-12)
-        out[0] += f0
-        out[1] += f1
-        out[2] += f2
-        out[3] += rb1 * f2 - rb2 * f1
-        out[4] += rb2 * f0 - rb0 * f2
-        out[5] += rb0 * f1 - rb1 * f0
-        out[6] -= rr1 * f2 - rr2 * f1
-        out[7] -= rr2 * f0 - rr0 * f2
-        out[8] -= rr0 * f1 - rr1 * f0
-        out[9] += -(f0 * vs0 + f1 * vs1 + f2 * vs2)
+        _sl.add_point_traction(out, c, vs0, vs1, vs2, rb0, rb1, rb2, rr0, rr1, rr2, -c * vs * vs)
     return srr_c
 
 
