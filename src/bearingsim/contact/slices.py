@@ -378,10 +378,16 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
         if u0 > 0.0:
             theta += 0.5 * _FLASH * math.sqrt(2.0 * b / u0) / lub[L_EFFUS]
 
-    inv_n = 1.0 / abs(n_slices)  # (n_slices < 0: Gauss quadrature below; the strip constants are unused)
-    width = 2.0 * a * inv_n
     need_b = wfl < 1.0
     need_f = wfl > 0.0
+    fr_scale = phi * wfl
+    if n_slices < 0:  # Gauss quadrature: its own constants (the strip ones below are not needed)
+        _gauss_quadrature(-n_slices, q, a, b, curv, nx, ny, nz, mx, my, mz, c0x - cbx, c0y - cby, c0z - cbz,
+                          c0x - crx, c0y - cry, c0z - crz, s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez,
+                          u0, need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out)
+        return
+    inv_n = 1.0 / n_slices
+    width = 2.0 * a * inv_n
     phys = need_f and fluid_kind != 0
     # the laws' constants; physical fluid model, slice-independent terms (traction.fluid_shear_stress)
     (ba, bb, bc, bd, fa, fb, fc, fd, tau0, t0c, lss_r, lss_c1, lss_c2, lss_c3, lss_c4, lss_floor, beta_v, roe_ln,
@@ -401,7 +407,6 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     ln_eta0 = math.log(eta0) if phys else 0.0
     # rolling resistance (traction.rolling_resistance_zh / _ir) with the slice-independent factor
     # F_R = k_zh u^0.648 (Q_j/Q)^0.246,  k_zh = 29.2 (Rx/α) L (G η0/(E' Rx))^0.648 (Q/(L E' Rx))^0.246
-    fr_scale = phi * wfl
     k_zh = 0.0
     if do_roll and reg != 0:
         k_zh = (29.2 * (rx / alpha) * width * fr_scale
@@ -409,11 +414,6 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
                            + 0.246 * math.log(q / (width * e_eff * rx))))
     k_ir = MARTIN_ROLLING * width * math.sqrt(eta0 * q / width) * fr_scale
     two_rx = 2.0 * rx
-    if n_slices < 0:
-        _gauss_quadrature(-n_slices, q, a, b, curv, nx, ny, nz, mx, my, mz, c0x - cbx, c0y - cby, c0z - cbz,
-                          c0x - crx, c0y - cry, c0z - crz, s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez,
-                          u0, need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out)
-        return
 
     # rates of the sliding and entraining velocities along the major axis and the normal
     asx, asy, asz = wsy * mz - wsz * my, wsz * mx - wsx * mz, wsx * my - wsy * mx
