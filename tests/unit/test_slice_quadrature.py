@@ -193,7 +193,9 @@ def test_gauss_rule_rolling_resistance_converges_to_the_strip_limit(spin):
     """Traction off (μ ≡ 0), rolling resistance and oil-film force only (Zhou & Hoeprich 1991 per unit
     length, seed eqs. 4–5): the Gauss rule's 4 fixed Gauss–Jacobi nodes give the strip model's limit — 4096
     strips, whose own error falls as n^−1.25 (the (1 − ξ²)^0.246 edge factor) — within 1e-4 of the largest
-    entry, forces, moments and power, with and without spin (the entraining speed varies across the ellipse)."""
+    entry, forces, moments and power, with and without spin (the entraining speed varies across the ellipse),
+    and closer to it than 1024 strips are (measured 5.0e-6 against 2.3e-5; the 4096-strip reference's own error,
+    from that n^−1.25 convergence, is ≈ 7e-6)."""
     lub = _lub(model="fluid", fluid_model="curve", fluid_curve=(0.0, 0.06, 0.01, 0.045))
     lub[S.L_FA:S.L_FD + 1] = 0.0  # the curve μ(s) = (A + B s)e^(−C s) + D with A = B = D = 0: no traction
     wb = np.array([-2.5 / R_BALL, 0.0, spin])
@@ -207,4 +209,4 @@ def test_gauss_rule_rolling_resistance_converges_to_the_strip_limit(spin):
     scale = np.max(np.abs(ref))
     assert scale > 0 and ref[9] > 0
     strip_err = np.max(np.abs(ref2 - ref)) / scale  # the strips' own convergence: 1024 against 4096
-    assert np.max(np.abs(out - ref)) / scale < max(1e-4, 2 * strip_err), (out, ref, strip_err)
+    assert np.max(np.abs(out - ref)) / scale < min(1e-4, strip_err), (out, ref, strip_err)

@@ -1178,9 +1178,6 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
         theta = hc / (12 * lub[L_KOIL]) + (0.5 * _FLASH * math.sqrt(2 * b / u0) / lub[L_EFFUS] if u0 > 0 else 0.0)
     lss = [lub[k] for k in (L_LSS_R, L_LSS_C1, L_LSS_C2, L_LSS_C3, L_LSS_C4, L_LSS_FLOOR)]
 
-    def tau_limit(pbar, dT):
-        return max(lss[0] * (lss[1] * pbar / (lss[2] + lss[3] * (lub[L_T0C] + dT)) - lss[4]), lss[5] * pbar)
-
     def point_mu(smag, uj, pbar, chord):
         """μ at one point: sliding speed, entraining speed, mean pressure across the chord, chord length."""
         sr = smag / uj if uj > 0 else 1e300
@@ -1192,22 +1189,14 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                 muf = traction.four_parameter.py_func(sr, *lub[L_FA:L_FD + 1])
             else:
                 eta_p = traction.roelands_viscosity.py_func(pbar, eta0, lub[L_ROE_LN], lub[L_ROE_Z])
-
-                def stress(dT):
-                    eta = eta_p * math.exp(-lub[L_BETA_V] * dT)
-                    tl = tau_limit(pbar, dT)
-                    return tl * math.tanh(lub[L_TAU0] * math.asinh(eta * (smag / hc) / lub[L_TAU0]) / tl)
-
-                if hc <= 0:
-                    tau = 0.0
-                else:
-                    tau = stress(0.0)
-                    if theta > 0:
-                        t1 = stress(theta * tau * smag)
-                        tau = tau * tau / (2 * tau - t1)
+                tau = 0.0
+                if hc > 0:
+                    tau = traction.fluid_shear_stress.py_func(pbar, smag, hc, theta, eta_p, lub[L_TAU0], lub[L_T0C],
+                                                              *lss, lub[L_BETA_V])
                     if lub[L_VISCO] != 0 and lss[0] > 0 and uj > 0:
                         # Johnson-Tevaarwerk elastic/plastic film: G = τ_L(p̄, t₀)/r_L over the chord
-                        g_mod = tau_limit(pbar, 0.0) / lss[0] * lub[L_GF_SCALE]
+                        g_mod = (traction.limiting_shear_stress.py_func(pbar, lub[L_T0C], *lss) / lss[0]
+                                 * lub[L_GF_SCALE])
                         ser = 1.0 / (1.0 + g_mod * lub[L_SFLEX] * b / hc)  # solids in series (Kalker L1)
                         tau = traction.elastic_plastic_mean_stress.py_func(tau, g_mod * chord * sr / hc * ser)
                 muf = tau / pbar
