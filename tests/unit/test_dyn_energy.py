@@ -67,7 +67,7 @@ def _setup(tol, **model_kw):
 
 def test_energy_conserved_without_friction_and_damping():
     drifts = []
-    for tol in (1e-8, 1e-10):
+    for tol in (1e-7, 1e-11):
         m, st = _setup(tol)
         e0, ke0, _ = total_energy(m, st)
         worst = 0.0
@@ -79,11 +79,14 @@ def test_energy_conserved_without_friction_and_damping():
             cage_hits = max(cage_hits, st.sample()["cage_contact_load"].max())
         assert cage_hits > 0, "the test must exercise the pocket contacts"
         drifts.append(worst / ke0)
-    # relative to the initial kinetic energy.  Measured: 9.4e-6, 2.7e-6, 1.1e-6, 4.5e-7, 1.9e-7 at tol 1e-7 … 1e-11,
-    # i.e. convergence as ≈ tol^0.4; contact onsets, where the Hertz force ∝ δ^1.5 is not smooth, are the likely
-    # limit (with the earlier point-cloud pocket contact the drift was ≈ 20× larger)
+    # relative to the initial kinetic energy.  Measured (per-vector error scale): 5.8e-6, 2.3e-6, 8.8e-7, 4.3e-7,
+    # 9.1e-8 at tol 1e-7 … 1e-11 (per-component scale: 9.4e-6, 2.7e-6, 1.1e-6, 5.4e-7, 1.9e-7), i.e. convergence
+    # as ≈ tol^0.4; contact onsets, where the Hertz force ∝ δ^1.5 is not smooth, are the likely limit (with the
+    # earlier point-cloud pocket contact the drift was ≈ 20× larger).  The worst drift over 20 samples is a noisy
+    # statistic (± 30 % from one decade to the next as the steps land elsewhere on an impact), so the
+    # convergence is asked over four decades: ≈ 40–60× expected, > 10× asked.
     assert drifts[1] < 1e-6, f"energy drift {drifts}"
-    assert drifts[0] / drifts[1] > 4, f"drift must shrink with the tolerance: {drifts}"
+    assert drifts[0] / drifts[1] > 10, f"drift must shrink with the tolerance: {drifts}"
 
 
 def test_deterministic_and_restartable():

@@ -201,11 +201,12 @@ def test_stepper_advances_through_the_integrator_contract(method, monkeypatch):
         common = (fo.rhs_args, ref._args, t, t_end, ref.y, h, ref.atol, ref.rtol, ref.h_min,
                   ref.max_steps_per_interval, ref._info)
         if method == "dopri5":
-            status, t, h = kernel(*common)
+            status, t, h = kernel(*common, ref.vec)
         elif method == "ros2w":
-            status, t, h = kernel(*common, ref._blk, md.N_BALL, ref.jac_every)
+            status, t, h = kernel(*common, ref._blk, md.N_BALL, ref.jac_every, ref.vec)
         else:
-            status, t, h = kernel(*common, ref._blk, md.N_BALL, ref.jac_every, ref._ws, ref._rmass, ref._bmass)
+            status, t, h = kernel(*common, ref._blk, md.N_BALL, ref.jac_every, ref._ws, ref._rmass, ref._bmass,
+                                  vec=ref.vec)
         assert status == ig.OK
         steps += int(ref._info[0])
     assert st.y.tobytes() == ref.y.tobytes()

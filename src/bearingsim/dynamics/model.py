@@ -444,7 +444,9 @@ def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-
     length_scale / pitch radius [rad]): contact approaches of ~10 µm sit on ball
     coordinates of ~30 mm, so a relative tolerance on positions would be meaningless.
     Velocities get tol × speed_scale [m/s] absolute plus tol relative; angular
-    velocities tol × rate_scale [rad/s] plus tol relative.
+    velocities tol × rate_scale [rad/s] plus tol relative.  The relative part of a ball's or a
+    cage's velocity or angular velocity is taken of the whole vector's magnitude
+    (:func:`error_vectors`), that of the ring's rates of each component.
     """
     n = model.n_state
     atol = np.empty(n)
@@ -478,6 +480,37 @@ def tolerance_vectors(model: Model, tol: float = 1e-6, length_scale: float = 1e-
         atol[etad] = tol * speed_scale * sm
         rtol[etad] = tol
     return atol, rtol
+
+
+def error_vectors(model: Model) -> np.ndarray:
+    """int64[n_state, 2]: (start, stop) of the vector whose Euclidean norm each state component's relative
+    tolerance is measured on (:func:`bearingsim.dynamics.integrate.common.error_scale`).
+
+    The velocity [m/s] and the angular velocity [rad/s] of every ball and cage are vectors: their three
+    components share one error scale, tol × (scale + |v|), the same in any frame.  Per component, a ball's
+    velocity or spin component that passes through zero as the ball orbits was held to tol × scale, several
+    times tighter than its neighbours for no physical reason, and in the slow cells of the hub study such a
+    component held the step (docs/dynamics.md, fourth and sixth passes).  Every other component (positions,
+    the ring's rates, the cage's modal coordinates) is its own vector (i, i + 1).
+    """
+    n = model.n_state
+    vec = np.empty((n, 2), dtype=np.int64)
+    vec[:, 0] = np.arange(n)
+    vec[:, 1] = np.arange(1, n + 1)
+
+    def group(start):
+        vec[start:start + 3, 0] = start
+        vec[start:start + 3, 1] = start + 3
+
+    for k in range(model.n_balls):
+        o = ly.N_RING + ly.N_BALL * k
+        group(o + 3)
+        group(o + 6)
+    for c in range(model.n_cages):
+        o = model.cage_offset + ly.N_CAGE * c
+        group(o + 3)
+        group(o + 9)
+    return vec
 
 
 def describe_component(model: Model, i: int) -> str:

@@ -71,10 +71,14 @@ class Stepper:
     rejected: int = 0
     atol: np.ndarray = field(default=None, repr=False)
     rtol: np.ndarray = field(default=None, repr=False)
+    #: (start, stop) of the vector each component's relative tolerance is measured on (:func:`.model.error_vectors`)
+    vec: np.ndarray = field(default=None, repr=False)
 
     def __post_init__(self):
         if self.atol is None or self.rtol is None:
             self.atol, self.rtol = md.tolerance_vectors(self.model, self.tol)
+        if self.vec is None:
+            self.vec = md.error_vectors(self.model)
         if self.method not in ig.METHODS:
             raise InputError("integrator", f"unknown integrator {self.method!r}", "use dopri5, ros2w or ros34w")
         self._args = fo.args_of(self.model, self.loadspec)
@@ -93,16 +97,16 @@ class Stepper:
         self.threads = resolve_threads(self.threads)
         fun = fo.rhs_args_threaded if self.threads > 1 else fo.rhs_args
         kernel = engine_kernel(ig.METHODS[self.method].__name__.rsplit(".", 1)[1], fun)
-        self.workspace = ig.Workspace(fun, self._args, self.y, self.atol, self.rtol, blk=self._blk, kernel=kernel,
-                                      nbk=md.N_BALL, rmass=self._rmass, bmass=self._bmass, jacobian=self._ws,
-                                      info=self._info)
+        self.workspace = ig.Workspace(fun, self._args, self.y, self.atol, self.rtol, vec=self.vec, blk=self._blk,
+                                      kernel=kernel, nbk=md.N_BALL, rmass=self._rmass, bmass=self._bmass,
+                                      jacobian=self._ws, info=self._info)
 
     def advance(self, t_end: float) -> None:
         """Integrate to t_end [s] with ``METHODS[method].advance(workspace, t_end)``; raises
         :class:`SimulationError` naming the time and body on failure."""
         ws = self.workspace
         # the stepper's fields are the state (tests and checkpoints set them): the workspace takes them
-        ws.y, ws.atol, ws.rtol, ws.jacobian = self.y, self.atol, self.rtol, self._ws
+        ws.y, ws.atol, ws.rtol, ws.vec, ws.jacobian = self.y, self.atol, self.rtol, self.vec, self._ws
         ws.t, ws.h, ws.h_min = self.t, self.h, self.h_min
         ws.max_steps, ws.jac_every = self.max_steps_per_interval, self.jac_every
         ws.steps, ws.rejected = self.steps, self.rejected

@@ -31,7 +31,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .common import OK, Status
+from .common import NO_VECTORS, OK, Status
 
 
 def ros34_workspace(nb: int, nbk: int, coupled: bool) -> tuple:
@@ -59,6 +59,9 @@ class Workspace:
     y: np.ndarray  #: state (integrated in place)
     atol: np.ndarray  #: absolute tolerance per component
     rtol: np.ndarray  #: relative tolerance per component
+    #: int64[n, 2]: (start, stop) of the vector each component's relative tolerance is measured on
+    #: (:func:`.common.error_scale`); no rows: each component on its own
+    vec: np.ndarray = field(default_factory=lambda: NO_VECTORS)
     t: float = 0.0  #: time [s]
     h: float = 1e-7  #: proposed next step [s]
     h_min: float = 1e-13  #: smallest step allowed [s]

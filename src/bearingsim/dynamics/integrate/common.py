@@ -34,10 +34,34 @@ STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (dive
                NOT_FINITE: "the state became non-finite", MAX_STEPS: "step limit reached"}
 
 
+#: no vector groups: every component's relative tolerance is on its own magnitude (:func:`error_scale`)
+NO_VECTORS = np.zeros((0, 2), dtype=np.int64)
+
+
 @njit(cache=True)
-def error_norm(e, y, ynew, atol, rtol, info):
+def error_scale(i, y, ynew, atol, rtol, vec):
+    """Error scale of component i: atol_i + rtol_i max(|y|, |ynew|) (Hairer, Nørsett & Wanner, *Solving
+    ODEs I*, 1993, eq. II.4.11), where |·| is the component's own magnitude, or, when ``vec`` (int64[n, 2])
+    holds rows (start, stop), the Euclidean norm of y[start:stop], the vector the component belongs to.
+
+    With vectors, a velocity's three components share one scale, the same in every frame; per component, one
+    that passes through zero in the ball's orbit was held several times tighter than its neighbours
+    (docs/dynamics.md, sixth pass).  ``vec`` with no rows: per component.
+    """
+    if vec.shape[0] == 0:
+        return atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i]))
+    a = 0.0
+    b = 0.0
+    for j in range(vec[i, 0], vec[i, 1]):
+        a += y[j] * y[j]
+        b += ynew[j] * ynew[j]
+    return atol[i] + rtol[i] * np.sqrt(max(a, b))
+
+
+@njit(cache=True)
+def error_norm(e, y, ynew, atol, rtol, info, vec=NO_VECTORS):
     """Scaled RMS norm of the local error estimate e (Hairer, Nørsett & Wanner, *Solving ODEs I*,
-    1993, eq. II.4.11): √(Σ (e_i / (atol_i + rtol_i max(|y_i|, |ynew_i|)))² / n).
+    1993, eq. II.4.11): √(Σ (e_i / s_i)² / n), s_i = :func:`error_scale` (``vec``: its vector groups).
 
     info[2], info[3] ← index and scaled error of the worst component.  Returns (err, finite);
     a non-finite component gives err = 1e10 and finite = False.
@@ -48,7 +72,7 @@ def error_norm(e, y, ynew, atol, rtol, info):
     emax = -1.0
     finite = True
     for i in range(n):
-        r = e[i] / (atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i])))
+        r = e[i] / error_scale(i, y, ynew, atol, rtol, vec)
         r2 = r * r
         if not np.isfinite(r2):
             finite = False

@@ -25,6 +25,7 @@ from numba import njit
 from .base import Workspace
 from .common import (
     MAX_STEPS,
+    NO_VECTORS,
     NOT_FINITE,
     OK,
     STEP_TOO_SMALL,
@@ -74,7 +75,7 @@ def stages(fun, args, t, y, h, k1, k2, k3, k4, k5, k6, k7, ytmp, ynew):
 
 
 @njit
-def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
+def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, vec=NO_VECTORS):
     """Integrate y' = fun(t, y) from t to t_end in place with DOPRI5 and error control.
 
     Parameters
@@ -85,6 +86,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
     h_min : smallest step allowed [s]; max_steps : int
     info : float[4] ← steps accepted, steps rejected, index of the component with the
         largest error at the last step, that error
+    vec : int64[n, 2] or no rows — the vector each component's relative tolerance is measured on
+        (:func:`.common.error_scale`; the stepper's are :func:`bearingsim.dynamics.model.error_vectors`)
 
     Returns (status, t reached, proposed next step).
     """
@@ -111,7 +114,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
         stages(fun, args, t, y, hs, k1, k2, k3, k4, k5, k6, k7, ytmp, ynew)
         for i in range(n):
             evec[i] = hs * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
-        err, finite = error_norm(evec, y, ynew, atol, rtol, info)
+        err, finite = error_norm(evec, y, ynew, atol, rtol, info, vec)
         if err <= 1.0:
             for i in range(n):
                 y[i] = ynew[i]
@@ -164,8 +167,8 @@ def advance(ws: Workspace, t_end: float) -> Status:
     kernel = ws.kernel
     if kernel is not None:
         status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
-                              ws.info)
+                              ws.info, ws.vec)
     else:
         status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
-                                 ws.max_steps, ws.info)
+                                 ws.max_steps, ws.info, ws.vec)
     return ws.finish(status, t, h)

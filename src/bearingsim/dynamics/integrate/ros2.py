@@ -16,7 +16,7 @@ import numpy as np
 from numba import njit
 
 from .base import Workspace
-from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm
+from .common import MAX_STEPS, NO_VECTORS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm
 from .jacobian import block_jac
 from .linalg import apply_w
 
@@ -24,7 +24,7 @@ ROS2_GAMMA = 1.0 + 1.0 / np.sqrt(2.0)
 
 
 @njit
-def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every):
+def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, vec=NO_VECTORS):
     """ROS2 from t to t_end in place (module docstring).  J: the blocks of ``nbk`` states starting at
     ``blk`` (start indices).  Same other arguments and return values as :func:`.dopri5.integrate`."""
     n = y.shape[0]
@@ -76,7 +76,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         for i in range(n):
             ynew[i] = y[i] + hs * (1.5 * k1[i] + 0.5 * k2[i])
             evec[i] = 0.5 * hs * (k1[i] + k2[i])
-        err, finite = error_norm(evec, y, ynew, atol, rtol, info)
+        err, finite = error_norm(evec, y, ynew, atol, rtol, info, vec)
         if err <= 1.0:
             for i in range(n):
                 y[i] = ynew[i]
@@ -105,8 +105,8 @@ def advance(ws: Workspace, t_end: float) -> Status:
     kernel = ws.kernel
     if kernel is not None:
         status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
-                              ws.info, ws.blk, ws.nbk, ws.jac_every)
+                              ws.info, ws.blk, ws.nbk, ws.jac_every, ws.vec)
     else:
         status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
-                                 ws.max_steps, ws.info, ws.blk, ws.nbk, ws.jac_every)
+                                 ws.max_steps, ws.info, ws.blk, ws.nbk, ws.jac_every, ws.vec)
     return ws.finish(status, t, h)

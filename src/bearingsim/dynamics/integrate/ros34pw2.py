@@ -21,7 +21,19 @@ import numpy as np
 from numba import njit
 
 from .base import Workspace, ros34_workspace
-from .common import MAX_STEPS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm, pi_factor, reject_factor
+from .common import (
+    MAX_STEPS,
+    NO_VECTORS,
+    NOT_FINITE,
+    OK,
+    STEP_TOO_SMALL,
+    Status,
+    clip_step,
+    error_norm,
+    error_scale,
+    pi_factor,
+    reject_factor,
+)
 from .jacobian import block_jac, ring_jac, ring_rows
 from .linalg import NR, coupled_w, coupled_w_threaded, j_times, no_coupling, w_inverse, w_solve
 
@@ -84,7 +96,7 @@ def stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft,
 
 @njit
 def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
-              rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False):
+              rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False, vec=NO_VECTORS):
     """ROS34PW2 from t to t_end in place (module docstring).
 
     ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
@@ -96,7 +108,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     step adds each component's squared scaled error to stats[i] and 1 to stats[n + i] of its largest component
     (the results do not change).  ``threaded``: W's ball blocks formed on ``numba.get_num_threads()`` threads
     (:func:`.linalg.coupled_w_threaded`, the same result bit for bit; 33 µs per step size serially on the hub
-    case, issue 14).
+    case, issue 14).  ``vec``: the vectors the relative tolerances are measured on (:func:`.common.error_scale`).
     """
     n = y.shape[0]
     nb = blk.shape[0]
@@ -166,10 +178,10 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
                        + (R34_M[2] - R34_E[2]) * k3[i] + (R34_M[3] - R34_E[3]) * k4[i])
-        err, finite = error_norm(evec, y, ynew, atol, rtol, info)
+        err, finite = error_norm(evec, y, ynew, atol, rtol, info, vec)
         if stats.shape[0] == 2 * n:
             for i in range(n):
-                r = evec[i] / (atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i])))
+                r = evec[i] / error_scale(i, y, ynew, atol, rtol, vec)
                 stats[i] += r * r
             stats[n + int(info[2])] += 1.0
         if err <= 1.0:
@@ -247,9 +259,9 @@ def advance(ws: Workspace, t_end: float) -> Status:
     kernel = ws.kernel
     if kernel is not None:
         status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
-                              ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass)
+                              ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass, ws.vec)
     else:
         status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
                                  ws.max_steps, ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass,
-                                 ws.bmass)
+                                 ws.bmass, vec=ws.vec)
     return ws.finish(status, t, h)

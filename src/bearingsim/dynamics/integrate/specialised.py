@@ -106,46 +106,47 @@ def _cached(func):
 
 # ---- DOPRI5 ------------------------------------------------------------------------------------------------
 @_cached
-def dopri5_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
+def dopri5_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, vec):
     """:func:`.dopri5.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
-    return dopri5.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info)
+    return dopri5.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, vec)
 
 
 @_cached
-def dopri5_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info):
+def dopri5_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, vec):
     """:func:`.dopri5.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
-    return dopri5.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info)
+    return dopri5.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, vec)
 
 
 # ---- ROS2 --------------------------------------------------------------------------------------------------
 @_cached
-def ros2_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every):
+def ros2_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, vec):
     """:func:`.ros2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
     return ros2.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk,
-                          jac_every)
+                          jac_every, vec)
 
 
 @_cached
-def ros2_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every):
+def ros2_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, vec):
     """:func:`.ros2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
     return ros2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk,
-                          nbk, jac_every)
+                          nbk, jac_every, vec)
 
 
 # ---- ROS34PW2 (without the profiling statistics of bench_dynamics --steps, which calls the generic kernel) ---
 @_cached
-def ros34_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass, bmass):
+def ros34_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass, bmass,
+                 vec):
     """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
     return ros34pw2.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk,
-                              jac_every, ws, rmass, bmass)
+                              jac_every, ws, rmass, bmass, np.zeros(0), False, vec)
 
 
 @_cached
 def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass,
-                   bmass):
+                   bmass, vec):
     """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
     return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
-                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True)
+                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec)
 
 
 #: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel
