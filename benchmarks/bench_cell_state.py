@@ -8,7 +8,7 @@ quadrature rule, node count and integrator — the same kernels as the run, with
 holds the step here" for states a short benchmark from the clean start never reaches (a 1 Hz cell's moment peak).
 
 Usage:  python benchmarks/bench_cell_state.py CASE CHECKPOINT --speed KMH --frequency HZ --cycles N
-            [--duration "0.5 ms"] [--slice-rule strips|gauss] [--n-slices N] [--jac-every 20]
+            [--duration "0.5 ms"] [--slice-rule strips|gauss] [--n-slices N] [--jac-every 20] [--steps]
 ``--cycles``: the cell's total cycles (start-up + measured, e.g. 10 for the defaults 2 + 8).  The state is the
 checkpoint's; a different rule or node count starts from it as it is (the first microseconds settle the balls).
 """
@@ -39,6 +39,7 @@ def main(argv=None):
     ap.add_argument("--slice-rule", default=None, choices=["strips", "gauss"])
     ap.add_argument("--n-slices", type=int, default=None)
     ap.add_argument("--jac-every", type=int, default=20)
+    ap.add_argument("--steps", action="store_true", help="profile what limits the step (bench_dynamics.py --steps)")
     a = ap.parse_args(argv)
     case = hd.cell_case(read_toml(a.case, "case"), a.case.parent, a.speed, a.frequency, a.cycles)
     z = np.load(a.checkpoint)
@@ -53,6 +54,14 @@ def main(argv=None):
                    jac_every=a.jac_every)
     st.advance(st.t + 2e-6)  # compiles
     dur = parse_quantity(a.duration, "time", "--duration")
+    if a.steps:
+        import sys
+
+        sys.path.insert(0, str(Path(__file__).resolve().parent))
+        from bench_dynamics import profile_steps
+
+        profile_steps(st, ls, dur, f"{a.speed:g} km/h, {a.frequency:g} Hz from t = {st.t:.4g} s")
+        return
     s0, r0 = st.steps, st.rejected
     c0 = time.process_time()
     st.advance(st.t + dur)

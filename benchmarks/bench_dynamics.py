@@ -151,13 +151,9 @@ def step_profile(name: str, duration: float, tolerance: float | None = None) -> 
     the summed squared scaled error over all attempted steps and how often the class held the largest
     component, the rejected steps, and the ten balls with the largest error share (with their inner contact
     load at the end: loaded or not)."""
-    import numpy as np
 
-    from bearingsim.dynamics import forces as fo
-    from bearingsim.dynamics import model as md
     from bearingsim.dynamics import run as R
     from bearingsim.dynamics.case import load_case
-    from bearingsim.dynamics.integrate import ros34pw2
 
     case = load_case(CASES[name])
     if tolerance:
@@ -165,6 +161,19 @@ def step_profile(name: str, duration: float, tolerance: float | None = None) -> 
     m, ls, y, _ = R.build(case)
     st = R.Stepper(m, ls, y.copy(), tol=case.tolerance, method="ros34w")
     st.advance(5e-5)
+    profile_steps(st, ls, duration, f"case ({name})")
+
+
+def profile_steps(st, ls, duration: float, label: str) -> None:
+    """The report of :func:`step_profile` for ``duration`` [s] from a ROS34PW2 stepper's present state (also used
+    by bench_cell_state.py --steps on a study cell's checkpoint)."""
+    import numpy as np
+
+    from bearingsim.dynamics import forces as fo
+    from bearingsim.dynamics import model as md
+    from bearingsim.dynamics.integrate import ros34pw2
+
+    m = st.model
     ws = st.workspace
     n = st.y.shape[0]
     stats = np.zeros(2 * n)
@@ -184,7 +193,7 @@ def step_profile(name: str, duration: float, tolerance: float | None = None) -> 
             classes[f"{lab} {ax}"] = bidx + off + k
     classes["cage (all states)"] = np.arange(oc, n)
     tot, wtot = e2.sum(), worst.sum()
-    print(f"case ({name}) ROS34PW2 tol {case.tolerance:g}: "
+    print(f"{label} ROS34PW2 tol {st.tol:g}: "
           f"{duration * 1e3:.3g} ms in {wall:.3g} s, {acc} steps ({rej} rejected), mean step "
           f"{duration / max(acc, 1) * 1e6:.3g} us, status {status}")
     print("  class: share of summed squared scaled error | share of attempts where it held the largest component")
