@@ -83,10 +83,10 @@ def test_groups_are_the_velocity_vectors_of_balls_and_cages():
     grouped = set()
     for k in range(MODEL.n_balls):
         o = ly.N_RING + ly.N_BALL * k
-        grouped |= {(o + 3, o + 6), (o + 6, o + 9)}
+        grouped |= {(o + ly.B_VEL, o + ly.B_VEL + 3), (o + ly.B_OMEGA, o + ly.B_OMEGA + 3)}
     for c in range(MODEL.n_cages):
         o = MODEL.cage_offset + ly.N_CAGE * c
-        grouped |= {(o + 3, o + 6), (o + 9, o + 12)}
+        grouped |= {(o + ly.K_VEL, o + ly.K_VEL + 3), (o + ly.K_THETA_DOT, o + ly.K_THETA_DOT + 3)}
     for i in range(n):
         start, stop = VEC[i]
         assert start <= i < stop

@@ -486,8 +486,9 @@ def error_vectors(model: Model) -> np.ndarray:
     """int64[n_state, 2]: (start, stop) of the vector whose Euclidean norm each state component's relative
     tolerance is measured on (:func:`bearingsim.dynamics.integrate.common.error_scale`).
 
-    The velocity [m/s] and the angular velocity [rad/s] of every ball and cage are vectors: their three
-    components share one error scale, tol × (scale + |v|), the same in any frame.  Per component, a ball's
+    The velocity [m/s] and the angular velocity [rad/s] of every ball and cage are vectors (the cage's rates
+    (θ̇, β̇y, β̇z), its angular velocity to first order in the tilt): their three components share one error
+    scale, tol × (scale + |v|), the same in any frame.  Per component, a ball's
     velocity or spin component that passes through zero as the ball orbits was held to tol × scale, several
     times tighter than its neighbours for no physical reason, and in the slow cells of the hub study such a
     component held the step (docs/dynamics.md, fourth and sixth passes).  Every other component (positions,
@@ -504,12 +505,12 @@ def error_vectors(model: Model) -> np.ndarray:
 
     for k in range(model.n_balls):
         o = ly.N_RING + ly.N_BALL * k
-        group(o + 3)
-        group(o + 6)
+        group(o + ly.B_VEL)
+        group(o + ly.B_OMEGA)
     for c in range(model.n_cages):
         o = model.cage_offset + ly.N_CAGE * c
-        group(o + 3)
-        group(o + 9)
+        group(o + ly.K_VEL)
+        group(o + ly.K_THETA_DOT)
     return vec
 
 
