@@ -66,21 +66,79 @@ NACC = 6
 
 
 #: work floats per ball in :func:`_one_ball` before race_contact's buffer (zero3, fb, mb, bp, g, gr, vg, tang,
-#: tmp: 3 each; res: 8)
-BALL_WORK = 35
+#: tmp: 3 each; res: 8; fbo, mbo: the outer contact's force and moment on the ball, 3 each)
+BALL_WORK = 41
 #: per-ball contributions: inner-ring force and moment, outer-ring force and moment (3 each), then the inner and
 #: outer power losses and the elastic energy (with diagnostics)
 NCONTRIB = 15
+#: per-ball row of the outer-contact memo (:func:`outer_memo_hit`): [0] 1 when the row holds a result, [1:10] the
+#: ball's position, velocity and angular velocity it was computed for, [10:22] the result: force and moment on the
+#: ball, force and moment on the outer ring (3 each)
+MEMO_W = 22
 
 
 @njit(cache=True)
-def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, zero3, fb, mb, bp,
-              g, gr, vg, tang, tmp, res, tbuf, fring, mring, fout, mout, ex):
+def no_memo():
+    """The ``memo`` of :func:`rhs` that holds nothing (every outer contact computed)."""
+    return np.zeros((0, MEMO_W))
+
+
+@njit(cache=True)
+def outer_memo_hit(memo, k, b, v, w):
+    """True when ``memo`` holds ball k's outer-raceway contact for exactly this ball state (b, v, w bit for bit).
+
+    The outer ring is fixed, so that contact depends on the ball's nine states alone (and on the model's constant
+    arrays): a right-hand side whose balls have not moved since the last one — the ten finite-difference sweeps of
+    the inner ring's Jacobian columns (:func:`bearingsim.dynamics.integrate.jacobian.ring_jac`) — takes it from the
+    memo instead of computing it again, and gets the very same numbers.  NaN never matches."""
+    if memo.shape[0] == 0:
+        return False
+    m = memo[k]
+    if m[0] != 1.0:
+        return False
+    for i in range(3):
+        if m[1 + i] != b[i] or m[4 + i] != v[i] or m[7 + i] != w[i]:
+            return False
+    return True
+
+
+@njit(cache=True)
+def outer_memo_put(memo, k, b, v, w, fbo, mbo, fo, mo):
+    """Store ball k's outer-contact result for the state (b, v, w) (nothing without a memo)."""
+    if memo.shape[0] == 0:
+        return
+    m = memo[k]
+    for i in range(3):
+        m[1 + i] = b[i]
+        m[4 + i] = v[i]
+        m[7 + i] = w[i]
+        m[10 + i] = fbo[i]
+        m[13 + i] = mbo[i]
+        m[16 + i] = fo[i]
+        m[19 + i] = mo[i]
+    m[0] = 1.0
+
+
+@njit(cache=True)
+def outer_memo_get(memo, k, fbo, mbo, fo, mo):
+    """The stored outer-contact result of ball k (after :func:`outer_memo_hit`)."""
+    m = memo[k]
+    for i in range(3):
+        fbo[i] = m[10 + i]
+        mbo[i] = m[13 + i]
+        fo[i] = m[16 + i]
+        mo[i] = m[19 + i]
+
+
+@njit(cache=True)
+def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, zero3, fb, mb,
+              bp, g, gr, vg, tang, tmp, res, fbo, mbo, tbuf, fring, mring, fout, mout, ex):
     """Ball k on its two raceways and its Newton–Euler equations (the body of :func:`balls_on_raceways`).
 
     zero3 … tbuf: work arrays (3 floats each, res 8, tbuf race_contact's buffer with the Coulomb slice table
     at 44:); fring, mring, fout, mout ← this ball's reactions on the inner ring (force, moment about c) and on
-    the outer ring; ex ← with diagnostics its inner and outer raceway power losses and elastic energy."""
+    the outer ring; ex ← with diagnostics its inner and outer raceway power losses and elastic energy.
+    ``memo``: the outer contacts of the last evaluation (:func:`outer_memo_hit`; not used with diagnostics)."""
     alpha = gp[ly.G_ALPHA]
     g0 = gp[ly.G_GX]
     g1 = gp[ly.G_GX + 1]
@@ -149,9 +207,20 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
     tang[0] = 0.0
     tang[1] = -sps
     tang[2] = cps
-    race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
-                 lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang, fb, mb, fout,
-                 mout, res, tbuf)
+    # (the outer contact into fbo, mbo, then added: a memo hit gives the same numbers as computing it)
+    if want or not outer_memo_hit(memo, k, b, v, w):
+        for i in range(3):
+            fbo[i] = 0.0
+            mbo[i] = 0.0
+        race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
+                     lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang,
+                     fbo, mbo, fout, mout, res, tbuf)
+        outer_memo_put(memo, k, b, v, w, fbo, mbo, fout, mout)
+    else:
+        outer_memo_get(memo, k, fbo, mbo, fout, mout)
+    for i in range(3):
+        fb[i] += fbo[i]
+        mb[i] += mbo[i]
     if want:
         s = par[kn.P_SIGN]
         diag[k, ly.D_QO] = res[0]
@@ -193,20 +262,21 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
 
 
 @njit(cache=True, parallel=True)
-def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work, contrib):
+def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work,
+                    contrib):
     """:func:`_one_ball` for every ball in a numba ``prange`` (threads: ``numba.set_num_threads``), each with
     its own work row; contrib[k] ← its reactions and diagnostics (layout of :func:`balls_on_raceways`)."""
     for k in prange(ball_row.shape[0]):
         wk = work[k]
         ck = contrib[k]
-        _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, wk[0:3],
+        _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, wk[0:3],
                   wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21], wk[21:24], wk[24:27], wk[27:35],
-                  wk[35:], ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15])
+                  wk[35:38], wk[38:41], wk[41:], ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15])
 
 
 @njit(cache=True)
 def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc, threads=False):
+                      diag, acc, memo, threads=False):
     """Every ball on its two raceways, and Newton–Euler for every ball.
 
     Inner raceway: the groove-curvature centre g in the ball's meridian plane of the tilted, displaced
@@ -239,7 +309,7 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
         for k in range(1, nb):
             for i in range(2 * nsl):
                 work[k, BALL_WORK + 44 + i] = work[0, BALL_WORK + 44 + i]
-        _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, work,
+        _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work,
                         contrib)
     else:
         # one thread: the body of _one_ball written out in the loop (one set of work arrays, no parallel region,
@@ -252,7 +322,9 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
         zero3, fb, mb, bp, g, gr, vg, tang, tmp = (wk[0:3], wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18],
                                                    wk[18:21], wk[21:24], wk[24:27])
         res = wk[27:35]
-        tbuf = wk[35:]
+        fbo = wk[35:38]
+        mbo = wk[38:41]
+        tbuf = wk[41:]
         fr, mr, fo, mo, ex = ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15]
         alpha = gp[ly.G_ALPHA]
         g0 = gp[ly.G_GX]
@@ -321,9 +393,20 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
             tang[0] = 0.0
             tang[1] = -sps
             tang[2] = cps
-            race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
-                         lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang, fb, mb, fo,
-                         mo, res, tbuf)
+            # (the outer contact into fbo, mbo, then added: a memo hit gives the same numbers as computing it)
+            if want or not outer_memo_hit(memo, k, b, v, w):
+                for i in range(3):
+                    fbo[i] = 0.0
+                    mbo[i] = 0.0
+                race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
+                             lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang,
+                             fbo, mbo, fo, mo, res, tbuf)
+                outer_memo_put(memo, k, b, v, w, fbo, mbo, fo, mo)
+            else:
+                outer_memo_get(memo, k, fbo, mbo, fo, mo)
+            for i in range(3):
+                fb[i] += fbo[i]
+                mb[i] += mbo[i]
             if want:
                 s = par[kn.P_SIGN]
                 diag[k, ly.D_QO] = res[0]
@@ -725,7 +808,7 @@ def global_diagnostics(gdiag, loads, mring, ax, mout, acc, omega):
 
 
 @njit(cache=True)
-def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, threads=False):
+def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads=False):
     """Time derivative of the state (equations of motion, inertial frame).
 
     The equations, one helper each: balls on the raceways (:func:`ball_inner_raceway`,
@@ -759,6 +842,8 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     lubs (2 n_rows × L_SIZE): lubrication parameters of the inner (2r) and outer (2r+1)
     contacts of row r for the sliced-ellipse kernel.
     diag (n_balls × NDB) and gdiag (NDG) receive output quantities when diag has rows.
+    memo (n_balls × MEMO_W, or no rows: :func:`no_memo`): the outer-raceway contacts of the last evaluation, reused
+    for a ball whose state has not changed since (:func:`outer_memo_hit`; the same result bit for bit).
     threads: the balls in parallel (:func:`balls_on_raceways`; same result bit for bit).
     """
     nb = ball_row.shape[0]
@@ -795,7 +880,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     loads_at(t, loadspec, loads)
     # ---- balls on the raceways
     balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc, threads)
+                      diag, acc, memo, threads)
     # ---- cages: pockets (with elastic modes), land guidance, equations
     oc0 = ly.N_RING + ly.N_BALL * nb
     rmc = np.empty((3, 3))
@@ -865,30 +950,31 @@ def evaluate(model, t, y, loadspec, want_diag=True, threads=False):
     diag = np.zeros((model.n_balls if want_diag else 0, ly.NDB))
     gdiag = np.zeros(ly.NDG)
     rhs(t, y, dy, model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.cage_modes, model.lub_array(),
-        loadspec, diag, gdiag, bool(threads))
+        loadspec, diag, gdiag, no_memo(), bool(threads))
     return dy, diag, gdiag
 
 
 @njit(cache=True)
 def rhs_args(t, y, dy, a):
     """:func:`rhs` with its arrays in one tuple (the integrator's calling convention)."""
-    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9])
+    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], a[10])
 
 
 @njit(cache=True)
 def rhs_args_threaded(t, y, dy, a):
     """:func:`rhs_args` with the balls on ``numba.get_num_threads()`` threads (the same result, bit for bit)."""
-    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], True)
+    rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], a[10], True)
 
 
-def args_of(model, loadspec, diag=None, gdiag=None):
-    """The argument tuple of :func:`rhs_args` (diagnostics off unless arrays are given)."""
+def args_of(model, loadspec, diag=None, gdiag=None, memo=True):
+    """The argument tuple of :func:`rhs_args` (diagnostics off unless arrays are given; with ``memo`` an
+    outer-contact memo of its own, :func:`outer_memo_hit`)."""
     if diag is None:
         diag = np.zeros((0, ly.NDB))
     if gdiag is None:
         gdiag = np.zeros(ly.NDG)
     return (model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.cage_modes, model.lub_array(), loadspec,
-            diag, gdiag)
+            diag, gdiag, np.zeros((model.n_balls, MEMO_W)) if memo else no_memo())
 
 
 def __getattr__(name: str):

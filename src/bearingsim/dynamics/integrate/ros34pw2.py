@@ -157,10 +157,13 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             fun(t, y, f0, args)
             have_f0 = True
         if need_jac or since >= jac_every:
-            block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
+            # the ring's columns first: their sweeps leave the balls where f0 put them, so the engine's right-hand
+            # side takes every outer contact from its memo (forces.outer_memo_hit) — after the ball sweeps the memo
+            # would hold perturbed balls and the first ring sweep would miss
             if coupled:
                 ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1)
                 ring_rows(jbr, rmass, bmass, jrb)
+            block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
             need_jac = False
             since = 0
             h_w = -1.0
