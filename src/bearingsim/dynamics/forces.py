@@ -968,7 +968,8 @@ def rhs_args_threaded(t, y, dy, a):
 
 def args_of(model, loadspec, diag=None, gdiag=None, memo=True):
     """The argument tuple of :func:`rhs_args` (diagnostics off unless arrays are given; with ``memo`` an
-    outer-contact memo of its own, :func:`outer_memo_hit`)."""
+    outer-contact memo of its own, :func:`outer_memo_hit`: it keys on the balls' states alone, so build a new tuple
+    when the model's arrays change between calls)."""
     if diag is None:
         diag = np.zeros((0, ly.NDB))
     if gdiag is None:
