@@ -72,8 +72,9 @@ BALL_WORK = 41
 #: outer power losses and the elastic energy (with diagnostics)
 NCONTRIB = 15
 #: per-ball row of the outer-contact memo (:func:`outer_memo_hit`): [0] 1 when the row holds a result, [1:10] the
-#: ball's position, velocity and angular velocity it was computed for, [10:22] the result: force and moment on the
-#: ball, force and moment on the outer ring (3 each)
+#: ball's position [m], velocity [m/s] and angular velocity [rad/s] it was computed for, [10:22] the result: force
+#: [N] and moment [N m] on the ball, force and moment on the outer ring (3 each; the kept copy of the loop body
+#: in balls_on_raceways repeats the memo's use, as it repeats the rest of _one_ball: a call per ball cost 7 % here)
 MEMO_W = 22
 
 
