@@ -161,106 +161,153 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
     ring (fr, mr about rcen).  res ← Q, δ, u(3), slide-roll ratio, power loss.  tbuf: work array;
     for the Coulomb stand-in tbuf[44:] holds its slices (:func:`slice_table`).
     """
-    d0 = b[0] - g[0]
-    d1 = b[1] - g[1]
-    d2 = b[2] - g[2]
+    (q, delta, u0, u1, u2, srr, power, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry, mrz) = race_contact_at(
+        b[0], b[1], b[2], v[0], v[1], v[2], w[0], w[1], w[2], g[0], g[1], g[2], vg_lin[0], vg_lin[1], vg_lin[2], worb,
+        rcen[0], rcen[1], rcen[2], vrace[0], vrace[1], vrace[2], wrace[0], wrace[1], wrace[2], kc, rgroove, half_d,
+        alpha, lub, gp, a_c, b_c, r_dev, tang[0], tang[1], tang[2], tbuf)
+    res[0] = q
+    res[1] = delta
+    res[2] = u0
+    res[3] = u1
+    res[4] = u2
+    res[5] = srr
+    res[6] = power
+    fb[0] += fbx
+    fb[1] += fby
+    fb[2] += fbz
+    mb[0] += mbx
+    mb[1] += mby
+    mb[2] += mbz
+    fr[0] += frx
+    fr[1] += fry
+    fr[2] += frz
+    mr[0] += mrx
+    mr[1] += mry
+    mr[2] += mrz
+
+
+@njit(cache=True, _nrt=False)
+def race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, gx, gy, gz, vgx, vgy, vgz, worb, rcx, rcy, rcz, vrx0, vry0,
+                    vrz0, wrx0, wry0, wrz0, kc, rgroove, half_d, alpha, lub, gp, a_c, b_c, r_dev, tx, ty, tz, tbuf):
+    """:func:`race_contact` on the vectors' components, returning (Q [N], δ [m], u (3), slide-roll ratio at the
+    centre, power loss [W], force on the ball (3) [N], moment on the ball (3) [N·m], force on the ring (3) [N],
+    moment on the ring about rcen (3) [N·m]).  The engine calls this form: numba increments and decrements an
+    atomic reference count for every array argument of a function it does not inline and for every array view,
+    and with 17 arrays per contact that was ≈ 12 % of the hub right-hand side (issue 14); here only ``lub``,
+    ``gp`` and ``tbuf`` (the traction's work array: tbuf[0:10] its out, the Coulomb stand-in's vectors at 10:31
+    and its slice table at 44:) are arrays."""
+    d0 = bx - gx
+    d1 = by - gy
+    d2 = bz - gz
     ll = math.sqrt(d0 * d0 + d1 * d1 + d2 * d2)
     delta = ll - rgroove
-    res[0] = 0.0
-    res[1] = delta
-    res[2] = d0 / ll
-    res[3] = d1 / ll
-    res[4] = d2 / ll
-    res[5] = 0.0
-    res[6] = 0.0
+    z = 0.0
     if delta <= 0.0:
-        return
+        return 0.0, delta, d0 / ll, d1 / ll, d2 / ll, 0.0, 0.0, z, z, z, z, z, z, z, z, z, z, z, z
     u0 = d0 / ll
     u1 = d1 / ll
     u2 = d2 / ll
-    ddot = u0 * (v[0] - vg_lin[0]) + u1 * (v[1] - vg_lin[1]) + u2 * (v[2] - vg_lin[2])
+    ddot = u0 * (vx - vgx) + u1 * (vy - vgy) + u2 * (vz - vgz)
     q = kc * delta * math.sqrt(delta) * (1.0 + 1.5 * alpha * ddot)
     if q <= 0.0:
-        return
-    res[0] = q
-    fb[0] -= q * u0
-    fb[1] -= q * u1
-    fb[2] -= q * u2
-    fr[0] += q * u0
-    fr[1] += q * u1
-    fr[2] += q * u2
-    gr0 = g[0] - rcen[0]
-    gr1 = g[1] - rcen[1]
-    gr2 = g[2] - rcen[2]
-    mr[0] += gr1 * q * u2 - gr2 * q * u1
-    mr[1] += gr2 * q * u0 - gr0 * q * u2
-    mr[2] += gr0 * q * u1 - gr1 * q * u0
+        return 0.0, delta, u0, u1, u2, 0.0, 0.0, z, z, z, z, z, z, z, z, z, z, z, z
+    fbx = 0.0
+    fby = 0.0
+    fbz = 0.0
+    fbx -= q * u0
+    fby -= q * u1
+    fbz -= q * u2
+    frx = 0.0
+    fry = 0.0
+    frz = 0.0
+    frx += q * u0
+    fry += q * u1
+    frz += q * u2
+    gr0 = gx - rcx
+    gr1 = gy - rcy
+    gr2 = gz - rcz
+    mrx = 0.0
+    mry = 0.0
+    mrz = 0.0
+    mrx += gr1 * q * u2 - gr2 * q * u1
+    mry += gr2 * q * u0 - gr0 * q * u2
+    mrz += gr0 * q * u1 - gr1 * q * u0
     mode = int(gp[ly.G_TRAC])
-    nrm = tbuf[0:3]
-    cen = tbuf[3:6]
-    maj = tbuf[6:9]
-    out = tbuf[10:20]
-    nrm[0] = u0
-    nrm[1] = u1
-    nrm[2] = u2
+    # contact-ellipse centre, major axis n × t, and the velocities relative to the frame orbiting with the ball
+    # at worb about the x axis
     r_c = half_d - 0.5 * delta
-    for i in range(3):
-        cen[i] = b[i] + r_c * nrm[i]
-    cross(nrm, tang, maj)
-    # velocities relative to the frame orbiting with the ball at worb about the x axis
-    vb_r = tbuf[20:23]
-    wb_r = tbuf[23:26]
-    vr_r = tbuf[26:29]
-    wr_r = tbuf[29:32]
-    vb_r[0] = v[0]
-    vb_r[1] = v[1] + worb * b[2]
-    vb_r[2] = v[2] - worb * b[1]
-    wb_r[0] = w[0] - worb
-    wb_r[1] = w[1]
-    wb_r[2] = w[2]
-    vr_r[0] = vrace[0]
-    vr_r[1] = vrace[1] + worb * rcen[2]
-    vr_r[2] = vrace[2] - worb * rcen[1]
-    wr_r[0] = wrace[0] - worb
-    wr_r[1] = wrace[1]
-    wr_r[2] = wrace[2]
+    cx = bx + r_c * u0
+    cy = by + r_c * u1
+    cz = bz + r_c * u2
+    mjx = u1 * tz - u2 * ty
+    mjy = u2 * tx - u0 * tz
+    mjz = u0 * ty - u1 * tx
+    vbx = vx
+    vby = vy + worb * bz
+    vbz = vz - worb * by
+    wbx = wx - worb
+    wby = wy
+    wbz = wz
+    vrx = vrx0
+    vry = vry0 + worb * rcz
+    vrz = vrz0 - worb * rcy
+    wrx = wrx0 - worb
+    wry = wry0
+    wrz = wrz0
     # slide-roll ratio at the contact centre (output): v_s / u in the orbiting frame
-    rbv = tbuf[32:35]
-    rrv = tbuf[35:38]
-    t1 = tbuf[38:41]
-    t2 = tbuf[41:44]
-    for i in range(3):
-        rbv[i] = cen[i] - b[i]
-        rrv[i] = cen[i] - rcen[i]
-    cross(wb_r, rbv, t1)
-    cross(wr_r, rrv, t2)
+    rbx = cx - bx
+    rby = cy - by
+    rbz = cz - bz
+    rrx = cx - rcx
+    rry = cy - rcy
+    rrz = cz - rcz
+    sbx = vbx + (wby * rbz - wbz * rby)
+    sby = vby + (wbz * rbx - wbx * rbz)
+    sbz = vbz + (wbx * rby - wby * rbx)
+    srx = vrx + (wry * rrz - wrz * rry)
+    sry = vry + (wrz * rrx - wrx * rrz)
+    srz = vrz + (wrx * rry - wry * rrx)
     vs2 = 0.0
     uu2 = 0.0
-    for i in range(3):
-        sb = vb_r[i] + t1[i]
-        sr = vr_r[i] + t2[i]
-        vs2 += (sb - sr) ** 2
-        uu2 += (0.5 * (sb + sr)) ** 2
-    res[5] = math.sqrt(vs2) / max(math.sqrt(uu2), 1e-12)
-    res[6] = 0.0
+    vs2 += (sbx - srx) ** 2
+    uu2 += (0.5 * (sbx + srx)) ** 2
+    vs2 += (sby - sry) ** 2
+    uu2 += (0.5 * (sby + sry)) ** 2
+    vs2 += (sbz - srz) ** 2
+    uu2 += (0.5 * (sbz + srz)) ** 2
+    srr = math.sqrt(vs2) / max(math.sqrt(uu2), 1e-12)
+    mbx = 0.0
+    mby = 0.0
+    mbz = 0.0
     if mode == 0:
-        return
+        return q, delta, u0, u1, u2, srr, 0.0, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry, mrz
     q13 = q ** (1.0 / 3.0)
-    # both traction models take the normal from the race towards the ball
-    for i in range(3):
-        t1[i] = -nrm[i]
+    # both traction models take the normal from the race towards the ball; tbuf[0:10] ← their out
     if mode == 1:
-        coulomb_on_slices(q, a_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, gp[ly.G_MU0],
-                          gp[ly.G_S0], gp[ly.G_VREF], int(gp[ly.G_NSL]), tbuf[44:], out)
+        vec = tbuf[10:44]
+        for i, x in enumerate((cx, cy, cz, -u0, -u1, -u2, mjx, mjy, mjz, vbx, vby, vbz, wbx, wby, wbz, vrx, vry, vrz,
+                               wrx, wry, wrz, bx, by, bz, rcx, rcy, rcz)):
+            vec[i] = x
+        coulomb_on_slices(q, a_c * q13, r_dev, vec[0:3], vec[3:6], vec[6:9], vec[21:24], vec[9:12], vec[12:15],
+                          vec[24:27], vec[15:18], vec[18:21], gp[ly.G_MU0], gp[ly.G_S0], gp[ly.G_VREF],
+                          int(gp[ly.G_NSL]), tbuf[44:], tbuf)
     else:
-        _sl.contact_traction(q, a_c * q13, b_c * q13, r_dev, cen, t1, maj, b, vb_r, wb_r, rcen, vr_r, wr_r, lub,
-                             int(gp[ly.G_NSL]), out)
-    res[6] = out[9]
-    for i in range(3):
-        fb[i] += out[i]
-        mb[i] += out[3 + i]
-        fr[i] -= out[i]
-        mr[i] += out[6 + i]
+        _sl.traction_at(q, a_c * q13, b_c * q13, r_dev, cx, cy, cz, -u0, -u1, -u2, mjx, mjy, mjz, bx, by, bz,
+                        vbx, vby, vbz, wbx, wby, wbz, rcx, rcy, rcz, vrx, vry, vrz, wrx, wry, wrz, lub,
+                        int(gp[ly.G_NSL]), tbuf)
+    fbx += tbuf[0]
+    fby += tbuf[1]
+    fbz += tbuf[2]
+    mbx += tbuf[3]
+    mby += tbuf[4]
+    mbz += tbuf[5]
+    frx -= tbuf[0]
+    fry -= tbuf[1]
+    frz -= tbuf[2]
+    mrx += tbuf[6]
+    mry += tbuf[7]
+    mrz += tbuf[8]
+    return q, delta, u0, u1, u2, srr, tbuf[9], fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry, mrz
 
 
 @njit(cache=True)

@@ -34,6 +34,7 @@ from .contacts import (  # noqa: F401
     coulomb_slices,
     pocket_point,
     race_contact,
+    race_contact_at,
     slice_table,
 )
 from .contacts import cross as _cross
@@ -65,9 +66,9 @@ A_PIN, A_POUT, A_PCAGE, A_PLAND, A_EPOT, A_ECAGE = range(6)
 NACC = 6
 
 
-#: work floats per ball in :func:`_one_ball` before race_contact's buffer (zero3, fb, mb, bp, g, gr, vg, tang,
-#: tmp: 3 each; res: 8; fbo, mbo: the outer contact's force and moment on the ball, 3 each)
-BALL_WORK = 41
+#: work floats per ball in :func:`_one_ball` before race_contact's buffer (fb, mb, bp, g, gr, vg, tang, tmp: 3
+#: each; fbo, mbo: the outer contact's force and moment on the ball, 3 each)
+BALL_WORK = 30
 #: per-ball contributions: inner-ring force and moment, outer-ring force and moment (3 each), then the inner and
 #: outer power losses and the elastic energy (with diagnostics)
 NCONTRIB = 15
@@ -84,9 +85,10 @@ def no_memo():
     return np.zeros((0, MEMO_W))
 
 
-@njit(cache=True)
-def outer_memo_hit(memo, k, b, v, w):
-    """True when ``memo`` holds ball k's outer-raceway contact for exactly this ball state (b, v, w bit for bit).
+@njit(cache=True, _nrt=False)
+def outer_memo_hit(memo, k, y, o):
+    """True when ``memo`` holds ball k's outer-raceway contact for exactly this ball state (its nine states
+    y[o:o + 9], bit for bit).
 
     The outer ring is fixed, so that contact depends on the ball's nine states alone (and on the model's constant
     arrays): a right-hand side whose balls have not moved since the last one — the ten finite-difference sweeps of
@@ -94,84 +96,81 @@ def outer_memo_hit(memo, k, b, v, w):
     memo instead of computing it again, and gets the very same numbers.  NaN never matches."""
     if memo.shape[0] == 0:
         return False
-    m = memo[k]
-    if m[0] != 1.0:
+    if memo[k, 0] != 1.0:
         return False
-    for i in range(3):
-        if m[1 + i] != b[i] or m[4 + i] != v[i] or m[7 + i] != w[i]:
+    for i in range(9):
+        if memo[k, 1 + i] != y[o + i]:
             return False
     return True
 
 
-@njit(cache=True)
-def outer_memo_put(memo, k, b, v, w, fbo, mbo, fo, mo):
-    """Store ball k's outer-contact result for the state (b, v, w) (nothing without a memo)."""
+@njit(cache=True, _nrt=False)
+def outer_memo_put(memo, k, y, o, fbo, mbo, fo, mo):
+    """Store ball k's outer-contact result for its state y[o:o + 9] (nothing without a memo)."""
     if memo.shape[0] == 0:
         return
-    m = memo[k]
+    for i in range(9):
+        memo[k, 1 + i] = y[o + i]
     for i in range(3):
-        m[1 + i] = b[i]
-        m[4 + i] = v[i]
-        m[7 + i] = w[i]
-        m[10 + i] = fbo[i]
-        m[13 + i] = mbo[i]
-        m[16 + i] = fo[i]
-        m[19 + i] = mo[i]
-    m[0] = 1.0
+        memo[k, 10 + i] = fbo[i]
+        memo[k, 13 + i] = mbo[i]
+        memo[k, 16 + i] = fo[i]
+        memo[k, 19 + i] = mo[i]
+    memo[k, 0] = 1.0
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def outer_memo_get(memo, k, fbo, mbo, fo, mo):
     """The stored outer-contact result of ball k (after :func:`outer_memo_hit`)."""
-    m = memo[k]
     for i in range(3):
-        fbo[i] = m[10 + i]
-        mbo[i] = m[13 + i]
-        fo[i] = m[16 + i]
-        mo[i] = m[19 + i]
+        fbo[i] = memo[k, 10 + i]
+        mbo[i] = memo[k, 13 + i]
+        fo[i] = memo[k, 16 + i]
+        mo[i] = memo[k, 19 + i]
 
 
-@njit(cache=True)
-def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, zero3, fb, mb,
-              bp, g, gr, vg, tang, tmp, res, fbo, mbo, tbuf, fring, mring, fout, mout, ex):
+@njit(cache=True, _nrt=False)
+def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, fb, mb, bp, g,
+              gr, vg, tang, tmp, fbo, mbo, tbuf, fring, mring, fout, mout, ex):
     """Ball k on its two raceways and its Newton–Euler equations (the body of :func:`balls_on_raceways`).
 
-    zero3 … tbuf: work arrays (3 floats each, res 8, tbuf race_contact's buffer with the Coulomb slice table
-    at 44:); fring, mring, fout, mout ← this ball's reactions on the inner ring (force, moment about c) and on
-    the outer ring; ex ← with diagnostics its inner and outer raceway power losses and elastic energy.
+    fb … tbuf: work arrays (3 floats each; tbuf race_contact_at's buffer with the Coulomb slice table at 44:);
+    fring, mring, fout, mout ← this ball's reactions on the inner ring (force, moment about c) and on the outer ring;
+    ex ← with diagnostics its inner and outer raceway power losses and elastic energy.
     ``memo``: the outer contacts of the last evaluation (:func:`outer_memo_hit`; not used with diagnostics)."""
     alpha = gp[ly.G_ALPHA]
     g0 = gp[ly.G_GX]
     g1 = gp[ly.G_GX + 1]
     g2 = gp[ly.G_GX + 2]
     for i in range(3):
-        zero3[i] = 0.0
         fring[i] = 0.0
         mring[i] = 0.0
         fout[i] = 0.0
         mout[i] = 0.0
         ex[i] = 0.0
     r = ball_row[k]
-    par = rows[r]
     o = ly.N_RING + ly.N_BALL * k
-    b = y[o:o + 3]
-    v = y[o + 3:o + 6]
-    w = y[o + 6:o + 9]
-    half_d = 0.5 * par[kn.P_D]
-    worb = (b[1] * v[2] - b[2] * v[1]) / (b[1] * b[1] + b[2] * b[2])
-    for i in range(3):
-        fb[i] = 0.0
-        mb[i] = 0.0
+    bx = y[o]
+    by = y[o + 1]
+    bz = y[o + 2]
+    vx = y[o + 3]
+    vy = y[o + 4]
+    vz = y[o + 5]
+    wx = y[o + 6]
+    wy = y[o + 7]
+    wz = y[o + 8]
+    half_d = 0.5 * rows[r, kn.P_D]
+    worb = (by * vz - bz * vy) / (by * by + bz * bz)
     # ---- inner raceway: ball in the ring frame, groove centre in its meridian plane
     for i in range(3):
-        tmp[i] = b[i] - c[i]
+        tmp[i] = y[o + i] - c[i]
     for i in range(3):
         bp[i] = rm[0, i] * tmp[0] + rm[1, i] * tmp[1] + rm[2, i] * tmp[2]
     rr = math.hypot(bp[1], bp[2])
     cps = bp[1] / rr
     sps = bp[2] / rr
     xgi = rowx[r, ly.X_XGI]
-    ric = par[kn.P_RIC]
+    ric = rows[r, kn.P_RIC]
     for i in range(3):
         gr[i] = rm[i, 0] * xgi + rm[i, 1] * ric * cps + rm[i, 2] * ric * sps
         g[i] = c[i] + gr[i]
@@ -179,78 +178,99 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
     _cross(wtilt, gr, vg)
     for i in range(3):
         vg[i] += cd[i]
-    race_contact(b, v, w, g, vg, worb, c, cd, wring, par[kn.P_KI], par[kn.P_RI], half_d, alpha, lubs[2 * r], gp,
-                 rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang, fb, mb, fring, mring, res, tbuf)
-    qi = res[0]
-    di = res[1]
+    # (race_contact_at on scalars: an array argument or view per contact costs numba atomic reference counts)
+    (qi, di, ux, uy, uz, srr, pw, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry,
+     mrz) = race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, g[0], g[1], g[2], vg[0], vg[1], vg[2], worb,
+                            c[0], c[1], c[2], cd[0], cd[1], cd[2], wring[0], wring[1], wring[2],
+                            rows[r, kn.P_KI], rows[r, kn.P_RI], half_d, alpha, lubs[2 * r], gp,
+                            rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang[0], tang[1],
+                            tang[2], tbuf)
+    fb[0] = fbx
+    fb[1] = fby
+    fb[2] = fbz
+    mb[0] = mbx
+    mb[1] = mby
+    mb[2] = mbz
+    fring[0] += frx
+    fring[1] += fry
+    fring[2] += frz
+    mring[0] += mrx
+    mring[1] += mry
+    mring[2] += mrz
     if want:
-        s = par[kn.P_SIGN]
-        ua = res[2] * ax[0] + res[3] * ax[1] + res[4] * ax[2]
-        urr = 0.0
-        for i in range(3):
-            urr += res[2 + i] * (rm[i, 1] * cps + rm[i, 2] * sps)
+        s = rows[r, kn.P_SIGN]
+        ua = ux * ax[0] + uy * ax[1] + uz * ax[2]
+        urr = ux * (rm[0, 1] * cps + rm[0, 2] * sps)
+        urr += uy * (rm[1, 1] * cps + rm[1, 2] * sps)
+        urr += uz * (rm[2, 1] * cps + rm[2, 2] * sps)
         diag[k, ly.D_QI] = qi
         diag[k, ly.D_DI] = di
         diag[k, ly.D_AI] = math.atan2(-s * ua, -urr)
-        diag[k, ly.D_SRI] = res[5]
-        diag[k, ly.D_PI] = res[6]
-        ex[0] += res[6]
+        diag[k, ly.D_SRI] = srr
+        diag[k, ly.D_PI] = pw
+        ex[0] += pw
         if di > 0.0:
-            ex[2] += 0.4 * par[kn.P_KI] * di ** 2.5
+            ex[2] += 0.4 * rows[r, kn.P_KI] * di ** 2.5
     # ---- outer raceway (fixed)
-    rr = math.hypot(b[1], b[2])
-    cps = b[1] / rr
-    sps = b[2] / rr
+    rr = math.hypot(by, bz)
+    cps = by / rr
+    sps = bz / rr
     rgo = rowx[r, ly.X_RGO]
-    g[0] = rowx[r, ly.X_XGO]
-    g[1] = rgo * cps
-    g[2] = rgo * sps
-    tang[0] = 0.0
-    tang[1] = -sps
-    tang[2] = cps
     # (the outer contact into fbo, mbo, then added: a memo hit gives the same numbers as computing it)
-    if want or not outer_memo_hit(memo, k, b, v, w):
-        for i in range(3):
-            fbo[i] = 0.0
-            mbo[i] = 0.0
-        race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
-                     lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang,
-                     fbo, mbo, fout, mout, res, tbuf)
-        outer_memo_put(memo, k, b, v, w, fbo, mbo, fout, mout)
+    if want or not outer_memo_hit(memo, k, y, o):
+        (qo, do_, ux, uy, uz, srr, pw, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry,
+         mrz) = race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, rowx[r, ly.X_XGO], rgo * cps, rgo * sps,
+                                0.0, 0.0, 0.0, worb, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                                rows[r, kn.P_KO], rows[r, kn.P_RO], half_d, alpha, lubs[2 * r + 1], gp,
+                                rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], 0.0, -sps, cps,
+                                tbuf)
+        fbo[0] = fbx
+        fbo[1] = fby
+        fbo[2] = fbz
+        mbo[0] = mbx
+        mbo[1] = mby
+        mbo[2] = mbz
+        fout[0] += frx
+        fout[1] += fry
+        fout[2] += frz
+        mout[0] += mrx
+        mout[1] += mry
+        mout[2] += mrz
+        outer_memo_put(memo, k, y, o, fbo, mbo, fout, mout)
+        if want:
+            s = rows[r, kn.P_SIGN]
+            diag[k, ly.D_QO] = qo
+            diag[k, ly.D_DO] = do_
+            diag[k, ly.D_AO] = math.atan2(s * ux, uy * cps + uz * sps)
+            diag[k, ly.D_SRO] = srr
+            diag[k, ly.D_PO] = pw
+            ex[1] += pw
+            if do_ > 0.0:
+                ex[2] += 0.4 * rows[r, kn.P_KO] * do_ ** 2.5
+            # orbital speed and spin relative to the orbiting frame
+            r2 = by * by + bz * bz
+            wm = (by * vz - bz * vy) / r2
+            diag[k, ly.D_WM] = wm
+            wxr = wx - wm
+            wrad = wy * cps + wz * sps
+            wtan = -wy * sps + wz * cps
+            mag = math.sqrt(wxr * wxr + wrad * wrad + wtan * wtan)
+            sg = 1.0 if wxr >= 0.0 else -1.0
+            diag[k, ly.D_WR] = sg * mag
+            diag[k, ly.D_BETA] = math.atan2(-s * wrad * sg, wxr * sg)
+            diag[k, ly.D_QC] = 0.0
+            diag[k, ly.D_PC] = 0.0
     else:
         outer_memo_get(memo, k, fbo, mbo, fout, mout)
     for i in range(3):
         fb[i] += fbo[i]
         mb[i] += mbo[i]
-    if want:
-        s = par[kn.P_SIGN]
-        diag[k, ly.D_QO] = res[0]
-        diag[k, ly.D_DO] = res[1]
-        diag[k, ly.D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
-        diag[k, ly.D_SRO] = res[5]
-        diag[k, ly.D_PO] = res[6]
-        ex[1] += res[6]
-        if res[1] > 0.0:
-            ex[2] += 0.4 * par[kn.P_KO] * res[1] ** 2.5
-        # orbital speed and spin relative to the orbiting frame
-        r2 = b[1] * b[1] + b[2] * b[2]
-        wm = (b[1] * v[2] - b[2] * v[1]) / r2
-        diag[k, ly.D_WM] = wm
-        wx = w[0] - wm
-        wrad = w[1] * cps + w[2] * sps
-        wtan = -w[1] * sps + w[2] * cps
-        mag = math.sqrt(wx * wx + wrad * wrad + wtan * wtan)
-        sg = 1.0 if wx >= 0.0 else -1.0
-        diag[k, ly.D_WR] = sg * mag
-        diag[k, ly.D_BETA] = math.atan2(-s * wrad * sg, wx * sg)
-        diag[k, ly.D_QC] = 0.0
-        diag[k, ly.D_PC] = 0.0
     # ---- the ball: ṙ = v, m v̇ = F + m g, J ω̇ = M
-    mass = par[kn.P_MASS]
-    jb = par[kn.P_JB]
-    dy[o] = v[0]
-    dy[o + 1] = v[1]
-    dy[o + 2] = v[2]
+    mass = rows[r, kn.P_MASS]
+    jb = rows[r, kn.P_JB]
+    dy[o] = vx
+    dy[o + 1] = vy
+    dy[o + 2] = vz
     dy[o + 3] = fb[0] / mass + g0
     dy[o + 4] = fb[1] / mass + g1
     dy[o + 5] = fb[2] / mass + g2
@@ -271,8 +291,8 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
         wk = work[k]
         ck = contrib[k]
         _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, wk[0:3],
-                  wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21], wk[21:24], wk[24:27], wk[27:35],
-                  wk[35:38], wk[38:41], wk[41:], ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15])
+                  wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21], wk[21:24], wk[24:27], wk[27:30],
+                  wk[30:], ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15])
 
 
 @njit(cache=True)
@@ -320,44 +340,43 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
         wk = np.empty(BALL_WORK + 44 + 2 * nsl)
         slice_table(nsl, wk[BALL_WORK + 44:])
         ck = np.empty(NCONTRIB)
-        zero3, fb, mb, bp, g, gr, vg, tang, tmp = (wk[0:3], wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18],
-                                                   wk[18:21], wk[21:24], wk[24:27])
-        res = wk[27:35]
-        fbo = wk[35:38]
-        mbo = wk[38:41]
-        tbuf = wk[41:]
+        fb, mb, bp, g, gr, vg, tang, tmp = (wk[0:3], wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21],
+                                            wk[21:24])
+        fbo = wk[24:27]
+        mbo = wk[27:30]
+        tbuf = wk[30:]
         fr, mr, fo, mo, ex = ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15]
         alpha = gp[ly.G_ALPHA]
         g0 = gp[ly.G_GX]
         g1 = gp[ly.G_GX + 1]
         g2 = gp[ly.G_GX + 2]
-        for i in range(3):
-            zero3[i] = 0.0
         for k in range(nb):
             for i in range(NCONTRIB):
                 ck[i] = 0.0
             # ---- BEGIN copy of the body of _one_ball (kept identical: bitwise the same as the threaded path)
             r = ball_row[k]
-            par = rows[r]
             o = ly.N_RING + ly.N_BALL * k
-            b = y[o:o + 3]
-            v = y[o + 3:o + 6]
-            w = y[o + 6:o + 9]
-            half_d = 0.5 * par[kn.P_D]
-            worb = (b[1] * v[2] - b[2] * v[1]) / (b[1] * b[1] + b[2] * b[2])
-            for i in range(3):
-                fb[i] = 0.0
-                mb[i] = 0.0
+            bx = y[o]
+            by = y[o + 1]
+            bz = y[o + 2]
+            vx = y[o + 3]
+            vy = y[o + 4]
+            vz = y[o + 5]
+            wx = y[o + 6]
+            wy = y[o + 7]
+            wz = y[o + 8]
+            half_d = 0.5 * rows[r, kn.P_D]
+            worb = (by * vz - bz * vy) / (by * by + bz * bz)
             # ---- inner raceway: ball in the ring frame, groove centre in its meridian plane
             for i in range(3):
-                tmp[i] = b[i] - c[i]
+                tmp[i] = y[o + i] - c[i]
             for i in range(3):
                 bp[i] = rm[0, i] * tmp[0] + rm[1, i] * tmp[1] + rm[2, i] * tmp[2]
             rr = math.hypot(bp[1], bp[2])
             cps = bp[1] / rr
             sps = bp[2] / rr
             xgi = rowx[r, ly.X_XGI]
-            ric = par[kn.P_RIC]
+            ric = rows[r, kn.P_RIC]
             for i in range(3):
                 gr[i] = rm[i, 0] * xgi + rm[i, 1] * ric * cps + rm[i, 2] * ric * sps
                 g[i] = c[i] + gr[i]
@@ -365,78 +384,99 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
             _cross(wtilt, gr, vg)
             for i in range(3):
                 vg[i] += cd[i]
-            race_contact(b, v, w, g, vg, worb, c, cd, wring, par[kn.P_KI], par[kn.P_RI], half_d, alpha, lubs[2 * r], gp,
-                         rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang, fb, mb, fr, mr, res, tbuf)
-            qi = res[0]
-            di = res[1]
+            # (race_contact_at on scalars: an array argument or view per contact costs numba atomic reference counts)
+            (qi, di, ux, uy, uz, srr, pw, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry,
+             mrz) = race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, g[0], g[1], g[2], vg[0], vg[1], vg[2], worb,
+                                    c[0], c[1], c[2], cd[0], cd[1], cd[2], wring[0], wring[1], wring[2],
+                                    rows[r, kn.P_KI], rows[r, kn.P_RI], half_d, alpha, lubs[2 * r], gp,
+                                    rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang[0], tang[1],
+                                    tang[2], tbuf)
+            fb[0] = fbx
+            fb[1] = fby
+            fb[2] = fbz
+            mb[0] = mbx
+            mb[1] = mby
+            mb[2] = mbz
+            fr[0] += frx
+            fr[1] += fry
+            fr[2] += frz
+            mr[0] += mrx
+            mr[1] += mry
+            mr[2] += mrz
             if want:
-                s = par[kn.P_SIGN]
-                ua = res[2] * ax[0] + res[3] * ax[1] + res[4] * ax[2]
-                urr = 0.0
-                for i in range(3):
-                    urr += res[2 + i] * (rm[i, 1] * cps + rm[i, 2] * sps)
+                s = rows[r, kn.P_SIGN]
+                ua = ux * ax[0] + uy * ax[1] + uz * ax[2]
+                urr = ux * (rm[0, 1] * cps + rm[0, 2] * sps)
+                urr += uy * (rm[1, 1] * cps + rm[1, 2] * sps)
+                urr += uz * (rm[2, 1] * cps + rm[2, 2] * sps)
                 diag[k, ly.D_QI] = qi
                 diag[k, ly.D_DI] = di
                 diag[k, ly.D_AI] = math.atan2(-s * ua, -urr)
-                diag[k, ly.D_SRI] = res[5]
-                diag[k, ly.D_PI] = res[6]
-                ex[0] += res[6]
+                diag[k, ly.D_SRI] = srr
+                diag[k, ly.D_PI] = pw
+                ex[0] += pw
                 if di > 0.0:
-                    ex[2] += 0.4 * par[kn.P_KI] * di ** 2.5
+                    ex[2] += 0.4 * rows[r, kn.P_KI] * di ** 2.5
             # ---- outer raceway (fixed)
-            rr = math.hypot(b[1], b[2])
-            cps = b[1] / rr
-            sps = b[2] / rr
+            rr = math.hypot(by, bz)
+            cps = by / rr
+            sps = bz / rr
             rgo = rowx[r, ly.X_RGO]
-            g[0] = rowx[r, ly.X_XGO]
-            g[1] = rgo * cps
-            g[2] = rgo * sps
-            tang[0] = 0.0
-            tang[1] = -sps
-            tang[2] = cps
             # (the outer contact into fbo, mbo, then added: a memo hit gives the same numbers as computing it)
-            if want or not outer_memo_hit(memo, k, b, v, w):
-                for i in range(3):
-                    fbo[i] = 0.0
-                    mbo[i] = 0.0
-                race_contact(b, v, w, g, zero3, worb, zero3, zero3, zero3, par[kn.P_KO], par[kn.P_RO], half_d, alpha,
-                             lubs[2 * r + 1], gp, rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], tang,
-                             fbo, mbo, fo, mo, res, tbuf)
-                outer_memo_put(memo, k, b, v, w, fbo, mbo, fo, mo)
+            if want or not outer_memo_hit(memo, k, y, o):
+                (qo, do_, ux, uy, uz, srr, pw, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry,
+                 mrz) = race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, rowx[r, ly.X_XGO], rgo * cps, rgo * sps,
+                                        0.0, 0.0, 0.0, worb, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
+                                        rows[r, kn.P_KO], rows[r, kn.P_RO], half_d, alpha, lubs[2 * r + 1], gp,
+                                        rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], 0.0, -sps, cps,
+                                        tbuf)
+                fbo[0] = fbx
+                fbo[1] = fby
+                fbo[2] = fbz
+                mbo[0] = mbx
+                mbo[1] = mby
+                mbo[2] = mbz
+                fo[0] += frx
+                fo[1] += fry
+                fo[2] += frz
+                mo[0] += mrx
+                mo[1] += mry
+                mo[2] += mrz
+                outer_memo_put(memo, k, y, o, fbo, mbo, fo, mo)
+                if want:
+                    s = rows[r, kn.P_SIGN]
+                    diag[k, ly.D_QO] = qo
+                    diag[k, ly.D_DO] = do_
+                    diag[k, ly.D_AO] = math.atan2(s * ux, uy * cps + uz * sps)
+                    diag[k, ly.D_SRO] = srr
+                    diag[k, ly.D_PO] = pw
+                    ex[1] += pw
+                    if do_ > 0.0:
+                        ex[2] += 0.4 * rows[r, kn.P_KO] * do_ ** 2.5
+                    # orbital speed and spin relative to the orbiting frame
+                    r2 = by * by + bz * bz
+                    wm = (by * vz - bz * vy) / r2
+                    diag[k, ly.D_WM] = wm
+                    wxr = wx - wm
+                    wrad = wy * cps + wz * sps
+                    wtan = -wy * sps + wz * cps
+                    mag = math.sqrt(wxr * wxr + wrad * wrad + wtan * wtan)
+                    sg = 1.0 if wxr >= 0.0 else -1.0
+                    diag[k, ly.D_WR] = sg * mag
+                    diag[k, ly.D_BETA] = math.atan2(-s * wrad * sg, wxr * sg)
+                    diag[k, ly.D_QC] = 0.0
+                    diag[k, ly.D_PC] = 0.0
             else:
                 outer_memo_get(memo, k, fbo, mbo, fo, mo)
             for i in range(3):
                 fb[i] += fbo[i]
                 mb[i] += mbo[i]
-            if want:
-                s = par[kn.P_SIGN]
-                diag[k, ly.D_QO] = res[0]
-                diag[k, ly.D_DO] = res[1]
-                diag[k, ly.D_AO] = math.atan2(s * res[2], res[3] * cps + res[4] * sps)
-                diag[k, ly.D_SRO] = res[5]
-                diag[k, ly.D_PO] = res[6]
-                ex[1] += res[6]
-                if res[1] > 0.0:
-                    ex[2] += 0.4 * par[kn.P_KO] * res[1] ** 2.5
-                # orbital speed and spin relative to the orbiting frame
-                r2 = b[1] * b[1] + b[2] * b[2]
-                wm = (b[1] * v[2] - b[2] * v[1]) / r2
-                diag[k, ly.D_WM] = wm
-                wx = w[0] - wm
-                wrad = w[1] * cps + w[2] * sps
-                wtan = -w[1] * sps + w[2] * cps
-                mag = math.sqrt(wx * wx + wrad * wrad + wtan * wtan)
-                sg = 1.0 if wx >= 0.0 else -1.0
-                diag[k, ly.D_WR] = sg * mag
-                diag[k, ly.D_BETA] = math.atan2(-s * wrad * sg, wx * sg)
-                diag[k, ly.D_QC] = 0.0
-                diag[k, ly.D_PC] = 0.0
             # ---- the ball: ṙ = v, m v̇ = F + m g, J ω̇ = M
-            mass = par[kn.P_MASS]
-            jb = par[kn.P_JB]
-            dy[o] = v[0]
-            dy[o + 1] = v[1]
-            dy[o + 2] = v[2]
+            mass = rows[r, kn.P_MASS]
+            jb = rows[r, kn.P_JB]
+            dy[o] = vx
+            dy[o + 1] = vy
+            dy[o + 2] = vz
             dy[o + 3] = fb[0] / mass + g0
             dy[o + 4] = fb[1] / mass + g1
             dy[o + 5] = fb[2] / mass + g2
@@ -516,15 +556,12 @@ def cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, w
     for j in range(z):
         k = b0 + j
         ob = ly.N_RING + ly.N_BALL * k
-        b = y[ob:ob + 3]
-        v = y[ob + 3:ob + 6]
-        w = y[ob + 6:ob + 9]
         half_d = 0.5 * rows[ball_row[k], kn.P_D]
         phi = cpar[ly.C_PSI0] + 2.0 * math.pi * j / z
         cph = math.cos(phi)
         sph = math.sin(phi)
         for i in range(3):
-            tmp[i] = b[i] - occ[i]
+            tmp[i] = y[ob + i] - occ[i]
         for i in range(3):
             bp[i] = rcm[0, i] * tmp[0] + rcm[1, i] * tmp[1] + rcm[2, i] * tmp[2]
         # ball centre from the pocket centre, cage frame
@@ -599,17 +636,20 @@ def cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, w
         for i in range(3):
             nvec[i] = rcm[i, 0] * nlc[0] + rcm[i, 1] * nlc[1] + rcm[i, 2] * nlc[2]
             pc[i] = occ[i] + rcm[i, 0] * pl0 + rcm[i, 1] * pl1 + rcm[i, 2] * pl2
-            pw[i] = pc[i] - b[i]
+            pw[i] = pc[i] - y[ob + i]
             half[i] = pc[i] - occ[i]
-        _cross(w, pw, vbp)
+        # ω_b × (p − b) (the ball's states read in place: an array view per pocket costs numba a reference count)
+        vbp[0] = y[ob + 7] * pw[2] - y[ob + 8] * pw[1]
+        vbp[1] = y[ob + 8] * pw[0] - y[ob + 6] * pw[2]
+        vbp[2] = y[ob + 6] * pw[1] - y[ob + 7] * pw[0]
         _cross(wc, half, vcp)
         for i in range(3):
-            vbp[i] += v[i]
+            vbp[i] += y[ob + 3 + i]
             vcp[i] += vc[i]
         if nm > 0:
             for i in range(3):
                 vcp[i] += rcm[i, 0] * fcl[0] + rcm[i, 1] * fcl[1] + rcm[i, 2] * fcl[2]
-        ddot = -(nvec[0] * (v[0] - vcp[0]) + nvec[1] * (v[1] - vcp[1]) + nvec[2] * (v[2] - vcp[2]))
+        ddot = -(nvec[0] * (y[ob + 3] - vcp[0]) + nvec[1] * (y[ob + 4] - vcp[1]) + nvec[2] * (y[ob + 5] - vcp[2]))
         qn = kcg * best * math.sqrt(best) * (1.0 + 1.5 * alpha * ddot)
         if qn <= 0.0:
             continue
