@@ -60,7 +60,10 @@ exp(c ln x); the Eyring argument x = ηγ̇/τ₀ carried as ln 2x = ln u_s + ln
 1/x² for 100 ≤ x < 10⁶, asinh(e^(ln 2x − ln 2)) below; so η = e^(ln η) is never formed and asinh rarely
 called), the same for the heat-balance step's
 asinh(x e^(−βΔT)) with ln 2x − βΔT; tanh z = (e^(2z) − 1)/(e^(2z) + 1) for
-1e-3 ≤ z ≤ 20 (≤ ~1e-13 relative).  No fastmath, no allocation.  The heat-balance secant
+1e-3 ≤ z ≤ 20 (≤ ~1e-13 relative).  No allocation.  Of fastmath only ``contract``: LLVM may fuse a
+multiplication and an addition into one FMA instruction (one rounding instead of two; results move by rounding
+only, and no longer bit for bit equal those of a CPU without FMA; no reassociation, no approximate functions,
+NaN and infinities kept): hub right-hand side −5 to −7 %, same accuracy (issue 14).  The heat-balance secant
 step stays per slice: solving it once on the central slice would change results by far
 more than 1e-10 (each slice has its own pressure and sliding speed).  Strip counts n ≤ 64 take their load
 shares, centroids, areas and (load share)^0.246 from tables built at import; the rolling resistance's u^0.648
@@ -132,20 +135,20 @@ FLUID_MODELS = {"curve": 0, "physical": 1}
 _FLASH = 4.0 / (3.0 * math.sqrt(math.pi))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def slice_fraction(xi0, xi1):
     """Share of the load Q on the strip ξ ∈ [ξ0, ξ1] of the Hertz ellipse (seed eq. 1)."""
     return 0.25 * ((3.0 * xi1 - xi1**3) - (3.0 * xi0 - xi0**3))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def slice_centroid(xi0, xi1):
     """Load centroid ξ̄ = x̄/a of the strip [ξ0, ξ1] (see module docstring)."""
     g = 0.75 * ((0.5 * xi1 * xi1 - 0.25 * xi1**4) - (0.5 * xi0 * xi0 - 0.25 * xi0**4))
     return g / slice_fraction(xi0, xi1)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def surface_curvature(r_dev):
     """Curvature c = 1/r_dev [1/m] of the deformed contact surface across the ellipse (module docstring,
     item 2: r_dev > 0 when its centre of curvature lies on the ball's side); 0 for a flat contact
@@ -155,7 +158,7 @@ def surface_curvature(r_dev):
     return 0.0
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def slice_point_offset(x, curv):
     """The slice-point convention (module docstring, item 2): the point at x [m] along the major axis
     lies on the deformed surface, ``offset`` [m] from the tangent plane along the unit normal that points
@@ -166,7 +169,7 @@ def slice_point_offset(x, curv):
     return cx * x / (1.0 + root), root
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def slice_area_fraction(xi0, xi1):
     """Area of the strip divided by a b:  [ξ√(1−ξ²) + asin ξ] between ξ0 and ξ1."""
     h1 = xi1 * math.sqrt(max(0.0, 1.0 - xi1 * xi1)) + math.asin(min(1.0, max(-1.0, xi1)))
@@ -174,7 +177,7 @@ def slice_area_fraction(xi0, xi1):
     return h1 - h0
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _law_constants(lub):
     """The traction laws' constants from ``lub``: boundary and fluid four-parameter curves (A, B, C, D each), then
     the physical film law's τ₀ [Pa], t₀ [°C], limiting-stress coefficients r_L, c₁…c₄ and floor, β_v [1/K] and
@@ -184,7 +187,7 @@ def _law_constants(lub):
             lub[L_LSS_FLOOR], lub[L_BETA_V], lub[L_ROE_LN], lub[L_ROE_Z])
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def add_point_traction(out, f, sx, sy, sz, dbx, dby, dbz, drx, dry, drz, power):
     """Add the traction f·(sx, sy, sz) [N] acting at a point (arm d_b from the ball centre, d_r from the race
     centre [m]) to out (module docstring, item 4): force and moment on the ball, moment on the race (whose force
@@ -202,7 +205,7 @@ def add_point_traction(out, f, sx, sy, sz, dbx, dby, dbz, drx, dry, drz, power):
     out[9] += power
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def add_point_rolling(out, fr, uj, hx, hy, hz, dbx, dby, dbz, drx, dry, drz, njx, njy, njz, two_rx):
     """Add the rolling resistance fr [N] at a point with entraining speed uj [m/s] along the unit vector h to out
     ([S1] eqs. 4–5, module docstring item 5): shear −fr on both surfaces, the pressure-centre shift as P₁ =
@@ -226,7 +229,7 @@ def add_point_rolling(out, fr, uj, hx, hy, hz, dbx, dby, dbz, drx, dry, drz, njx
     out[9] += 2.0 * fr * uj
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball, w_ball,
                      race_centre, v_race, w_race, lub, n_slices, out):
     """Tangential forces of one lubricated ball–race contact on n slices ([S1] eqs. 1–5).
@@ -257,12 +260,12 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
                 w_race[0], w_race[1], w_race[2], lub, n_slices, out)
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby, cbz, vbx, vby, vbz, wbx, wby, wbz,
                 crx, cry, crz, vrx, vry, vrz, wrx, wry, wrz, lub, n_slices, out):
     """:func:`contact_traction` with its vectors as their components (the same numbers): the dynamic engine's
-    contacts call this form, so that no array view is made per contact (each view costs numba an atomic
-    reference-count increment and decrement, measured 17 % of the hub right-hand side with views, issue 14).
+    contacts call this form, so that no array is passed nor viewed per contact (numba counts a reference for
+    each, with an atomic increment and decrement: 17.5 % of the hub right-hand side's samples, issue 14).
     out[0:10] ← as :func:`contact_traction` (entries from 10 on are not touched)."""
     for i in range(10):
         out[i] = 0.0
@@ -565,7 +568,7 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                                   njy, njz, two_rx)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def film_constants(alpha, e_eff, rx, ry):
     """Constants of a contact type in the Hamrock–Dowson films and the regime map (the same formulae as
     :func:`bearingsim.contact.ehl.hamrock_dowson_central`, ``_minimum`` and ``regime_films``): α [1/Pa],
@@ -581,7 +584,7 @@ def film_constants(alpha, e_eff, rx, ry):
             1.0 - 0.85 * math.exp(-0.31 * k_hd))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _area_primitive(xi):
     """H(ξ) = ξ√(1−ξ²) + asin ξ (clipped to [−1, 1]); strip area / (a b) = H(ξ1) − H(ξ0)."""
     return xi * math.sqrt(max(0.0, 1.0 - xi * xi)) + math.asin(min(1.0, max(-1.0, xi)))
@@ -626,7 +629,7 @@ for _k in range(1, POW_SERIES_ORDER + 1):
     _POW_C[_k] = _POW_C[_k - 1] * (0.648 - _k + 1) / _k
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _pow_0648(x):
     """x^0.648 for x > 0 [-] (Zhou & Hoeprich 1991's exponent of the rolling speed): the binomial series of
     (1 + r)^0.648, r = x − 1, to r⁹ when |r| ≤ 1/16 (remainder < 5e-15 relative; no logarithm, no
@@ -646,7 +649,7 @@ _LN_2 = math.log(2.0)
 _LN_200 = math.log(200.0)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _tanh_pos(z):
     """tanh z for z ≥ 0 [-]: (e^(2z) − 1)/(e^(2z) + 1) for 1e-3 ≤ z ≤ 20 (e^(2z) − 1 ≥ 2e-3, so at
     most ~500 ulp lost, ~1e-13 relative), exactly 1 above 20 (tanh 20 = 1 − 8e-18), math.tanh below."""
@@ -658,7 +661,7 @@ def _tanh_pos(z):
     return math.tanh(z)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _slice_kinematics(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx, asy, asz,
                       e1x, e1y, e1z, aex, aey, aez):
     """Tangential sliding and entraining velocities at the slice point x̄ (module docstring, item 3)."""
@@ -684,7 +687,7 @@ def _slice_kinematics(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx,
             njx, njy, njz)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _asinh_l2x(l2x):
     """asinh x for x > 0 from l2x = ln 2x alone [-]: ln 2x when x ≥ 1e6 (the dropped term 1/(4x²) ≤ 2.5e-13
     absolute, ≤ 1.8e-14 of the value); for 100 ≤ x < 1e6 the asymptotic series ln 2x + w/4 − 3w²/32 + 5w³/96
@@ -699,7 +702,7 @@ def _asinh_l2x(l2x):
     return math.asinh(math.exp(l2x - _LN_2))
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _heated_stress(tau, theta_us, l2x, p, floor_p, tau0, t0c, r_l, c1, c2, c3, c4, beta_v):
     """Secant step of the film heat balance of :func:`traction.fluid_shear_stress` [Pa].
 
@@ -757,7 +760,7 @@ _RJ_X[0], _RJ_W[0] = gauss_jacobi(ROLL_NODES, 0.5)
 _RJ_X[1], _RJ_W[1] = gauss_jacobi(ROLL_NODES, 0.246)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
 def rolling_slip_zeros(sig0, sig1, sig2, a, curv):
     """Zeros ξ ∈ (−1, 1) of the rolling-direction sliding speed along the major axis [m/s].
 
@@ -813,7 +816,7 @@ def rolling_slip_zeros(sig0, sig1, sig2, a, curv):
     return nr, z1, z2
 
 
-@njit(cache=True, error_model="numpy", _nrt=False)
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0bz, d0rx, d0ry, d0rz,
                       s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez, u0,
                       need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out):

@@ -193,7 +193,8 @@ def race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, gx, gy, gz, vgx, vgy, vg
     centre, power loss [W], force on the ball (3) [N], moment on the ball (3) [N·m], force on the ring (3) [N],
     moment on the ring about rcen (3) [N·m]).  The engine calls this form: numba increments and decrements an
     atomic reference count for every array argument of a function it does not inline and for every array view,
-    and with 17 arrays per contact that was ≈ 12 % of the hub right-hand side (issue 14); here only ``lub``,
+    and the array form's 17 arguments and 12 views per contact cost ≈ 12 % of the hub right-hand side (issue 14;
+    compiled without counting, ``_nrt=False``, as it allocates nothing); here only ``lub``,
     ``gp`` and ``tbuf`` (the traction's work array: tbuf[0:10] its out, the Coulomb stand-in's vectors at 10:31
     and its slice table at 44:) are arrays."""
     d0 = bx - gx
