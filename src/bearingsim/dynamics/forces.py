@@ -130,14 +130,21 @@ def outer_memo_get(memo, k, fbo, mbo, fo, mo):
 
 
 @njit(cache=True, _nrt=False)
-def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, fb, mb, bp, g,
-              gr, vg, tang, tmp, fbo, mbo, tbuf, fring, mring, fout, mout, ex):
+def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, wk, ck):
     """Ball k on its two raceways and its Newton–Euler equations (the body of :func:`balls_on_raceways`).
 
-    fb … tbuf: work arrays (3 floats each; tbuf race_contact_at's buffer with the Coulomb slice table at 44:);
-    fring, mring, fout, mout ← this ball's reactions on the inner ring (force, moment about c) and on the outer ring;
-    ex ← with diagnostics its inner and outer raceway power losses and elastic energy.
+    wk: the ball's work row (fb, mb, bp, g, gr, vg, tang, tmp, fbo, mbo: 3 floats each, then race_contact_at's
+    buffer with the Coulomb slice table at 44:); ck ← its contributions (layout of :func:`balls_on_raceways`): the
+    reactions on the inner ring (force, moment about c) and on the outer ring, and with diagnostics its inner and
+    outer raceway power losses and elastic energy.  The views of wk and ck are made here, where they are not
+    reference-counted (``_nrt=False``; made in the parallel loop they were 16 counted views per ball).
     ``memo``: the outer contacts of the last evaluation (:func:`outer_memo_hit`; not used with diagnostics)."""
+    fb, mb, bp, g, gr, vg, tang, tmp = (wk[0:3], wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21],
+                                        wk[21:24])
+    fbo = wk[24:27]
+    mbo = wk[27:30]
+    tbuf = wk[30:]
+    fring, mring, fout, mout, ex = ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15]
     alpha = gp[ly.G_ALPHA]
     g0 = gp[ly.G_GX]
     g1 = gp[ly.G_GX + 1]
@@ -288,11 +295,8 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
     """:func:`_one_ball` for every ball in a numba ``prange`` (threads: ``numba.set_num_threads``), each with
     its own work row; contrib[k] ← its reactions and diagnostics (layout of :func:`balls_on_raceways`)."""
     for k in prange(ball_row.shape[0]):
-        wk = work[k]
-        ck = contrib[k]
-        _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, wk[0:3],
-                  wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21], wk[21:24], wk[24:27], wk[27:30],
-                  wk[30:], ck[0:3], ck[3:6], ck[6:9], ck[9:12], ck[12:15])
+        _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work[k],
+                  contrib[k])
 
 
 @njit(cache=True)
