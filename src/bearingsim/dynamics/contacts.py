@@ -1,7 +1,8 @@
 """Contact laws of the dynamic model (numba kernels on plain floats and arrays, SI).
 
-* :func:`race_contact` — one ball–raceway contact: the Hunt–Crossley Hertz normal force and the
-  traction of the chosen model (the glue between the contact geometry and the traction kernels);
+* :func:`race_contact_at` — one ball–raceway contact: the Hunt–Crossley Hertz normal force and the
+  traction of the chosen model (the glue between the contact geometry and the traction kernels), on the
+  vectors' components (the engine's form); :func:`race_contact` the same on arrays;
 * :func:`coulomb_slices` / :func:`coulomb_on_slices` with :func:`slice_table` — the regularised
   Coulomb stand-in on the slices of the contact ellipse;
 * :func:`pocket_point` — the geometry of the ball–pocket contact: the point of a spherical or

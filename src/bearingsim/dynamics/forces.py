@@ -5,7 +5,7 @@ documented in :mod:`.layout`.  :func:`rhs` assembles the equations of motion fro
 section (:func:`balls_on_raceways`, :func:`cage_pockets` with the elastic modes, :func:`land_guidance`,
 :func:`cage_equations`, :func:`ring_equations`, :func:`global_diagnostics`); :func:`evaluate` calls it
 from Python.  The contact laws — the Hunt–Crossley Hertz force and traction of a ball–raceway contact
-(:func:`~.contacts.race_contact`), the Coulomb stand-in (:func:`~.contacts.coulomb_slices`) and the
+(:func:`~.contacts.race_contact_at`), the Coulomb stand-in (:func:`~.contacts.coulomb_slices`) and the
 pocket geometry (:func:`~.contacts.pocket_point`) — are in :mod:`.contacts` (their names stay
 importable from here); the load and speed histories are the kernels of :mod:`.loads`.
 
@@ -66,7 +66,7 @@ A_PIN, A_POUT, A_PCAGE, A_PLAND, A_EPOT, A_ECAGE = range(6)
 NACC = 6
 
 
-#: work floats per ball in :func:`_one_ball` before race_contact's buffer (fb, mb, bp, g, gr, vg, tang, tmp: 3
+#: work floats per ball in :func:`_one_ball` before race_contact_at's buffer (fb, mb, bp, g, gr, vg, tang, tmp: 3
 #: each; fbo, mbo: the outer contact's force and moment on the ball, 3 each)
 BALL_WORK = 30
 #: per-ball contributions: inner-ring force and moment, outer-ring force and moment (3 each), then the inner and
@@ -307,7 +307,7 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
     Inner raceway: the groove-curvature centre g in the ball's meridian plane of the tilted, displaced
     ring, g = c + R (ξ_g e_x + r_ic (cos ψ e_y + sin ψ e_z)) with ψ the ball's azimuth in the ring
     frame, moving with ċ + ω_tilt × (g − c); outer raceway (fixed): g = (x_go, r_go cos ψ, r_go sin ψ)
-    at rest.  Each contact is :func:`race_contact` (Hunt–Crossley Hertz normal force and traction);
+    at rest.  Each contact is :func:`race_contact_at` (Hunt–Crossley Hertz normal force and traction);
     the ring's reactions accumulate in (fring, mring) about c and (fout, mout).  Ball (isotropic
     inertia: J ω̇ = M in the inertial frame, centrifugal and gyroscopic effects arise from the motion
     itself): ṙ = v, m v̇ = F + m g, J ω̇ = M.  ``rm``, ``ax``, ``c``, ``cd``, ``wtilt``, ``wring``: the
@@ -325,7 +325,7 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
     """
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
-    # work rows of race_contact, followed by the slices of the Coulomb stand-in (the same for every contact)
+    # work rows of race_contact_at, followed by the slices of the Coulomb stand-in (the same for every contact)
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
     contrib = np.empty((nb, NCONTRIB))
     if threads:
