@@ -68,12 +68,14 @@ from .jacobian import block_jac, ring_jac, ring_rows
 from .linalg import (
     NR,
     apply_w,
+    block_w_inverse,
     coupled_apply_w,
     coupled_jac_vec,
     coupled_w,
     invert_small,
     j_times,
     jac_vec,
+    kinematic_rows,
     no_coupling,
     w_inverse,
     w_solve,
@@ -118,6 +120,7 @@ _ring_rows = ring_rows
 _apply_w = apply_w
 _jac_vec = jac_vec
 _invert_small = invert_small
+_kinematic_rows = kinematic_rows
 _w_inverse = w_inverse
 _coupled_w = coupled_w
 _coupled_apply_w = coupled_apply_w
@@ -127,7 +130,8 @@ _stages = dopri5.stages
 _ros34_stages = ros34pw2.stages
 
 __all__ = ["METHODS", "MAX_STEPS", "NOT_FINITE", "NR", "OK", "R34_G", "ROS2_GAMMA", "STATUS_TEXT", "STEP_TOO_SMALL",
-           "Status", "Workspace", "advance", "advance_ros2", "advance_ros34", "fixed_steps", "fixed_steps_ros34",
+           "Status", "Workspace", "advance", "advance_ros2", "advance_ros34", "block_w_inverse", "fixed_steps",
+           "fixed_steps_ros34",
            "no_coupling", "ros34_workspace", "w_solve"]
 
 

@@ -6,6 +6,11 @@ estimated cheaply: forward differences with the step 1e-7 max(|y_j|, 1e4 atol_j)
 every ball block perturbed at once (:func:`block_jac`: the balls' derivatives do not depend on each
 other's states directly), the ring's 10 columns one at a time (:func:`ring_jac`), and the ring's rows
 from the balls' columns (:func:`ring_rows`).  Layout: :mod:`.linalg`.
+
+Each difference is divided by the step actually taken, (y + e) − y in floating point, not by e (Press et al.,
+*Numerical Recipes*, 3rd ed. 2007, §5.7): a derivative that is a state itself (a ball's ṙ = v, the ring's
+q̇ = q̇) then comes out exactly 1, so the kinematic rows of J are exact and :func:`.linalg.block_w_inverse`
+can eliminate them (issue 14); before, they were 1 ± 1e-9.
 """
 
 from __future__ import annotations
@@ -26,9 +31,8 @@ def block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb):
             yt[i] = y[i]
         for b in range(nb):
             o = blk[b] + j
-            e = 1e-7 * max(abs(y[o]), 1e4 * atol[o])
-            epsb[b] = e
-            yt[o] = y[o] + e
+            yt[o] = y[o] + 1e-7 * max(abs(y[o]), 1e4 * atol[o])
+            epsb[b] = yt[o] - y[o]  # the step actually taken (see the module docstring)
         fun(t, yt, f1, args)
         for b in range(nb):
             o = blk[b]
@@ -43,8 +47,8 @@ def ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1):
     for j in range(NR):
         for i in range(y.shape[0]):
             yt[i] = y[i]
-        e = 1e-7 * max(abs(y[j]), 1e4 * atol[j])
-        yt[j] = y[j] + e
+        yt[j] = y[j] + 1e-7 * max(abs(y[j]), 1e4 * atol[j])
+        e = yt[j] - y[j]  # the step actually taken (see the module docstring)
         fun(t, yt, f1, args)
         for i in range(NR):
             jrr[i, j] = (f1[i] - f0[i]) / e

@@ -20,9 +20,10 @@ import numpy as np
 from numba import njit, prange
 
 from .. import threads as _threads  # noqa: F401 - numba's threading layer, chosen and started
-from ..layout import N_RING
+from ..layout import N_BALL, N_RING
 
 NR = N_RING  #: inner-ring states (q, q̇) at the start of the state vector
+NB = N_BALL  #: states of a ball block (r, v, ω): the ring–ball coupling's blocks have this size
 
 
 @njit(cache=True)
@@ -119,34 +120,114 @@ def invert_small(a, out):
 
 
 @njit(cache=True)
-def w_inverse(jac, hs, g, winv, wm):
-    """winv[b] = (I − g hs J_b)⁻¹ for every block b."""
-    nb = jac.shape[0]
-    nbk = jac.shape[1]
-    for b in range(nb):
-        for i in range(nbk):
-            for j in range(nbk):
-                wm[i, j] = -g * hs * jac[b, i, j]
+def _invert6(a, out):
+    """:func:`invert_small` for 6 × 6 (the same elimination and pivoting, bounds known when compiling)."""
+    for i in range(6):
+        for j in range(6):
+            out[i, j] = 0.0
+        out[i, i] = 1.0
+    for c in range(6):
+        p = c
+        big = abs(a[c, c])
+        for r in range(c + 1, 6):
+            if abs(a[r, c]) > big:
+                big = abs(a[r, c])
+                p = r
+        if p != c:
+            for j in range(6):
+                tmp = a[c, j]
+                a[c, j] = a[p, j]
+                a[p, j] = tmp
+                tmp = out[c, j]
+                out[c, j] = out[p, j]
+                out[p, j] = tmp
+        d = 1.0 / a[c, c]
+        for j in range(6):
+            a[c, j] *= d
+            out[c, j] *= d
+        for r in range(6):
+            if r != c:
+                f = a[r, c]
+                if f != 0.0:
+                    for j in range(6):
+                        a[r, j] -= f * a[c, j]
+                        out[r, j] -= f * out[c, j]
+
+
+@njit(cache=True)
+def kinematic_rows(jb):
+    """True when the block jb (9 × 9, a ball's r, v, ω) has the kinematic rows ṙ = v exactly: rows 0–2 are
+    [0 I 0] (so the finite differences give them: the position's derivative is the velocity state itself)."""
+    if jb.shape[0] != 9:
+        return False
+    for i in range(3):
+        for j in range(9):
+            if jb[i, j] != (1.0 if j == i + 3 else 0.0):
+                return False
+    return True
+
+
+@njit(cache=True)
+def block_w_inverse(jb, c, wm, out):
+    """out = (I + c J_b)⁻¹ for one block (c = −γh; wm a work array of the block's size, overwritten).
+
+    A ball's block J_b = [[0, I, 0], [G, H]] (rows 0–2 the kinematic ṙ = v, G its 6 × 3 position columns below,
+    H its 6 × 6 velocity columns below) is inverted through its velocity part: with k_r = r_r − c k_v from the
+    first rows, W k = r reduces to M k_vω = r_vω − c G r_r, M = I + c H − c² G P (P k_vω = k_v), and
+    W⁻¹ = [[I + c² N_v G, −c N_v], [−c N G, N]] with N = M⁻¹ and N_v its first three rows (block elimination,
+    Golub & Van Loan, *Matrix Computations*, 4th ed. 2013, §3.2.11): a 6 × 6 inversion instead of a 9 × 9 one
+    (issue 14).  Any other block: Gauss–Jordan on the whole block (:func:`invert_small`)."""
+    n = jb.shape[0]
+    if not kinematic_rows(jb):
+        for i in range(n):
+            for j in range(n):
+                wm[i, j] = c * jb[i, j]
             wm[i, i] += 1.0
-        invert_small(wm, winv[b])
+        invert_small(wm, out)
+        return
+    m6 = wm[0:6, 0:6]
+    ninv = out[3:9, 3:9]  # N = M⁻¹ lands in its place in W⁻¹
+    c2 = c * c
+    for i in range(6):
+        for j in range(6):
+            m6[i, j] = c * jb[3 + i, 3 + j]
+        for j in range(3):
+            m6[i, j] -= c2 * jb[3 + i, j]
+        m6[i, i] += 1.0
+    _invert6(m6, ninv)
+    for i in range(6):
+        for j in range(3):
+            acc = 0.0
+            for k in range(6):
+                acc += ninv[i, k] * jb[3 + k, j]
+            out[3 + i, j] = -c * acc  # −c N G
+    for i in range(3):
+        for j in range(3):
+            out[i, j] = -c * out[3 + i, j]  # c² N_v G
+        out[i, i] += 1.0
+        for j in range(6):
+            out[i, 3 + j] = -c * ninv[i, j]
+
+
+@njit(cache=True)
+def w_inverse(jac, hs, g, winv, wm):
+    """winv[b] = (I − g hs J_b)⁻¹ for every block b (:func:`block_w_inverse`)."""
+    c = -g * hs
+    for b in range(jac.shape[0]):
+        block_w_inverse(jac[b], c, wm, winv[b])
 
 
 @njit(cache=True)
 def _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb):
     """Ball b's part of :func:`coupled_w` (c = −g hs): winv[b] = W_bb⁻¹, q[b] = Q_b = W_bb⁻¹ W_br and
     sb = W_rb Q_b (its term of the Schur complement), with wm a 9 × 9 work array."""
-    nbk = jac.shape[1]
-    for i in range(nbk):
-        for j in range(nbk):
-            wm[i, j] = c * jac[b, i, j]
-        wm[i, i] += 1.0
-    invert_small(wm, winv[b])
+    block_w_inverse(jac[b], c, wm, winv[b])
     # J_br's rows 0–2 (ṙ = v of the ball) and J_rb's rows 0–4 (the ring's q̇ = q̇) are zero by construction
     # (jacobian.ring_jac, jacobian.ring_rows): their terms are skipped (they added exact zeros: the same numbers)
-    for i in range(nbk):
+    for i in range(NB):
         for j in range(NR):
             acc = 0.0
-            for k in range(3, nbk):
+            for k in range(3, NB):
                 acc += winv[b, i, k] * c * jbr[b, k, j]
             q[b, i, j] = acc
     for i in range(NR):
@@ -155,7 +236,7 @@ def _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb):
     for i in range(NR // 2, NR):
         for j in range(NR):
             acc = 0.0
-            for k in range(nbk):
+            for k in range(NB):
                 acc += c * jrb[b, i, k] * q[b, k, j]
             sb[i, j] = acc
 
@@ -167,7 +248,10 @@ def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr, sb):
     S = W_rr − Σ_b W_rb Q_b (the balls' terms subtracted in ball order).  sb: (n_balls, NR, NR) work.
     J_br's rows 0–2 and J_rb's rows 0–4 must be zero (the kinematic rows ṙ = v, q̇ = q̇: so
     :func:`.jacobian.ring_jac` and :func:`.jacobian.ring_rows` make them); their products are skipped (−17 % of
-    the time, measured 36.8 → 30.7 µs on hub-sized blocks)."""
+    the time, measured 36.8 → 30.7 µs on hub-sized blocks).  The ball blocks are inverted through their velocity
+    part (:func:`block_w_inverse`) and the loops run to the constant N_BALL = 9 (30.7 → 21 µs, issue 14)."""
+    if jac.shape[1] != NB:
+        raise ValueError("coupled_w: the ball blocks must have N_BALL = 9 states")
     nb = jac.shape[0]
     c = -g * hs
     for b in range(nb):
@@ -179,6 +263,8 @@ def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr, sb):
 def coupled_w_threaded(jac, jrr, jbr, jrb, hs, g, winv, wmb, q, sinv, srr, sb):
     """:func:`coupled_w` with the balls on ``numba.get_num_threads()`` threads (wmb: a 9 × 9 work array per
     ball); the Schur complement is summed serially in ball order, so the result is the same bit for bit."""
+    if jac.shape[1] != NB:
+        raise ValueError("coupled_w_threaded: the ball blocks must have N_BALL = 9 states")
     nb = jac.shape[0]
     c = -g * hs
     for b in prange(nb):
@@ -202,7 +288,8 @@ def _schur_inverse(jrr, c, sb, sinv, srr):
 
 @njit(cache=True)
 def coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
-    """out = W⁻¹ v for the arrowhead W of :func:`coupled_w` (identity outside ring and balls)."""
+    """out = W⁻¹ v for the arrowhead W of :func:`coupled_w` (identity outside ring and balls; ball blocks of
+    N_BALL = 9 states, the loops' bounds known when compiling: ``nbk`` is that size)."""
     c = -g * hs
     for i in range(v.shape[0]):
         out[i] = v[i]
@@ -211,14 +298,14 @@ def coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
         r[i] = v[i]
     for b in range(nb):
         o = blk[b]
-        for i in range(nbk):
+        for i in range(NB):
             acc = 0.0
-            for j in range(nbk):
+            for j in range(NB):
                 acc += winv[b, i, j] * v[o + j]
             z[b, i] = acc
-        for i in range(NR):
+        for i in range(NR // 2, NR):  # J_rb's rows 0–4 are zero (coupled_w)
             acc = 0.0
-            for j in range(nbk):
+            for j in range(NB):
                 acc += c * jrb[b, i, j] * z[b, j]
             r[i] -= acc
     for i in range(NR):
@@ -228,7 +315,7 @@ def coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
         out[i] = acc
     for b in range(nb):
         o = blk[b]
-        for i in range(nbk):
+        for i in range(NB):
             acc = z[b, i]
             for j in range(NR):
                 acc -= q[b, i, j] * out[j]

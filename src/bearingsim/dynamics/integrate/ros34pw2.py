@@ -35,7 +35,7 @@ from .common import (
     reject_factor,
 )
 from .jacobian import block_jac, ring_jac, ring_rows
-from .linalg import NR, coupled_w, coupled_w_threaded, j_times, no_coupling, w_inverse, w_solve
+from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, w_inverse, w_solve
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
 R34_G = 0.435866521508459
@@ -60,38 +60,47 @@ R34_REJECT_EXPONENT = 1.0 / 3.0
 def stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv, cpl):
     """The four stages of ROS34PW2 (k_i include the factor h); f0 = f(t, y); ``cpl`` = (J_rr, J_br,
     J_rb, Q, S⁻¹, work, work) of the ring–ball coupling (:func:`.linalg.coupled_w`) or
-    :func:`.linalg.no_coupling`."""
+    :func:`.linalg.no_coupling`.
+
+    The stage equation W k_i = h f(Y_i) + hJ s_i, s_i = Σ_j c_ij k_j, is solved without the product J s_i:
+    hJ = (I − W)/γ for the same J that W = I − γhJ is made of, so k_i = W⁻¹(h f(Y_i) + s_i/γ) − s_i/γ (the form
+    of Hairer & Wanner, *Solving ODEs II*, §IV.7, (7.25), in the untransformed k_i; issue 14: three products
+    with the coupled J per step saved).  ``jac`` and ``jv`` are kept in the signature (unused)."""
     n = y.shape[0]
+    ig = 1.0 / R34_G
     for i in range(n):
         ft[i] = hs * f0[i]
     w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k1)
     # stage 2
     for i in range(n):
         yt[i] = y[i] + R34_A21 * k1[i]
-        tv[i] = R34_C21 * k1[i]
+        tv[i] = ig * (R34_C21 * k1[i])
     fun(t + R34_ALPHA2 * hs, yt, ft, args)
-    j_times(jac, blk, nbk, cpl, tv, jv)
     for i in range(n):
-        ft[i] = hs * (ft[i] + jv[i])
+        ft[i] = hs * ft[i] + tv[i]
     w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k2)
+    for i in range(n):
+        k2[i] -= tv[i]
     # stage 3
     for i in range(n):
         yt[i] = y[i] + R34_A31 * k1[i] + R34_A32 * k2[i]
-        tv[i] = R34_C31 * k1[i] + R34_C32 * k2[i]
+        tv[i] = ig * (R34_C31 * k1[i] + R34_C32 * k2[i])
     fun(t + R34_ALPHA3 * hs, yt, ft, args)
-    j_times(jac, blk, nbk, cpl, tv, jv)
     for i in range(n):
-        ft[i] = hs * (ft[i] + jv[i])
+        ft[i] = hs * ft[i] + tv[i]
     w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k3)
+    for i in range(n):
+        k3[i] -= tv[i]
     # stage 4
     for i in range(n):
         yt[i] = y[i] + R34_A41 * k1[i] + R34_A42 * k2[i] + R34_A43 * k3[i]
-        tv[i] = R34_C41 * k1[i] + R34_C42 * k2[i] + R34_C43 * k3[i]
+        tv[i] = ig * (R34_C41 * k1[i] + R34_C42 * k2[i] + R34_C43 * k3[i])
     fun(t + R34_ALPHA4 * hs, yt, ft, args)
-    j_times(jac, blk, nbk, cpl, tv, jv)
     for i in range(n):
-        ft[i] = hs * (ft[i] + jv[i])
+        ft[i] = hs * ft[i] + tv[i]
     w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k4)
+    for i in range(n):
+        k4[i] -= tv[i]
 
 
 @njit
