@@ -3,7 +3,8 @@ Table 3), the default integrator with the lubricated traction kernel (``integrat
 traction "slices"; DOPRI5 otherwise).
 
 Four stages, order 3 as a W-method (any approximation of the Jacobian), embedded order 2, L-stable
-for the exact Jacobian.  Hairer form: (I − γhJ) k_i = h f(t + α_i h, y + Σ_j a_ij k_j) + hJ Σ_j c_ij k_j.
+for the exact Jacobian.  Hairer form: (I − γhJ) k_i = h f(t + α_i h, y + Σ_j a_ij k_j) + hJ Σ_j c_ij k_j, each stage
+solved without a product with J (:func:`stages`).
 J holds the per-ball blocks of ∂f/∂y (:func:`.jacobian.block_jac`) and — unless the inner ring is
 held fixed or the coupling is switched off — the inner ring's own block and the ring–ball coupling
 (:func:`.jacobian.ring_jac`, :func:`.jacobian.ring_rows`): the inner ring sliding against all its
@@ -57,7 +58,7 @@ R34_REJECT_EXPONENT = 1.0 / 3.0
 
 
 @njit
-def stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv, cpl):
+def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl):
     """The four stages of ROS34PW2 (k_i include the factor h); f0 = f(t, y); ``cpl`` = (J_rr, J_br,
     J_rb, Q, S⁻¹, work, work) of the ring–ball coupling (:func:`.linalg.coupled_w`) or
     :func:`.linalg.no_coupling`.
@@ -65,7 +66,8 @@ def stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft,
     The stage equation W k_i = h f(Y_i) + hJ s_i, s_i = Σ_j c_ij k_j, is solved without the product J s_i:
     hJ = (I − W)/γ for the same J that W = I − γhJ is made of, so k_i = W⁻¹(h f(Y_i) + s_i/γ) − s_i/γ (the form
     of Hairer & Wanner, *Solving ODEs II*, §IV.7, (7.25), in the untransformed k_i; issue 14: three products
-    with the coupled J per step saved).  ``jac`` and ``jv`` are kept in the signature (unused)."""
+    with the coupled J per step saved; W must be made of the Jacobian the step uses, as :func:`integrate` makes it
+    after every refresh)."""
     n = y.shape[0]
     ig = 1.0 / R34_G
     for i in range(n):
@@ -132,7 +134,6 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     k4 = np.empty(n)
     yt = np.empty(n)
     ft = np.empty(n)
-    jv = np.empty(n)
     tv = np.empty(n)
     ynew = np.empty(n)
     evec = np.empty(n)
@@ -185,7 +186,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             else:
                 w_inverse(jac, hs, R34_G, winv, wm)
             h_w = hs
-        stages(fun, args, t, y, hs, f0, jac, winv, blk, nbk, k1, k2, k3, k4, yt, ft, jv, tv, cpl)
+        stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
@@ -246,7 +247,6 @@ def fixed_steps(fun, args, t, y, h, nsteps, blk, nbk):
     k4 = np.empty(n)
     yt = np.empty(n)
     ft = np.empty(n)
-    jv = np.empty(n)
     tv = np.empty(n)
     epsb = np.empty(max(nb, 1))
     atol = np.full(n, 1e-12)
@@ -255,7 +255,7 @@ def fixed_steps(fun, args, t, y, h, nsteps, blk, nbk):
         if nb > 0:
             block_jac(fun, args, t, y, f0, atol, bl, nk, jac, yt, f1, epsb)
             w_inverse(jac, h, R34_G, winv, wm)
-        stages(fun, args, t, y, h, f0, jac, winv, bl, nk, k1, k2, k3, k4, yt, ft, jv, tv, cpl)
+        stages(fun, args, t, y, h, f0, winv, bl, nk, k1, k2, k3, k4, yt, ft, tv, cpl)
         for i in range(n):
             y[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
         t += h
