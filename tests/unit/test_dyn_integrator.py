@@ -238,7 +238,7 @@ def test_block_w_inverse_equals_the_dense_inverse(seed, log_scale, log_c, kinema
 
 def _ros34_step_with_j_products(a_mat, jac, y, h):
     """One ROS34PW2 step of y' = A y with the Jacobian approximation ``jac`` in Hairer's form with the products
-    J s_i written out (Hairer & Wanner, Solving ODEs II, §IV.7, (7.4); Rang & Angermann 2005, Table 3): the
+    J s_i written out (Hairer & Wanner, Solving ODEs II, §IV.7; Rang & Angermann 2005, Table 3): the
     reference for the engine's J-free stages."""
     g = ig.R34_G
     a = [[], [ig.R34_A21], [ig.R34_A31, ig.R34_A32], [ig.R34_A41, ig.R34_A42, ig.R34_A43]]

@@ -65,9 +65,9 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
 
     The stage equation W k_i = h f(Y_i) + hJ s_i, s_i = Σ_j c_ij k_j, is solved without the product J s_i:
     hJ = (I − W)/γ for the same J that W = I − γhJ is made of, so k_i = W⁻¹(h f(Y_i) + s_i/γ) − s_i/γ (the form
-    of Hairer & Wanner, *Solving ODEs II*, §IV.7, (7.25), in the untransformed k_i; issue 14: three products
-    with the coupled J per step saved; W must be made of the Jacobian the step uses, as :func:`integrate` makes it
-    after every refresh)."""
+    of Hairer & Wanner, *Solving ODEs II*, §IV.7 — its implementation with u_i = Σ_j γ_ij k_j — written for the
+    untransformed k_i; issue 14: three products with the coupled J per step saved; W must be made of the Jacobian
+    the step uses, as :func:`integrate` makes it after every refresh)."""
     n = y.shape[0]
     ig = 1.0 / R34_G
     for i in range(n):
