@@ -70,11 +70,8 @@ from .linalg import (
     apply_w,
     block_w_inverse,
     coupled_apply_w,
-    coupled_jac_vec,
     coupled_w,
     invert_small,
-    j_times,
-    jac_vec,
     kinematic_rows,
     no_coupling,
     w_inverse,
@@ -118,14 +115,11 @@ _block_jac = block_jac
 _ring_jac = ring_jac
 _ring_rows = ring_rows
 _apply_w = apply_w
-_jac_vec = jac_vec
 _invert_small = invert_small
 _kinematic_rows = kinematic_rows
 _w_inverse = w_inverse
 _coupled_w = coupled_w
 _coupled_apply_w = coupled_apply_w
-_coupled_jac_vec = coupled_jac_vec
-_j_times = j_times
 _stages = dopri5.stages
 _ros34_stages = ros34pw2.stages
 

@@ -41,20 +41,6 @@ def apply_w(winv, blk, nbk, v, out):
 
 
 @njit(cache=True)
-def jac_vec(jac, blk, nbk, v, out):
-    """out = J v with J zero outside the blocks."""
-    for i in range(v.shape[0]):
-        out[i] = 0.0
-    for b in range(blk.shape[0]):
-        o = blk[b]
-        for i in range(nbk):
-            s = 0.0
-            for j in range(nbk):
-                s += jac[b, i, j] * v[o + j]
-            out[o + i] = s
-
-
-@njit(cache=True)
 def w_solve(winv, blk, nbk, hs, g, cpl, v, out):
     """out = W⁻¹ v: block-diagonal W, or the arrowhead W of the ring–ball coupling when ``cpl`` holds it."""
     jrr, jbr, jrb, q, sinv, z, r = cpl
@@ -65,18 +51,8 @@ def w_solve(winv, blk, nbk, hs, g, cpl, v, out):
 
 
 @njit(cache=True)
-def j_times(jac, blk, nbk, cpl, v, out):
-    """out = J v (ball blocks, plus the ring block and the coupling when ``cpl`` holds them)."""
-    jrr, jbr, jrb, q, sinv, z, r = cpl
-    if jbr.shape[0] > 0:
-        coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, v, out)
-    else:
-        jac_vec(jac, blk, nbk, v, out)
-
-
-@njit(cache=True)
 def no_coupling(nbk):
-    """The ``cpl`` argument of :func:`w_solve` / :func:`j_times` without the ring–ball coupling: (J_rr,
+    """The ``cpl`` argument of :func:`w_solve` without the ring–ball coupling: (J_rr,
     J_br, J_rb, Q, S⁻¹, work, work) with no ball rows (the coupled form is built in ROS34PW2)."""
     return (np.zeros((NR, NR)), np.zeros((0, nbk, NR)), np.zeros((0, NR, nbk)), np.zeros((0, nbk, NR)),
             np.zeros((NR, NR)), np.zeros((0, nbk)), np.zeros(NR))
@@ -298,27 +274,3 @@ def coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
             for j in range(NR):
                 acc -= q[b, i, j] * out[j]
             out[o + i] = acc
-
-
-@njit(cache=True)
-def coupled_jac_vec(jac, jrr, jbr, jrb, blk, nbk, v, out):
-    """out = J v for the arrowhead J: the ball blocks (:func:`jac_vec`), the ring block and the
-    ring–ball coupling."""
-    jac_vec(jac, blk, nbk, v, out)
-    for i in range(NR):
-        acc = 0.0
-        for j in range(NR):
-            acc += jrr[i, j] * v[j]
-        out[i] = acc
-    for b in range(blk.shape[0]):
-        o = blk[b]
-        for i in range(nbk):
-            acc = 0.0
-            for j in range(NR):
-                acc += jbr[b, i, j] * v[j]
-            out[o + i] += acc
-        for i in range(NR):
-            acc = 0.0
-            for j in range(nbk):
-                acc += jrb[b, i, j] * v[o + j]
-            out[i] += acc
