@@ -48,7 +48,7 @@ from ..contact import slices as _sl
 from . import layout as ly
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def cross(a, b, out):
     """out ← a × b (3-vectors)."""
     out[0] = a[1] * b[2] - a[2] * b[1]
@@ -57,7 +57,7 @@ def cross(a, b, out):
 
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def slice_table(nsl, table):
     """table[k], table[nsl + k] ← load share and load centroid ξ̄ of slice k of n = nsl
     (:func:`bearingsim.contact.slices.slice_fraction`, :func:`~bearingsim.contact.slices.slice_centroid`),

@@ -43,7 +43,7 @@ from .contacts import cross as _cross
 from .loads import constant_loads, load_channel, loads_at, pack_loads, speed_at  # noqa: F401
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def _rot_yz(gy, gz, rm):
     """R = R_y(γy) R_z(γz) [-]."""
     cy = math.cos(gy)
@@ -64,6 +64,8 @@ def _rot_yz(gy, gz, rm):
 
 A_PIN, A_POUT, A_PCAGE, A_PLAND, A_EPOT, A_ECAGE = range(6)
 NACC = 6
+#: floats of :func:`_rhs`'s work array before the cage's modal forces (its small arrays, laid out in _rhs)
+RHS_WORK = 128
 
 
 #: work floats per ball in :func:`_one_ball` before race_contact_at's buffer (fb, mb, bp, g, gr, vg, tang, tmp: 3
@@ -299,9 +301,9 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
                   contrib[k])
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc, memo, threads=False):
+                      diag, acc, memo, threads, work):
     """Every ball on its two raceways, and Newton–Euler for every ball.
 
     Inner raceway: the groove-curvature centre g in the ball's meridian plane of the tilted, displaced
@@ -322,14 +324,19 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
     ``numba.set_num_threads``) and write their reactions on the rings into a per-ball array, which is
     then summed serially in ball order: the result does not depend on the number of threads nor on
     ``threads``, bit for bit.
+
+    work: float[:func:`ball_work_size`] (the per-ball contributions, the balls' work rows and one contribution row),
+    so that nothing is allocated and no view is reference-counted here (``_nrt=False``; issue 14).
     """
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
     # work rows of race_contact_at, followed by the slices of the Coulomb stand-in (the same for every contact)
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
-    contrib = np.empty((nb, NCONTRIB))
+    nbw = BALL_WORK + 44 + 2 * nsl
+    o1 = nb * NCONTRIB
+    contrib = work[0:o1].reshape((nb, NCONTRIB))
     if threads:
-        work = np.empty((nb, BALL_WORK + 44 + 2 * nsl))
+        work = work[o1:o1 + nb * nbw].reshape((nb, nbw))
         slice_table(nsl, work[0, BALL_WORK + 44:])
         for k in range(1, nb):
             for i in range(2 * nsl):
@@ -341,9 +348,9 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
         # no call per ball: the call cost 13 % of a hub right-hand side, measured in one process, 40 paired
         # rounds; written out: 1 %).  The same statements, so bitwise the same result as the threaded path
         # (tests/unit/test_dyn_threads.py compares the two texts and the results).
-        wk = np.empty(BALL_WORK + 44 + 2 * nsl)
+        wk = work[o1:o1 + nbw]
         slice_table(nsl, wk[BALL_WORK + 44:])
-        ck = np.empty(NCONTRIB)
+        ck = work[o1 + nbw:o1 + nbw + NCONTRIB]
         fb, mb, bp, g, gr, vg, tang, tmp = (wk[0:3], wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21],
                                             wk[21:24])
         fbo = wk[24:27]
@@ -492,16 +499,21 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
                 contrib[k, i] = ck[i]
     # the reduction, serially in ball order (independent of the thread count)
     for k in range(nb):
-        ck = contrib[k]
         for i in range(3):
-            fring[i] += ck[i]
-            mring[i] += ck[3 + i]
-            fout[i] += ck[6 + i]
-            mout[i] += ck[9 + i]
+            fring[i] += contrib[k, i]
+            mring[i] += contrib[k, 3 + i]
+            fout[i] += contrib[k, 6 + i]
+            mout[i] += contrib[k, 9 + i]
         if want:
-            acc[A_PIN] += ck[12]
-            acc[A_POUT] += ck[13]
-            acc[A_EPOT] += ck[14]
+            acc[A_PIN] += contrib[k, 12]
+            acc[A_POUT] += contrib[k, 13]
+            acc[A_EPOT] += contrib[k, 14]
+
+
+@njit(cache=True)
+def ball_work_size(nb, nsl, threads):
+    """Length of :func:`balls_on_raceways`' work array for nb balls and nsl Coulomb slices (0: sliced traction)."""
+    return nb * NCONTRIB + (nb if threads else 1) * (BALL_WORK + 44 + 2 * nsl) + NCONTRIB
 
 
 @njit(cache=True, inline="always")
@@ -890,7 +902,19 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     memo (n_balls × MEMO_W, or no rows: :func:`no_memo`): the outer-raceway contacts of the last evaluation, reused
     for a ball whose state has not changed since (:func:`outer_memo_hit`; the same result bit for bit).
     threads: the balls in parallel (:func:`balls_on_raceways`; same result bit for bit).
+
+    One work array is allocated here; the equations are :func:`_rhs`, compiled without numba's reference counting
+    (its ~60 small arrays and views were counted atomically: issue 14).
     """
+    nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
+    nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, threads)
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, np.empty(nw))
+
+
+@njit(cache=True, _nrt=False)
+def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, work):
+    """The body of :func:`rhs`; work: float[RHS_WORK + cm.shape[1] + ball_work_size(...)] (every small array of the
+    equations is a view of it)."""
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
     omega = speed_at(t, gp)
@@ -899,61 +923,68 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     g1 = gp[ly.G_GX + 1]
     g2 = gp[ly.G_GX + 2]
     # ---- inner ring: orientation, axis, angular velocity (tilt rates plus the spin Ω about its axis)
-    rm = np.empty((3, 3))
+    rm = work[0:9].reshape((3, 3))
     _rot_yz(y[3], y[4], rm)
     cy = math.cos(y[3])
     sy = math.sin(y[3])
     c = y[0:3]
     cd = y[5:8]
-    ax = np.empty(3)
+    ax = work[9:12]
     ax[0] = rm[0, 0]
     ax[1] = rm[1, 0]
     ax[2] = rm[2, 0]
-    wtilt = np.empty(3)
+    wtilt = work[12:15]
     wtilt[0] = y[9] * sy
     wtilt[1] = y[8]
     wtilt[2] = y[9] * cy
-    wring = np.empty(3)
+    wring = work[15:18]
     for i in range(3):
         wring[i] = wtilt[i] + omega * ax[i]
-    fring = np.zeros(3)
-    mring = np.zeros(3)
-    fout = np.zeros(3)
-    mout = np.zeros(3)
-    acc = np.zeros(NACC)
-    loads = np.empty(5)
+    fring = work[18:21]
+    mring = work[21:24]
+    fout = work[24:27]
+    mout = work[27:30]
+    acc = work[30:30 + NACC]
+    for i in range(18, 30 + NACC):  # fring, mring, fout, mout, acc start at zero
+        work[i] = 0.0
+    loads = work[36:41]
     loads_at(t, loadspec, loads)
     # ---- balls on the raceways
     balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc, memo, threads)
+                      diag, acc, memo, threads, work[RHS_WORK + cm.shape[1]:])
     # ---- cages: pockets (with elastic modes), land guidance, equations
     oc0 = ly.N_RING + ly.N_BALL * nb
-    rmc = np.empty((3, 3))
-    rcm = np.empty((3, 3))
-    occ = np.empty(3)
-    wc = np.empty(3)
-    fc = np.empty(3)
-    mc = np.empty(3)
-    fm = np.empty(cm.shape[1])
-    tmp = np.empty(3)
-    bp = np.empty(3)
-    wpk = np.empty(3)
-    ud = np.zeros(3)
-    rho = np.zeros(3)
-    udd = np.zeros(3)
-    rhod = np.zeros(3)
-    nlc = np.empty(3)
-    rpk = np.empty(3)
-    fcl = np.empty(3)
-    mcl = np.empty(3)
-    nvec = np.empty(3)
-    pc = np.empty(3)
-    pw = np.empty(3)
-    half = np.empty(3)
-    vbp = np.empty(3)
-    vcp = np.empty(3)
-    ff = np.empty(3)
-    ftot = np.empty(3)
+    rmc = work[41:50].reshape((3, 3))
+    rcm = work[50:59].reshape((3, 3))
+    occ = work[59:62]
+    wc = work[62:65]
+    fc = work[65:68]
+    mc = work[68:71]
+    tmp = work[71:74]
+    bp = work[74:77]
+    wpk = work[77:80]
+    ud = work[80:83]
+    rho = work[83:86]
+    udd = work[86:89]
+    rhod = work[89:92]
+    nlc = work[92:95]
+    rpk = work[95:98]
+    fcl = work[98:101]
+    mcl = work[101:104]
+    nvec = work[104:107]
+    pc = work[107:110]
+    pw = work[110:113]
+    half = work[113:116]
+    vbp = work[116:119]
+    vcp = work[119:122]
+    ff = work[122:125]
+    ftot = work[125:128]
+    fm = work[RHS_WORK:RHS_WORK + cm.shape[1]]
+    for i in range(3):
+        ud[i] = 0.0
+        rho[i] = 0.0
+        udd[i] = 0.0
+        rhod[i] = 0.0
     cwork = (tmp, bp, wpk, ud, rho, udd, rhod, nlc, rpk, fcl, mcl, nvec, pc, pw, half, vbp, vcp, ff, ftot)
     for ci in range(cp.shape[0]):
         o = oc0 + ly.N_CAGE * ci

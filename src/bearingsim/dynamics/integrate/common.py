@@ -38,7 +38,7 @@ STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (dive
 NO_VECTORS = np.zeros((0, 2), dtype=np.int64)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def error_scale(i, y, ynew, atol, rtol, vec):
     """Error scale of component i: atol_i + rtol_i max(|y|, |ynew|) (Hairer, Nørsett & Wanner, *Solving
     ODEs I*, 1993, eq. II.4.11), where |·| is the component's own magnitude, or, when ``vec`` (int64[n, 2])
@@ -58,7 +58,7 @@ def error_scale(i, y, ynew, atol, rtol, vec):
     return atol[i] + rtol[i] * np.sqrt(max(a, b))
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def error_norm(e, y, ynew, atol, rtol, info, vec=NO_VECTORS):
     """Scaled RMS norm of the local error estimate e (Hairer, Nørsett & Wanner, *Solving ODEs I*,
     1993, eq. II.4.11): √(Σ (e_i / s_i)² / n), s_i = :func:`error_scale` (``vec``: its vector groups).

@@ -26,7 +26,7 @@ NR = N_RING  #: inner-ring states (q, q̇) at the start of the state vector
 NB = N_BALL  #: states of a ball block (r, v, ω): the ring–ball coupling's blocks have this size
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def apply_w(winv, blk, nbk, v, out):
     """out = W⁻¹ v with W block diagonal: W_b on the blocks, identity elsewhere."""
     for i in range(v.shape[0]):
@@ -40,7 +40,7 @@ def apply_w(winv, blk, nbk, v, out):
             out[o + i] = s
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def w_solve(winv, blk, nbk, hs, g, cpl, v, out):
     """out = W⁻¹ v: block-diagonal W, or the arrowhead W of the ring–ball coupling when ``cpl`` holds it."""
     jrr, jbr, jrb, q, sinv, z, r = cpl
@@ -94,21 +94,21 @@ def _gauss_jordan(a, out, n):
                         out[r, j] -= f * out[c, j]
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def invert_small(a, out):
     """out = a⁻¹ by Gauss–Jordan elimination with partial pivoting (a is overwritten);
     for the 9×9 blocks this is ~10× faster than a LAPACK call from numba."""
     _gauss_jordan(a, out, a.shape[0])
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def _invert6(a, out):
     """:func:`invert_small` for 6 × 6, the loops' length known when compiling (7.8 against 13.6 µs for the 32 ball
     blocks of the hub case)."""
     _gauss_jordan(a, out, 6)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def kinematic_rows(jb):
     """True when the block jb (9 × 9, a ball's r, v, ω) has the kinematic rows ṙ = v exactly: rows 0–2 are
     [0 I 0] (so the finite differences give them: the position's derivative is the velocity state itself)."""
@@ -121,7 +121,7 @@ def kinematic_rows(jb):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def block_w_inverse(jb, c, wm, out):
     """out = (I + c J_b)⁻¹ for one block (c = −γh; wm a work array of the block's size, overwritten).
 
@@ -163,7 +163,7 @@ def block_w_inverse(jb, c, wm, out):
             out[i, 3 + j] = -c * ninv[i, j]
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def w_inverse(jac, hs, g, winv, wm):
     """winv[b] = (I − g hs J_b)⁻¹ for every block b (:func:`block_w_inverse`)."""
     c = -g * hs
@@ -171,7 +171,7 @@ def w_inverse(jac, hs, g, winv, wm):
         block_w_inverse(jac[b], c, wm, winv[b])
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb):
     """Ball b's part of :func:`coupled_w` (c = −g hs): winv[b] = W_bb⁻¹, q[b] = Q_b = W_bb⁻¹ W_br and
     sb = W_rb Q_b (its term of the Schur complement), with wm a 9 × 9 work array."""
@@ -195,7 +195,7 @@ def _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb):
             sb[i, j] = acc
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr, sb):
     """Arrowhead W = I − g hs J with ring block, ball blocks and ring–ball coupling: ball block
     inverses winv, Q_b = W_bb⁻¹ W_br, and the inverse of the ring's Schur complement
@@ -226,7 +226,7 @@ def coupled_w_threaded(jac, jrr, jbr, jrb, hs, g, winv, wmb, q, sinv, srr, sb):
     _schur_inverse(jrr, c, sb, sinv, srr)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def _schur_inverse(jrr, c, sb, sinv, srr):
     """sinv = S⁻¹, S = I + c J_rr − Σ_b sb[b] (subtracted in ball order); srr is overwritten."""
     for i in range(NR):
@@ -240,7 +240,7 @@ def _schur_inverse(jrr, c, sb, sinv, srr):
     invert_small(srr, sinv)
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
     """out = W⁻¹ v for the arrowhead W of :func:`coupled_w` (identity outside ring and balls; ball blocks of
     N_BALL = 9 states, the loops' bounds known when compiling: ``nbk`` is that size)."""
