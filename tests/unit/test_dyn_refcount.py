@@ -96,7 +96,7 @@ def test_array_and_component_forms_of_the_contact_agree_bit_for_bit(seed, mode, 
     a_c, b_c, r_dev = 1e-4, 1e-5, 10e-3
     fb, mb, fr, mr = (np.zeros(3) for _ in range(4))
     res = np.zeros(8)
-    tbuf = np.zeros(44 + 2 * 8)
+    tbuf = np.zeros(max(44 + 2 * 8, S.TRACTION_OUT))  # the Coulomb slices at 44:, or the strips' lanes
     ct.slice_table(8, tbuf[44:])
     ct.race_contact(b, v, w, g, vg, worb, rcen, vrace, wrace, kc, rgroove, half_d, alpha, lub, gp, a_c, b_c, r_dev,
                     tang, fb, mb, fr, mr, res, tbuf)

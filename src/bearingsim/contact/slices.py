@@ -88,6 +88,7 @@ from numba import njit
 from ..errors import InputError
 from . import ehl, traction
 from .traction import MARTIN_ROLLING, elastic_plastic_mean_stress, mixed_weight
+from .vecmath import LANES, vexp, vlog
 
 # ---- layout of the packed parameter vector `lub` -------------------------------------
 L_MODEL = 0  # 0 boundary, 1 fluid, 2 mixed
@@ -127,6 +128,12 @@ L_C_FKC = 43  # 1 - 0.61 exp(-0.73 k) (central film)
 L_C_HIR = 44  # isoviscous-rigid film parameter of the regime map (ehl.regime_films)
 L_C_FKIE = 45  # 1 - 0.85 exp(-0.31 k) (isoviscous-elastic film of the regime map)
 L_SIZE = 46
+
+# ---- the strip loop's lanes (traction_at): out[10:] holds these arrays of LANES floats, one lane per strip
+(LX, LOFF, LQ, LFRAC, LAREA, LP, LSX, LSY, LSZ, LSM, LEX, LEY, LEZ, LU, LNX, LNY, LNZ, LSR, LMU, LA, LB, LL2X, LTL,
+ LTAU, LZ1, LDEN, LNUM, LARG) = (k * LANES for k in range(28))
+#: length of traction_at's ``out`` with strips: the 10 results, then the lanes' work space
+TRACTION_OUT = 10 + 28 * LANES
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
 FLUID_MODELS = {"curve": 0, "physical": 1}
@@ -250,14 +257,18 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     strips); 0: nothing.
 
     out float[10] ← force on the ball (3) [N], moment on the ball about ball_centre (3)
-    [N m], moment on the race about race_centre (3) [N m], power lost [W] (≥ 0).  The race
+    [N m], moment on the race about race_centre (3) [N m], power lost [W] (≥ 0); an out of TRACTION_OUT floats or
+    more is also the strips' work space (otherwise one is allocated).  The race
     force is minus the ball force.  The normal Hertz force is not included.
     Returns nothing.  See the module docstring for the equations.
     """
+    buf = out if out.shape[0] >= TRACTION_OUT else np.empty(TRACTION_OUT)
     traction_at(q, a, b, r_dev, centre[0], centre[1], centre[2], normal[0], normal[1], normal[2], major[0], major[1],
                 major[2], ball_centre[0], ball_centre[1], ball_centre[2], v_ball[0], v_ball[1], v_ball[2], w_ball[0],
                 w_ball[1], w_ball[2], race_centre[0], race_centre[1], race_centre[2], v_race[0], v_race[1], v_race[2],
-                w_race[0], w_race[1], w_race[2], lub, n_slices, out)
+                w_race[0], w_race[1], w_race[2], lub, n_slices, buf)
+    for i in range(10):
+        out[i] = buf[i]
 
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
@@ -266,7 +277,8 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     """:func:`contact_traction` with its vectors as their components (the same numbers): the dynamic engine's
     contacts call this form, so that no array is passed nor viewed per contact (numba counts a reference for
     each, with an atomic increment and decrement: 17.5 % of the hub right-hand side's samples, issue 14).
-    out[0:10] ← as :func:`contact_traction` (entries from 10 on are not touched)."""
+    out[0:10] ← as :func:`contact_traction`; with strips (n_slices > 0) out needs TRACTION_OUT floats: out[10:] is
+    the work space of the strips' lanes (ValueError otherwise)."""
     for i in range(10):
         out[i] = 0.0
     if not (q > 0.0 and a > 0.0 and b > 0.0) or n_slices == 0:
@@ -395,6 +407,7 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
         return
     inv_n = 1.0 / n_slices
     width = 2.0 * a * inv_n
+    lw = out[10:]  # the lanes' work space (LX … LNUM below)
     phys = need_f and fluid_kind != 0
     # the laws' constants; physical fluid model, slice-independent terms (traction.fluid_shear_stress)
     (ba, bb, bc, bd, fa, fb, fc, fd, tau0, t0c, lss_r, lss_c1, lss_c2, lss_c3, lss_c4, lss_floor, beta_v, roe_ln,
@@ -429,144 +442,187 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     bex, bey, bez = wey * nz - wez * ny, wez * nx - wex * nz, wex * ny - wey * nx
     d0bx, d0by, d0bz = c0x - cbx, c0y - cby, c0z - cbz
     d0rx, d0ry, d0rz = c0x - crx, c0y - cry, c0z - crz
-    # Slices j and n−1−j are mirror images (ξ → −ξ): same load, area, mean pressure and
-    # hence the same pressure-dependent viscosity and limiting shear stress; their centroids
-    # are ±x̄ with the same normal offset.  Each pair is set up once and its two slices are
-    # evaluated side by side (independent chains of transcendental functions that the CPU
-    # overlaps).  The middle slice of an odd count is evaluated alone.
+    # The strips go through the film law eight at a time (issue 14, tenth pass): (A) each strip's load, point and
+    # velocities, one lane per strip (strip s of the pair j = min(s, n−1−s): the pair's mirror images share load,
+    # area and mean pressure, at ±x̄); (B) the traction coefficient on all eight lanes, with the exponentials and
+    # logarithms of the film law taken by vexp / vlog (glibc's vector math library where this CPU has it:
+    # :mod:`.vecmath`); (C) each loaded strip's traction and rolling resistance added to out.  Lanes past the last
+    # strip or without load carry values that keep the functions finite and are not added.
+    if out.shape[0] < TRACTION_OUT:
+        raise ValueError("traction_at: out needs TRACTION_OUT floats (the strips' lanes are its work space)")
     n_half = (n_slices + 1) // 2
-    f_prev = -0.5  # F(-1)
-    g_prev = 0.1875  # G(-1)
-    h_prev = -0.5 * math.pi  # H(-1)
     tabled = n_slices <= STRIP_TABLE_MAX
     # rolling resistance (Zhou-Hoeprich) as k_zh u0^0.648 (Q_j/Q)^0.246 (u/u0)^0.648: one logarithm per
     # contact, the strip's factor from the table, (u/u0)^0.648 by its series near 1 (_pow_0648)
     roll_zh = do_roll and reg != 0 and u0 > 0.0
     k_zh_u0 = k_zh * math.exp(0.648 * math.log(u0)) if roll_zh else 0.0
     inv_u0 = 1.0 / u0 if u0 > 0.0 else 0.0
-    for j in range(n_half):
-        if tabled:
-            # strip load share, centroid and area from the tables (the same running differences, done once)
-            frac = _STRIP_FRAC[n_slices, j]
-            area = _STRIP_AREA[n_slices, j]
-            xbar = a * _STRIP_XI[n_slices, j]
-        else:
-            xi1 = -1.0 + 2.0 * (j + 1) * inv_n
-            f1 = 0.25 * (3.0 * xi1 - xi1 * xi1 * xi1)
-            g1 = 0.75 * (0.5 * xi1 * xi1 - 0.25 * (xi1 * xi1) * (xi1 * xi1))
-            frac = f1 - f_prev
-            gfrac = g1 - g_prev
-            f_prev = f1
-            g_prev = g1
-            area = 1.0
-            if phys:
-                h1 = _area_primitive(xi1)
-                area = h1 - h_prev
-                h_prev = h1
-            xbar = a * (gfrac / frac) if frac > 0.0 else 0.0
-        qj = q * frac
-        if qj <= 0.0:
-            continue
-        two = 2 * j + 1 != n_slices
-        off, root = slice_point_offset(xbar, curv)
-        # parts common to the pair: offset along the normal
-        s1x, s1y, s1z = s0x + off * bsx, s0y + off * bsy, s0z + off * bsz
-        e1x, e1y, e1z = e0x + off * bex, e0y + off * bey, e0z + off * bez
-        (sax, say, saz, smag_a, eax, eay, eaz, u_a, nax, nay, naz) = _slice_kinematics(
-            xbar, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx, asy, asz, e1x, e1y, e1z, aex, aey, aez)
-        (sbx, sby, sbz, smag_b, ebx, eby, ebz, u_b, nbx, nby, nbz) = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-                                                                        0.0, 0.0, 0.0)
-        if two:
-            (sbx, sby, sbz, smag_b, ebx, eby, ebz, u_b, nbx, nby, nbz) = _slice_kinematics(
-                -xbar, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx, asy, asz, e1x, e1y, e1z,
-                aex, aey, aez)
-        # traction coefficients (seed eq. 2)
-        mu_a = 0.0
-        mu_b = 0.0
-        iu_a = 1.0 / u_a if u_a > 0.0 else 0.0
-        iu_b = 1.0 / u_b if u_b > 0.0 else 0.0
-        sr_a = smag_a * iu_a if u_a > 0.0 else 1e300
-        sr_b = smag_b * iu_b if u_b > 0.0 else 1e300
-        if need_b:
-            mu_a = (ba + bb * sr_a) * math.exp(-bc * sr_a) + bd
-            mu_b = (ba + bb * sr_b) * math.exp(-bc * sr_b) + bd
-        if need_f:
-            if fluid_kind == 0:
-                mu_a += ((fa + fb * sr_a) * math.exp(-fc * sr_a) + fd - mu_a) * wfl
-                mu_b += ((fa + fb * sr_b) * math.exp(-fc * sr_b) + fd - mu_b) * wfl
-            else:
-                tau_a = 0.0
-                tau_b = 0.0
-                if hc > 0.0:
-                    # traction.fluid_shear_stress with the pair constants
-                    pbar = qj * inv_ab / area
-                    # Roelands: ln η(p̄) = ln η0 + (ln η0 + 9.67)((1 + p̄/1.96e8)^z − 1); the logarithm
-                    # feeds ln 2x directly (x = η γ̇/τ0), η itself only the small-x branch
-                    ln_eta_p = ln_eta0 + roe_ln * (math.exp(roe_z * math.log(1.0 + pbar / 1.96e8)) - 1.0)
-                    fl = lss_floor * pbar
-                    tl = lss_r * (lss_c1 * pbar / den0 - lss_c4)
-                    if tl < fl:
-                        tl = fl
-                    ctl = tau0 / tl
-                    l2x_a = math.log(two_inv_hc_tau0 * smag_a) + ln_eta_p
-                    l2x_b = math.log(two_inv_hc_tau0 * smag_b) + ln_eta_p
-                    tau_a = tl * _tanh_pos(ctl * _asinh_l2x(l2x_a))
-                    tau_b = tl * _tanh_pos(ctl * _asinh_l2x(l2x_b))
-                    if theta > 0.0:
-                        tau_a = _heated_stress(tau_a, theta * smag_a, l2x_a, pbar, fl, tau0, t0c, lss_r, lss_c1,
-                                               lss_c2, lss_c3, lss_c4, beta_v)
-                        tau_b = _heated_stress(tau_b, theta * smag_b, l2x_b, pbar, fl, tau0, t0c, lss_r, lss_c1,
-                                               lss_c2, lss_c3, lss_c4, beta_v)
-                    if visco:
-                        # traction.elastic_plastic_mean_stress with τ_e = G ℓ_j s/h (no rolling: τ_e = ∞)
-                        ke = k_ve * tl * area / (1.0 + k_sol * tl)
-                        if u_a > 0.0:
-                            tau_a = elastic_plastic_mean_stress(tau_a, ke * sr_a)
-                        if u_b > 0.0:
-                            tau_b = elastic_plastic_mean_stress(tau_b, ke * sr_b)
-                    mu_a += (tau_a / pbar - mu_a) * wfl
-                    mu_b += (tau_b / pbar - mu_b) * wfl
+    film = need_f and fluid_kind != 0 and hc > 0.0  # the physical film law on the strips
+    for c0 in range(0, n_slices, LANES):
+        nl = min(LANES, n_slices - c0)
+        # ---- (A) the strips' loads, points and velocities
+        for i in range(LANES):
+            s = c0 + i
+            j = s if s < n_half else n_slices - 1 - s
+            qj = 0.0
+            frac = area = xbar = 0.0
+            if i < nl:
+                if tabled:
+                    # strip load share, centroid and area from the tables (the running differences, done once)
+                    frac = _STRIP_FRAC[n_slices, j]
+                    area = _STRIP_AREA[n_slices, j]
+                    xbar = a * _STRIP_XI[n_slices, j]
                 else:
-                    mu_a -= mu_a * wfl
-                    mu_b -= mu_b * wfl
-        # rolling resistance of the two slices (zero where u = 0)
-        fr_a = 0.0
-        fr_b = 0.0
-        if do_roll:
-            if reg == 0:
-                fr_pair = k_ir * math.sqrt(frac)
-                fr_a = fr_pair * math.sqrt(u_a)
-                fr_b = fr_pair * math.sqrt(u_b)
-            elif roll_zh:
-                fr_pair = k_zh_u0 * (_STRIP_Q246[n_slices, j] if tabled else math.exp(0.246 * math.log(frac)))
-                if u_a > 0.0:
-                    fr_a = fr_pair * _pow_0648(u_a * inv_u0)
-                if u_b > 0.0:
-                    fr_b = fr_pair * _pow_0648(u_b * inv_u0)
-            else:  # no entraining speed at the centre (u0 = 0): the formula as it stands
-                fr_pair = 0.246 * math.log(frac)  # ln of (Q_j/Q)^0.246
-                if u_a > 0.0:
-                    fr_a = k_zh * math.exp(0.648 * math.log(u_a) + fr_pair)
-                if u_b > 0.0:
-                    fr_b = k_zh * math.exp(0.648 * math.log(u_b) + fr_pair)
-        for side in range(2 if two else 1):
-            if side == 0:
-                x, sx, sy, sz, smag, ex, ey, ez, uj, inv_u, njx, njy, njz, mu, fr = (
-                    xbar, sax, say, saz, smag_a, eax, eay, eaz, u_a, iu_a, nax, nay, naz, mu_a, fr_a)
-            else:
-                x, sx, sy, sz, smag, ex, ey, ez, uj, inv_u, njx, njy, njz, mu, fr = (
-                    -xbar, sbx, sby, sbz, smag_b, ebx, eby, ebz, u_b, iu_b, nbx, nby, nbz, mu_b, fr_b)
+                    xi0 = -1.0 + 2.0 * j * inv_n
+                    xi1 = -1.0 + 2.0 * (j + 1) * inv_n
+                    frac = slice_fraction(xi0, xi1)
+                    area = _area_primitive(xi1) - _area_primitive(xi0) if phys else 1.0
+                    xbar = a * slice_centroid(xi0, xi1) if frac > 0.0 else 0.0
+                qj = q * frac
+            lw[LQ + i] = qj
+            if not qj > 0.0:
+                lw[LP + i] = 1.0
+                lw[LAREA + i] = 1.0
+                lw[LSM + i] = 1.0
+                lw[LU + i] = 1.0
+                lw[LSR + i] = 1.0
+                continue
+            lw[LFRAC + i] = frac
+            lw[LAREA + i] = area
+            x = -xbar if s >= n_half else xbar
+            off, root = slice_point_offset(xbar, curv)
+            (sx, sy, sz, smag, ex, ey, ez, uj, njx, njy, njz) = _slice_kinematics(
+                x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz, asx, asy,
+                asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
+            lw[LX + i] = x
+            lw[LOFF + i] = off
+            lw[LSX + i] = sx
+            lw[LSY + i] = sy
+            lw[LSZ + i] = sz
+            lw[LSM + i] = smag
+            lw[LEX + i] = ex
+            lw[LEY + i] = ey
+            lw[LEZ + i] = ez
+            lw[LU + i] = uj
+            lw[LNX + i] = njx
+            lw[LNY + i] = njy
+            lw[LNZ + i] = njz
+            lw[LSR + i] = smag * (1.0 / uj) if uj > 0.0 else 1e300
+            lw[LP + i] = qj * inv_ab / area if phys else 1.0
+        # ---- (B) traction coefficients (seed eq. 2) on the eight lanes
+        for i in range(LANES):
+            lw[LMU + i] = 0.0
+        if need_b:
+            for i in range(LANES):
+                lw[LA + i] = -bc * lw[LSR + i]
+            vexp(lw, LA, lw, LB)
+            for i in range(LANES):
+                lw[LMU + i] = (ba + bb * lw[LSR + i]) * lw[LB + i] + bd
+        if need_f and fluid_kind == 0:
+            for i in range(LANES):
+                lw[LA + i] = -fc * lw[LSR + i]
+            vexp(lw, LA, lw, LB)
+            for i in range(LANES):
+                mu = lw[LMU + i]
+                lw[LMU + i] = mu + ((fa + fb * lw[LSR + i]) * lw[LB + i] + fd - mu) * wfl
+        elif need_f and not film:
+            for i in range(LANES):
+                lw[LMU + i] -= lw[LMU + i] * wfl
+        elif film:
+            # traction.fluid_shear_stress with the contact's constants.  Roelands: ln η(p̄) = ln η0 + (ln η0 +
+            # 9.67)((1 + p̄/1.96e8)^z − 1); the logarithm feeds ln 2x directly (x = η γ̇/τ0)
+            for i in range(LANES):
+                lw[LA + i] = 1.0 + lw[LP + i] / 1.96e8
+            vlog(lw, LA, lw, LB)
+            for i in range(LANES):
+                lw[LA + i] = roe_z * lw[LB + i]
+            vexp(lw, LA, lw, LB)
+            for i in range(LANES):
+                lw[LL2X + i] = ln_eta0 + roe_ln * (lw[LB + i] - 1.0)  # ln η(p̄), then ln 2x below
+                lw[LA + i] = two_inv_hc_tau0 * lw[LSM + i]
+            vlog(lw, LA, lw, LB)
+            for i in range(LANES):
+                l2x = lw[LB + i] + lw[LL2X + i]
+                lw[LL2X + i] = l2x
+                lw[LA + i] = -2.0 * l2x
+            vexp(lw, LA, lw, LB)  # e^(−2 ln 2x) for asinh's series
+            for i in range(LANES):
+                pbar = lw[LP + i]
+                tl = lss_r * (lss_c1 * pbar / den0 - lss_c4)
+                fl = lss_floor * pbar
+                if tl < fl:
+                    tl = fl
+                lw[LTL + i] = tl
+                z = tau0 / tl * _asinh_l2x_e(lw[LL2X + i], lw[LB + i])
+                lw[LTAU + i] = z  # tanh's argument, then τ below
+                lw[LA + i] = 2.0 * min(z, 20.0)
+            vexp(lw, LA, lw, LB)
+            for i in range(LANES):
+                lw[LTAU + i] = lw[LTL + i] * _tanh_pos_e(lw[LTAU + i], lw[LB + i])
+            if theta > 0.0:
+                # the heat balance's secant step (_heated_stress), its two exponentials on the lanes
+                for i in range(LANES):
+                    dT = theta * lw[LSM + i] * lw[LTAU + i]
+                    lw[LARG + i] = lw[LL2X + i] - beta_v * dT
+                    lw[LA + i] = -2.0 * lw[LARG + i]
+                vexp(lw, LA, lw, LB)
+                for i in range(LANES):
+                    dT = theta * lw[LSM + i] * lw[LTAU + i]
+                    den1, num1, z1 = _heated_arg(dT, _asinh_l2x_e(lw[LARG + i], lw[LB + i]),
+                                                 lw[LP + i], lss_floor * lw[LP + i], tau0, t0c, lss_r, lss_c1, lss_c2,
+                                                 lss_c3, lss_c4)
+                    lw[LA + i] = 2.0 * min(max(z1, 0.0), 20.0)
+                    lw[LZ1 + i] = z1
+                    lw[LDEN + i] = den1
+                    lw[LNUM + i] = num1
+                vexp(lw, LA, lw, LB)
+                for i in range(LANES):
+                    lw[LTAU + i] = _heated_finish(lw[LTAU + i], lw[LDEN + i], lw[LNUM + i], lw[LZ1 + i], lw[LB + i])
+            for i in range(LANES):
+                tau = lw[LTAU + i]
+                if visco:
+                    # traction.elastic_plastic_mean_stress with τ_e = G ℓ_j s/h (no rolling: τ_e = ∞)
+                    if lw[LU + i] > 0.0:
+                        tl = lw[LTL + i]
+                        ke = k_ve * tl * lw[LAREA + i] / (1.0 + k_sol * tl)
+                        tau = elastic_plastic_mean_stress(tau, ke * lw[LSR + i])
+                mu = lw[LMU + i]
+                lw[LMU + i] = mu + (tau / lw[LP + i] - mu) * wfl
+        # ---- (C) each loaded strip's traction and rolling resistance
+        for i in range(nl):
+            qj = lw[LQ + i]
+            if not qj > 0.0:
+                continue
+            s = c0 + i
+            j = s if s < n_half else n_slices - 1 - s
+            mu = lw[LMU + i]
+            smag = lw[LSM + i]
+            uj = lw[LU + i]
+            fr = 0.0
+            if do_roll:
+                frac = lw[LFRAC + i]
+                if reg == 0:
+                    fr = k_ir * math.sqrt(frac) * math.sqrt(uj)
+                elif roll_zh:
+                    if uj > 0.0:
+                        fr = (k_zh_u0 * (_STRIP_Q246[n_slices, j] if tabled else math.exp(0.246 * math.log(frac)))
+                              * _pow_0648(uj * inv_u0))
+                elif uj > 0.0:  # no entraining speed at the centre (u0 = 0): the formula as it stands
+                    fr = k_zh * math.exp(0.648 * math.log(uj) + 0.246 * math.log(frac))
+            x = lw[LX + i]
+            off = lw[LOFF + i]
             qx = x * mx + off * nx
             qy = x * my + off * ny
             qz = x * mz + off * nz
             dbx, dby, dbz = d0bx + qx, d0by + qy, d0bz + qz
             drx, dry, drz = d0rx + qx, d0ry + qy, d0rz + qz
             if smag > 0.0:
-                add_point_traction(out, -mu * qj / smag, sx, sy, sz, dbx, dby, dbz, drx, dry, drz, mu * qj * smag)
+                add_point_traction(out, -mu * qj / smag, lw[LSX + i], lw[LSY + i], lw[LSZ + i], dbx, dby, dbz, drx,
+                                   dry, drz, mu * qj * smag)
             if do_roll and uj > 0.0:
-                add_point_rolling(out, fr, uj, ex * inv_u, ey * inv_u, ez * inv_u, dbx, dby, dbz, drx, dry, drz, njx,
-                                  njy, njz, two_rx)
-
+                inv_u = 1.0 / uj
+                add_point_rolling(out, fr, uj, lw[LEX + i] * inv_u, lw[LEY + i] * inv_u, lw[LEZ + i] * inv_u, dbx, dby,
+                                  dbz, drx, dry, drz, lw[LNX + i], lw[LNY + i], lw[LNZ + i], two_rx)
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def film_constants(alpha, e_eff, rx, ry):
@@ -653,10 +709,16 @@ _LN_200 = math.log(200.0)
 def _tanh_pos(z):
     """tanh z for z ≥ 0 [-]: (e^(2z) − 1)/(e^(2z) + 1) for 1e-3 ≤ z ≤ 20 (e^(2z) − 1 ≥ 2e-3, so at
     most ~500 ulp lost, ~1e-13 relative), exactly 1 above 20 (tanh 20 = 1 − 8e-18), math.tanh below."""
+    return _tanh_pos_e(z, math.exp(2.0 * z) if 1e-3 <= z <= 20.0 else 0.0)
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
+def _tanh_pos_e(z, e):
+    """:func:`_tanh_pos` with e = e^(2z) given (used only where 1e-3 ≤ z ≤ 20; the strip lanes take it from
+    :func:`.vecmath.vexp`)."""
     if z > 20.0:
         return 1.0
     if z >= 1e-3:
-        e = math.exp(2.0 * z)
         return (e - 1.0) / (e + 1.0)
     return math.tanh(z)
 
@@ -694,10 +756,18 @@ def _asinh_l2x(l2x):
     − 35w⁴/1024, w = 1/x² = 4e^(−2 ln 2x) (Abramowitz & Stegun 4.6.31; next term 63w⁵/2560 < 2.5e-22); below,
     asinh(e^(ln 2x − ln 2)).  The film law never needs x itself, so the viscosity η(p̄) = e^(ln η) is not formed,
     and no asinh call is made where x ≥ 100 (the loaded EHL contact's usual range)."""
+    return _asinh_l2x_e(l2x, math.exp(-2.0 * l2x) if _LN_200 <= l2x < _LN_2E6 else 0.0)
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
+def _asinh_l2x_e(l2x, e):
+    """:func:`_asinh_l2x` with e = e^(−2 ln 2x) given (used only where 100 ≤ x < 1e6; the strip lanes take it from
+    :func:`.vecmath.vexp`).  Below x = 100 the scalar asinh (a vector asinh on all eight lanes cost more than
+    the one or two lanes near a zero of the slip that need it: docs/dynamics.md, tenth pass)."""
     if l2x >= _LN_2E6:
         return l2x
     if l2x >= _LN_200:
-        w = 4.0 * math.exp(-2.0 * l2x)
+        w = 4.0 * e
         return l2x + w * (0.25 + w * (-3.0 / 32.0 + w * (5.0 / 96.0 - w * (35.0 / 1024.0))))
     return math.asinh(math.exp(l2x - _LN_2))
 
@@ -712,17 +782,30 @@ def _heated_stress(tau, theta_us, l2x, p, floor_p, tau0, t0c, r_l, c1, c2, c3, c
     if not tau > 0.0:
         return 0.0
     dT = theta_us * tau
-    bdt = beta_v * dT
-    ash1 = _asinh_l2x(l2x - bdt)
-    # τ_L at the heated temperature: num1/den1 (Dyson via Zhou & Hoeprich, floored)
+    den1, num1, z1 = _heated_arg(dT, _asinh_l2x(l2x - beta_v * dT), p, floor_p, tau0, t0c, r_l, c1, c2, c3, c4)
+    return _heated_finish(tau, den1, num1, z1, math.exp(2.0 * z1) if 1e-3 <= z1 <= 20.0 else 0.0)
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
+def _heated_arg(dT, ash1, p, floor_p, tau0, t0c, r_l, c1, c2, c3, c4):
+    """The heated limiting stress τ_L(t₀ + ΔT) = num1/den1 (Dyson via Zhou & Hoeprich, floored) and tanh's argument
+    z1 = τ₀ asinh(x e^(−β ΔT))/τ_L of :func:`_heated_stress`, from ΔT [K] and that asinh (ash1).  Returns
+    (den1, num1, z1)."""
     den1 = c2 + c3 * (t0c + dT)
     num1 = r_l * (c1 * p - c4 * den1)
     if num1 < floor_p * den1:
         num1 = floor_p * den1
-    z1 = tau0 * den1 / num1 * ash1
+    return den1, num1, tau0 * den1 / num1 * ash1
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
+def _heated_finish(tau, den1, num1, z1, e2):
+    """The secant step of :func:`_heated_stress` from :func:`_heated_arg`'s results and e2 = e^(2 z1) (used only
+    where 1e-3 ≤ z1 ≤ 20: then τ₁ = (num1/den1)(e2 − 1)/(e2 + 1) with one division for the whole step) [Pa];
+    0 when τ ≤ 0."""
+    if not tau > 0.0:
+        return 0.0
     if 1e-3 <= z1 <= 20.0:
-        # τ₁ = (num1/den1)(E − 1)/(E + 1), E = e^(2 z1): one division for the whole step
-        e2 = math.exp(2.0 * z1)
         dp = den1 * (e2 + 1.0)
         return tau * tau * dp / (2.0 * tau * dp - num1 * (e2 - 1.0))
     tau1 = num1 / den1 * _tanh_pos(z1)

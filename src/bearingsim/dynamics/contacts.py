@@ -159,8 +159,9 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
     velocity (with spin) for the surface velocity; kc [N/m^1.5]; rgroove = (f − ½)D;
     a_c, b_c: ellipse semi-axes per N^(1/3); tang: unit tangent of the groove circle
     (rolling direction).  Accumulates the force/moment on the ball (fb, mb) and on the
-    ring (fr, mr about rcen).  res ← Q, δ, u(3), slide-roll ratio, power loss.  tbuf: work array;
-    for the Coulomb stand-in tbuf[44:] holds its slices (:func:`slice_table`).
+    ring (fr, mr about rcen).  res ← Q, δ, u(3), slide-roll ratio, power loss.  tbuf: work array of
+    ``forces.ball_row_work(nsl) − BALL_WORK`` floats (the sliced traction's out with its lanes,
+    ``contact.slices.TRACTION_OUT``); for the Coulomb stand-in tbuf[44:] holds its slices (:func:`slice_table`).
     """
     (q, delta, u0, u1, u2, srr, power, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry, mrz) = race_contact_at(
         b[0], b[1], b[2], v[0], v[1], v[2], w[0], w[1], w[2], g[0], g[1], g[2], vg_lin[0], vg_lin[1], vg_lin[2], worb,

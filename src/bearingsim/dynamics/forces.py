@@ -24,6 +24,7 @@ import math
 import numpy as np
 from numba import njit, prange
 
+from ..contact.slices import TRACTION_OUT
 from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import layout as ly
 from . import threads as _threads  # noqa: F401 - numba's threading layer, chosen and started (before any parallel kernel)
@@ -332,7 +333,7 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
     want = diag.shape[0] > 0
     # work rows of race_contact_at, followed by the slices of the Coulomb stand-in (the same for every contact)
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
-    nbw = BALL_WORK + 44 + 2 * nsl
+    nbw = ball_row_work(nsl)
     o1 = nb * NCONTRIB
     contrib = work[0:o1].reshape((nb, NCONTRIB))
     if threads:
@@ -513,7 +514,14 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
 @njit(cache=True)
 def ball_work_size(nb, nsl, threads):
     """Length of :func:`balls_on_raceways`' work array for nb balls and nsl Coulomb slices (0: sliced traction)."""
-    return nb * NCONTRIB + (nb if threads else 1) * (BALL_WORK + 44 + 2 * nsl) + NCONTRIB
+    return nb * NCONTRIB + (nb if threads else 1) * ball_row_work(nsl) + NCONTRIB
+
+
+@njit(cache=True)
+def ball_row_work(nsl):
+    """Floats of one ball's work row: BALL_WORK, then race_contact_at's buffer (the traction's out with its strip
+    lanes, TRACTION_OUT; the Coulomb stand-in's vectors at 10:44 and its nsl slices at 44:)."""
+    return BALL_WORK + max(44 + 2 * nsl, TRACTION_OUT)
 
 
 @njit(cache=True, inline="always")
