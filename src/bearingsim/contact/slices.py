@@ -132,7 +132,9 @@ L_SIZE = 46
 # ---- the strip loop's lanes (traction_at): out[10:] holds these arrays of LANES floats, one lane per strip
 (LX, LOFF, LQ, LFRAC, LAREA, LP, LSX, LSY, LSZ, LSM, LEX, LEY, LEZ, LU, LNX, LNY, LNZ, LSR, LMU, LA, LB, LL2X, LTL,
  LTAU, LZ1, LDEN, LNUM, LARG) = (k * LANES for k in range(28))
-#: length of traction_at's ``out`` with strips: the 10 results, then the lanes' work space
+#: the contact's logarithms and its film's exponentials (the first two arrays: the strips' lanes come later)
+CL_LN, CL_EX = LX, LOFF
+#: length of traction_at's ``out``: the 10 results, then the lanes' work space
 TRACTION_OUT = 10 + 28 * LANES
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
@@ -277,8 +279,8 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     """:func:`contact_traction` with its vectors as their components (the same numbers): the dynamic engine's
     contacts call this form, so that no array is passed nor viewed per contact (numba counts a reference for
     each, with an atomic increment and decrement: 17.5 % of the hub right-hand side's samples, issue 14).
-    out[0:10] ← as :func:`contact_traction`; with strips (n_slices > 0) out needs TRACTION_OUT floats: out[10:] is
-    the work space of the strips' lanes (ValueError otherwise)."""
+    out[0:10] ← as :func:`contact_traction`; out needs TRACTION_OUT floats: out[10:] is the work space of the
+    lanes (ValueError otherwise)."""
     for i in range(10):
         out[i] = 0.0
     if not (q > 0.0 and a > 0.0 and b > 0.0) or n_slices == 0:
@@ -339,7 +341,12 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     sx, sy, sz = s0x - sn * nx, s0y - sn * ny, s0z - sn * nz
     s0 = math.sqrt(sx * sx + sy * sy + sz * sz)
 
-    # ---- contact-level film (at the ellipse centre): Hamrock-Dowson with shared logarithms
+    # ---- contact-level film (at the ellipse centre): Hamrock-Dowson with shared logarithms.  The contact's eight
+    # logarithms in one vlog and the film's eight exponentials in one vexp (:mod:`.vecmath`; issue 14): they are
+    # taken for every contact and used where the formulae below need them (the unused lanes' values are ignored)
+    if out.shape[0] < TRACTION_OUT:
+        raise ValueError("traction_at: out needs TRACTION_OUT floats (out[10:] is the lanes' work space)")
+    lw = out[10:]
     phi = lub[L_PHI_S]
     hc = 0.0
     hmin = 0.0
@@ -348,30 +355,54 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     fk_min = 0.0
     h_ir = 0.0
     fk_ie = 0.0
-    if u0 > 0.0 and model != 0:  # (the boundary model needs no film)
-        beta_eta = lub[L_BETA_ETA]
+    fk_c = 0.0
+    beta_eta = lub[L_BETA_ETA]
+    width = 2.0 * a * (1.0 / n_slices) if n_slices > 0 else 1.0  # a strip's (as below)
+    lw[CL_LN + 0] = beta_eta * u0 * u0 / lub[L_KOIL]  # ln L (Zhu-Cheng)
+    lw[CL_LN + 1] = s0 / u0 if u0 > 0.0 else 1.0  # ln (s/u)
+    lw[CL_LN + 2] = eta0 * u0 / (e_eff * rx)  # ln U
+    lw[CL_LN + 3] = q / (e_eff * rx * rx)  # ln W
+    lw[CL_LN + 4] = eta0  # ln η0
+    lw[CL_LN + 5] = alpha * e_eff * eta0 / (e_eff * rx)  # ln G U/u (Zhou-Hoeprich)
+    lw[CL_LN + 6] = q / (width * e_eff * rx)  # ln W of a strip (Zhou-Hoeprich)
+    lw[CL_LN + 7] = u0  # ln u0
+    vlog(lw, CL_LN, lw, CL_LN)
+    ln_l = lw[CL_LN + 0]
+    ln_u = lw[CL_LN + 2]
+    ln_w = lw[CL_LN + 3]
+    film = u0 > 0.0 and model != 0  # (the boundary model needs no film)
+    if film:
+        if lub[L_C_AE] == alpha * e_eff and lub[L_C_AR] == ry / rx:  # the contact type's constants, made once
+            ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = (lub[L_C_LNG], lub[L_C_K], lub[L_C_FKMIN], lub[L_C_FKC],
+                                                     lub[L_C_HIR], lub[L_C_FKIE])
+        else:
+            ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = film_constants(alpha, e_eff, rx, ry)
+    ln_gv = ln_g + 3.0 * ln_w - 2.0 * ln_u  # the regime map's (regime_code with the shared logarithms,
+    ln_ge = (8.0 / 3.0) * ln_w - 2.0 * ln_u  # the same formulae as ehl.regime_films)
+    lw[CL_EX + 0] = 0.42 * ln_l
+    lw[CL_EX + 1] = 0.83 * lw[CL_LN + 1]
+    lw[CL_EX + 2] = 0.64 * ln_l
+    lw[CL_EX + 3] = 0.67 * ln_u + 0.53 * ln_g - 0.067 * ln_w
+    lw[CL_EX + 4] = 0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w
+    lw[CL_EX + 5] = (2.0 / 3.0) * ln_gv
+    lw[CL_EX + 6] = 0.67 * ln_ge
+    lw[CL_EX + 7] = 0.49 * ln_gv + 0.17 * ln_ge
+    vexp(lw, CL_EX, lw, CL_EX)
+    if film:
         if thermal and beta_eta > 0.0:
             # ehl.zhu_cheng_thermal_factor with L^0.42 and L^0.64 from one logarithm
-            ln_l = math.log(beta_eta * u0 * u0 / lub[L_KOIL])
             p_h = 1.5 * q / (math.pi * a * b)
-            zc_num = 1.0 - 13.2 * (p_h / e_eff) * math.exp(0.42 * ln_l)
-            s83 = math.exp(0.83 * math.log(s0 / u0)) if s0 > 0.0 else 0.0  # (s/u)^0.83
-            zc_den = 1.0 + 0.213 * (1.0 + 2.23 * s83) * math.exp(0.64 * ln_l)
+            zc_num = 1.0 - 13.2 * (p_h / e_eff) * lw[CL_EX + 0]
+            s83 = lw[CL_EX + 1] if s0 > 0.0 else 0.0  # (s/u)^0.83
+            zc_den = 1.0 + 0.213 * (1.0 + 2.23 * s83) * lw[CL_EX + 2]
             phi_t = zc_num / zc_den
             if phi_t < 0.0:
                 phi_t = 0.0
             elif phi_t > 1.0:
                 phi_t = 1.0
             phi *= phi_t
-        ln_u = math.log(eta0 * u0 / (e_eff * rx))
-        ln_w = math.log(q / (e_eff * rx * rx))
-        if lub[L_C_AE] == alpha * e_eff and lub[L_C_AR] == ry / rx:  # the contact type's constants, made once
-            ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = (lub[L_C_LNG], lub[L_C_K], lub[L_C_FKMIN], lub[L_C_FKC],
-                                                     lub[L_C_HIR], lub[L_C_FKIE])
-        else:
-            ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = film_constants(alpha, e_eff, rx, ry)
-        hc = phi * rx * 2.69 * math.exp(0.67 * ln_u + 0.53 * ln_g - 0.067 * ln_w) * fk_c
-        hmin = phi * rx * 3.63 * math.exp(0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w) * fk_min
+        hc = phi * rx * 2.69 * lw[CL_EX + 3] * fk_c
+        hmin = phi * rx * 3.63 * lw[CL_EX + 4] * fk_min
     if model == 0:
         wfl = 0.0
     elif model == 1:
@@ -384,12 +415,9 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     do_roll = rollres and wfl > 0.0
     reg = 3
     if do_roll and u0 > 0.0:
-        # regime_code with the shared logarithms (same formulae as ehl.regime_films)
-        ln_gv = ln_g + 3.0 * ln_w - 2.0 * ln_u
-        ln_ge = (8.0 / 3.0) * ln_w - 2.0 * ln_u
-        h_pr = 1.66 * math.exp((2.0 / 3.0) * ln_gv) * fk_min
-        h_ie = 8.70 * math.exp(0.67 * ln_ge) * fk_ie
-        h_pe = 3.42 * math.exp(0.49 * ln_gv + 0.17 * ln_ge) * fk_min
+        h_pr = 1.66 * lw[CL_EX + 5] * fk_min
+        h_ie = 8.70 * lw[CL_EX + 6] * fk_ie
+        h_pe = 3.42 * lw[CL_EX + 7] * fk_min
         reg = ehl.select_regime(h_ir, h_pr, h_ie, h_pe)
     theta = 0.0
     if thermal:
@@ -406,8 +434,6 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                           u0, need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out)
         return
     inv_n = 1.0 / n_slices
-    width = 2.0 * a * inv_n
-    lw = out[10:]  # the lanes' work space (LX … LNUM below)
     phys = need_f and fluid_kind != 0
     # the laws' constants; physical fluid model, slice-independent terms (traction.fluid_shear_stress)
     (ba, bb, bc, bd, fa, fb, fc, fd, tau0, t0c, lss_r, lss_c1, lss_c2, lss_c3, lss_c4, lss_floor, beta_v, roe_ln,
@@ -424,14 +450,12 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     # solids in series (traction.solids_in_series_factor): tau_e / (1 + G_f L1/h), L1 = 8 b/(3 C11 G)
     k_sol = lub[L_SFLEX] * b * inv_hc * lub[L_GF_SCALE] / lss_r if lss_r > 0.0 else 0.0
     two_inv_hc_tau0 = 2.0 * inv_hc_tau0
-    ln_eta0 = math.log(eta0) if phys else 0.0
+    ln_eta0 = lw[CL_LN + 4] if phys else 0.0
     # rolling resistance (traction.rolling_resistance_zh / _ir) with the slice-independent factor
     # F_R = k_zh u^0.648 (Q_j/Q)^0.246,  k_zh = 29.2 (Rx/α) L (G η0/(E' Rx))^0.648 (Q/(L E' Rx))^0.246
     k_zh = 0.0
     if do_roll and reg != 0:
-        k_zh = (29.2 * (rx / alpha) * width * fr_scale
-                * math.exp(0.648 * math.log(alpha * e_eff * eta0 / (e_eff * rx))
-                           + 0.246 * math.log(q / (width * e_eff * rx))))
+        k_zh = 29.2 * (rx / alpha) * width * fr_scale * math.exp(0.648 * lw[CL_LN + 5] + 0.246 * lw[CL_LN + 6])
     k_ir = MARTIN_ROLLING * width * math.sqrt(eta0 * q / width) * fr_scale
     two_rx = 2.0 * rx
 
@@ -448,14 +472,12 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     # logarithms of the film law taken by vexp / vlog (glibc's vector math library where this CPU has it:
     # :mod:`.vecmath`); (C) each loaded strip's traction and rolling resistance added to out.  Lanes past the last
     # strip or without load carry values that keep the functions finite and are not added.
-    if out.shape[0] < TRACTION_OUT:
-        raise ValueError("traction_at: out needs TRACTION_OUT floats (the strips' lanes are its work space)")
     n_half = (n_slices + 1) // 2
     tabled = n_slices <= STRIP_TABLE_MAX
     # rolling resistance (Zhou-Hoeprich) as k_zh u0^0.648 (Q_j/Q)^0.246 (u/u0)^0.648: one logarithm per
     # contact, the strip's factor from the table, (u/u0)^0.648 by its series near 1 (_pow_0648)
     roll_zh = do_roll and reg != 0 and u0 > 0.0
-    k_zh_u0 = k_zh * math.exp(0.648 * math.log(u0)) if roll_zh else 0.0
+    k_zh_u0 = k_zh * math.exp(0.648 * lw[CL_LN + 7]) if roll_zh else 0.0
     inv_u0 = 1.0 / u0 if u0 > 0.0 else 0.0
     film = need_f and fluid_kind != 0 and hc > 0.0  # the physical film law on the strips
     for c0 in range(0, n_slices, LANES):
