@@ -130,7 +130,7 @@ L_C_FKIE = 45  # 1 - 0.85 exp(-0.31 k) (isoviscous-elastic film of the regime ma
 L_SIZE = 46
 
 # ---- the strip loop's lanes (traction_at): out[10:] holds these arrays of LANES floats, one lane per strip
-(LX, LOFF, LQ, LFRAC, LAREA, LP, LSX, LSY, LSZ, LSM, LEX, LEY, LEZ, LU, LNX, LNY, LNZ, LSR, LMU, LA, LB, LL2X, LTL,
+(LX, LOFF, LQ, LFRAC, LCHORD, LP, LSX, LSY, LSZ, LSM, LEX, LEY, LEZ, LU, LNX, LNY, LNZ, LSR, LMU, LA, LB, LL2X, LTL,
  LTAU, LZ1, LDEN, LNUM, LARG) = (k * LANES for k in range(28))
 #: the contact's logarithms and its film's exponentials (the first two arrays: the strips' lanes come later)
 CL_LN, CL_EX = LX, LOFF
@@ -306,7 +306,6 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     sigma = lub[L_SIGMA]
     thermal = lub[L_THERMAL] != 0.0
     rollres = lub[L_ROLLRES] != 0.0
-    visco = lub[L_VISCO] != 0.0
 
     # The velocity fields are affine in the point p: with d_b = p - c_ball, d_r = p - c_race,
     #   sliding  s(p) = v_b + w_b x d_b - v_r - w_r x d_r,
@@ -431,25 +430,13 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     if n_slices < 0:  # Gauss quadrature: its own constants (the strip ones below are not needed)
         _gauss_quadrature(-n_slices, q, a, b, curv, nx, ny, nz, mx, my, mz, c0x - cbx, c0y - cby, c0z - cbz,
                           c0x - crx, c0y - cry, c0z - crz, s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez,
-                          u0, need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out)
+                          u0, need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, lw[CL_LN + 4],
+                          out)
         return
     inv_n = 1.0 / n_slices
     phys = need_f and fluid_kind != 0
-    # the laws' constants; physical fluid model, slice-independent terms (traction.fluid_shear_stress)
-    (ba, bb, bc, bd, fa, fb, fc, fd, tau0, t0c, lss_r, lss_c1, lss_c2, lss_c3, lss_c4, lss_floor, beta_v, roe_ln,
-     roe_z) = _law_constants(lub)
-    inv_tau0 = 1.0 / tau0
-    den0 = lss_c2 + lss_c3 * t0c
     inv_ab = 1.0 / (a * b)
-    inv_hc = 1.0 / hc if hc > 0.0 else 0.0
-    inv_hc_tau0 = inv_hc * inv_tau0
-    # film elasticity: the exit stress per unit slide-roll ratio is G ℓ_j/h with the strip's mean
-    # chord ℓ_j = (strip area)/(strip width) = b·area·n/2 and G = τ_L(p̄, t₀)/r_L
-    visco = visco and lss_r > 0.0
-    k_ve = 0.5 * b * n_slices * inv_hc / lss_r * lub[L_GF_SCALE] if lss_r > 0.0 else 0.0
-    # solids in series (traction.solids_in_series_factor): tau_e / (1 + G_f L1/h), L1 = 8 b/(3 C11 G)
-    k_sol = lub[L_SFLEX] * b * inv_hc * lub[L_GF_SCALE] / lss_r if lss_r > 0.0 else 0.0
-    two_inv_hc_tau0 = 2.0 * inv_hc_tau0
+    half_bn = 0.5 * b * n_slices  # a strip's chord is (its area)/(its width) = b·area·n/2
     ln_eta0 = lw[CL_LN + 4] if phys else 0.0
     # rolling resistance (traction.rolling_resistance_zh / _ir) with the slice-independent factor
     # F_R = k_zh u^0.648 (Q_j/Q)^0.246,  k_zh = 29.2 (Rx/α) L (G η0/(E' Rx))^0.648 (Q/(L E' Rx))^0.246
@@ -504,13 +491,13 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
             lw[LQ + i] = qj
             if not qj > 0.0:
                 lw[LP + i] = 1.0
-                lw[LAREA + i] = 1.0
+                lw[LCHORD + i] = 0.0
                 lw[LSM + i] = 1.0
                 lw[LU + i] = 1.0
                 lw[LSR + i] = 1.0
                 continue
             lw[LFRAC + i] = frac
-            lw[LAREA + i] = area
+            lw[LCHORD + i] = half_bn * area  # the strip's mean chord (strip area)/(strip width) [m]
             x = -xbar if s >= n_half else xbar
             off, root = slice_point_offset(xbar, curv)
             (sx, sy, sz, smag, ex, ey, ez, uj, njx, njy, njz) = _slice_kinematics(
@@ -532,84 +519,7 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
             lw[LSR + i] = smag * (1.0 / uj) if uj > 0.0 else 1e300
             lw[LP + i] = qj * inv_ab / area if phys else 1.0
         # ---- (B) traction coefficients (seed eq. 2) on the eight lanes
-        for i in range(LANES):
-            lw[LMU + i] = 0.0
-        if need_b:
-            for i in range(LANES):
-                lw[LA + i] = -bc * lw[LSR + i]
-            vexp(lw, LA, lw, LB)
-            for i in range(LANES):
-                lw[LMU + i] = (ba + bb * lw[LSR + i]) * lw[LB + i] + bd
-        if need_f and fluid_kind == 0:
-            for i in range(LANES):
-                lw[LA + i] = -fc * lw[LSR + i]
-            vexp(lw, LA, lw, LB)
-            for i in range(LANES):
-                mu = lw[LMU + i]
-                lw[LMU + i] = mu + ((fa + fb * lw[LSR + i]) * lw[LB + i] + fd - mu) * wfl
-        elif need_f and not film:
-            for i in range(LANES):
-                lw[LMU + i] -= lw[LMU + i] * wfl
-        elif film:
-            # traction.fluid_shear_stress with the contact's constants.  Roelands: ln η(p̄) = ln η0 + (ln η0 +
-            # 9.67)((1 + p̄/1.96e8)^z − 1); the logarithm feeds ln 2x directly (x = η γ̇/τ0)
-            for i in range(LANES):
-                lw[LA + i] = 1.0 + lw[LP + i] / 1.96e8
-            vlog(lw, LA, lw, LB)
-            for i in range(LANES):
-                lw[LA + i] = roe_z * lw[LB + i]
-            vexp(lw, LA, lw, LB)
-            for i in range(LANES):
-                lw[LL2X + i] = ln_eta0 + roe_ln * (lw[LB + i] - 1.0)  # ln η(p̄), then ln 2x below
-                lw[LA + i] = two_inv_hc_tau0 * lw[LSM + i]
-            vlog(lw, LA, lw, LB)
-            for i in range(LANES):
-                l2x = lw[LB + i] + lw[LL2X + i]
-                lw[LL2X + i] = l2x
-                lw[LA + i] = -2.0 * l2x
-            vexp(lw, LA, lw, LB)  # e^(−2 ln 2x) for asinh's series
-            for i in range(LANES):
-                pbar = lw[LP + i]
-                tl = lss_r * (lss_c1 * pbar / den0 - lss_c4)
-                fl = lss_floor * pbar
-                if tl < fl:
-                    tl = fl
-                lw[LTL + i] = tl
-                z = tau0 / tl * _asinh_l2x_e(lw[LL2X + i], lw[LB + i])
-                lw[LTAU + i] = z  # tanh's argument, then τ below
-                lw[LA + i] = 2.0 * min(z, 20.0)
-            vexp(lw, LA, lw, LB)
-            for i in range(LANES):
-                lw[LTAU + i] = lw[LTL + i] * _tanh_pos_e(lw[LTAU + i], lw[LB + i])
-            if theta > 0.0:
-                # the heat balance's secant step (_heated_stress), its two exponentials on the lanes
-                for i in range(LANES):
-                    dT = theta * lw[LSM + i] * lw[LTAU + i]
-                    lw[LARG + i] = lw[LL2X + i] - beta_v * dT
-                    lw[LA + i] = -2.0 * lw[LARG + i]
-                vexp(lw, LA, lw, LB)
-                for i in range(LANES):
-                    dT = theta * lw[LSM + i] * lw[LTAU + i]
-                    den1, num1, z1 = _heated_arg(dT, _asinh_l2x_e(lw[LARG + i], lw[LB + i]),
-                                                 lw[LP + i], lss_floor * lw[LP + i], tau0, t0c, lss_r, lss_c1, lss_c2,
-                                                 lss_c3, lss_c4)
-                    lw[LA + i] = 2.0 * min(max(z1, 0.0), 20.0)
-                    lw[LZ1 + i] = z1
-                    lw[LDEN + i] = den1
-                    lw[LNUM + i] = num1
-                vexp(lw, LA, lw, LB)
-                for i in range(LANES):
-                    lw[LTAU + i] = _heated_finish(lw[LTAU + i], lw[LDEN + i], lw[LNUM + i], lw[LZ1 + i], lw[LB + i])
-            for i in range(LANES):
-                tau = lw[LTAU + i]
-                if visco:
-                    # traction.elastic_plastic_mean_stress with τ_e = G ℓ_j s/h (no rolling: τ_e = ∞)
-                    if lw[LU + i] > 0.0:
-                        tl = lw[LTL + i]
-                        ke = k_ve * tl * lw[LAREA + i] / (1.0 + k_sol * tl)
-                        tau = elastic_plastic_mean_stress(tau, ke * lw[LSR + i])
-                mu = lw[LMU + i]
-                lw[LMU + i] = mu + (tau / lw[LP + i] - mu) * wfl
+        _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0)
         # ---- (C) each loaded strip's traction and rolling resistance
         for i in range(nl):
             qj = lw[LQ + i]
@@ -645,6 +555,105 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                 inv_u = 1.0 / uj
                 add_point_rolling(out, fr, uj, lw[LEX + i] * inv_u, lw[LEY + i] * inv_u, lw[LEZ + i] * inv_u, dbx, dby,
                                   dbz, drx, dry, drz, lw[LNX + i], lw[LNY + i], lw[LNZ + i], two_rx)
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0):
+    """lw[LMU + i] ← the traction coefficient μ on the eight lanes (seed eq. 2): the boundary and fluid models of
+    :mod:`.traction` mixed with the fluid weight wfl; ``film``: the physical film law of
+    :func:`traction.fluid_shear_stress` (Roelands viscosity at the mean pressure, Eyring stress limited by the
+    limiting shear stress, the heat balance's secant step when θ = theta > 0 [K/(Pa m/s)], the elastic–plastic film
+    when lub's film elasticity is on) in the fast forms of the module docstring, every exponential and logarithm
+    taken on all eight lanes by :func:`.vecmath.vexp` / :func:`.vecmath.vlog` (issue 14).  Per lane: mean pressure
+    LP [Pa], sliding speed LSM [m/s], slide–roll ratio LSR, entraining speed LU [m/s] and the film's chord LCHORD
+    [m] (its length along rolling, for the film elasticity); b [m] the ellipse's rolling semi-axis, hc [m] the
+    central film, ln_eta0 = ln η0 (η0 [Pa s]).  The strips (:func:`traction_at`) and the Gauss nodes
+    (:func:`_gauss_quadrature`) both come here."""
+    (ba, bb, bc, bd, fa, fb, fc, fd, tau0, t0c, lss_r, lss_c1, lss_c2, lss_c3, lss_c4, lss_floor, beta_v, roe_ln,
+     roe_z) = _law_constants(lub)
+    for i in range(LANES):
+        lw[LMU + i] = 0.0
+    if need_b:
+        for i in range(LANES):
+            lw[LA + i] = -bc * lw[LSR + i]
+        vexp(lw, LA, lw, LB)
+        for i in range(LANES):
+            lw[LMU + i] = (ba + bb * lw[LSR + i]) * lw[LB + i] + bd
+    if need_f and fluid_kind == 0:
+        for i in range(LANES):
+            lw[LA + i] = -fc * lw[LSR + i]
+        vexp(lw, LA, lw, LB)
+        for i in range(LANES):
+            mu = lw[LMU + i]
+            lw[LMU + i] = mu + ((fa + fb * lw[LSR + i]) * lw[LB + i] + fd - mu) * wfl
+        return
+    if need_f and not film:
+        for i in range(LANES):
+            lw[LMU + i] -= lw[LMU + i] * wfl
+        return
+    if not film:
+        return
+    den0 = lss_c2 + lss_c3 * t0c
+    inv_hc = 1.0 / hc
+    two_inv_hc_tau0 = 2.0 * (inv_hc * (1.0 / tau0))
+    visco = lub[L_VISCO] != 0.0 and lss_r > 0.0
+    gf_c = lub[L_GF_SCALE] / lss_r if lss_r > 0.0 else 0.0  # G_f = τ_L/r_L (× scale)
+    sol_c = lub[L_SFLEX] * b * inv_hc  # solids in series: L1/h (Kalker), traction.solids_in_series_factor
+    # Roelands: ln η(p̄) = ln η0 + (ln η0 + 9.67)((1 + p̄/1.96e8)^z − 1); the logarithm feeds ln 2x directly
+    # (x = η γ̇/τ0), η itself is never formed
+    for i in range(LANES):
+        lw[LA + i] = 1.0 + lw[LP + i] / 1.96e8
+    vlog(lw, LA, lw, LB)
+    for i in range(LANES):
+        lw[LA + i] = roe_z * lw[LB + i]
+    vexp(lw, LA, lw, LB)
+    for i in range(LANES):
+        lw[LL2X + i] = ln_eta0 + roe_ln * (lw[LB + i] - 1.0)  # ln η(p̄), then ln 2x below
+        lw[LA + i] = two_inv_hc_tau0 * lw[LSM + i]
+    vlog(lw, LA, lw, LB)
+    for i in range(LANES):
+        l2x = lw[LB + i] + lw[LL2X + i]
+        lw[LL2X + i] = l2x
+        lw[LA + i] = -2.0 * l2x
+    vexp(lw, LA, lw, LB)  # e^(−2 ln 2x) for asinh's series
+    for i in range(LANES):
+        pbar = lw[LP + i]
+        tl = lss_r * (lss_c1 * pbar / den0 - lss_c4)
+        fl = lss_floor * pbar
+        if tl < fl:
+            tl = fl
+        lw[LTL + i] = tl
+        z = tau0 / tl * _asinh_l2x_e(lw[LL2X + i], lw[LB + i])
+        lw[LTAU + i] = z  # tanh's argument, then τ below
+        lw[LA + i] = 2.0 * min(z, 20.0)
+    vexp(lw, LA, lw, LB)
+    for i in range(LANES):
+        lw[LTAU + i] = lw[LTL + i] * _tanh_pos_e(lw[LTAU + i], lw[LB + i])
+    if theta > 0.0:
+        # the heat balance's secant step (_heated_stress), its two exponentials on the lanes
+        for i in range(LANES):
+            dT = theta * lw[LSM + i] * lw[LTAU + i]
+            lw[LARG + i] = lw[LL2X + i] - beta_v * dT
+            lw[LA + i] = -2.0 * lw[LARG + i]
+        vexp(lw, LA, lw, LB)
+        for i in range(LANES):
+            dT = theta * lw[LSM + i] * lw[LTAU + i]
+            den1, num1, z1 = _heated_arg(dT, _asinh_l2x_e(lw[LARG + i], lw[LB + i]), lw[LP + i],
+                                         lss_floor * lw[LP + i], tau0, t0c, lss_r, lss_c1, lss_c2, lss_c3, lss_c4)
+            lw[LA + i] = 2.0 * min(max(z1, 0.0), 20.0)
+            lw[LZ1 + i] = z1
+            lw[LDEN + i] = den1
+            lw[LNUM + i] = num1
+        vexp(lw, LA, lw, LB)
+        for i in range(LANES):
+            lw[LTAU + i] = _heated_finish(lw[LTAU + i], lw[LDEN + i], lw[LNUM + i], lw[LZ1 + i], lw[LB + i])
+    for i in range(LANES):
+        tau = lw[LTAU + i]
+        if visco and lw[LU + i] > 0.0:
+            # traction.elastic_plastic_mean_stress with τ_e = G_f ℓ s/h / (1 + G_f L1/h) (no rolling: τ_e = ∞)
+            g = gf_c * lw[LTL + i]
+            tau = elastic_plastic_mean_stress(tau, g * lw[LCHORD + i] * inv_hc * lw[LSR + i] / (1.0 + g * sol_c))
+        mu = lw[LMU + i]
+        lw[LMU + i] = mu + (tau / lw[LP + i] - mu) * wfl
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def film_constants(alpha, e_eff, rx, ry):
@@ -921,10 +930,41 @@ def rolling_slip_zeros(sig0, sig1, sig2, a, curv):
     return nr, z1, z2
 
 
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
+def _gauss_node(m, ng, nroot, z1, z2):
+    """Node m of :func:`_gauss_quadrature`'s rule: ng Gauss–Legendre nodes on each of the nroot + 1 sub-intervals of
+    ξ ∈ [−1, 1] between the zeros z1 < z2 of the rolling slip, node m on sub-interval m // ng.  Returns (ξ, weight).
+
+    The nodes are graded towards the zeros of the rolling slip (t² maps, smoothstep with zeros at both ends): μ(s)
+    rises steeply from 0 there (measured: graded 0.25 %, 2.4 %, 0.5 % error at 4 nodes on the hub states against
+    plain Gauss 0.64 %, 2.5 %, 1.6 %; grading towards ξ = ±1 instead was worse, 1.3 %, 5.8 %, 2.3 %)."""
+    k = m // ng
+    i = m - k * ng
+    lo = -1.0 if k == 0 else (z1 if k == 1 else z2)
+    hi = 1.0 if k == nroot else (z1 if k == 0 else z2)
+    span = hi - lo
+    zlo = k > 0  # the lower end is a zero of the rolling slip (else ξ = −1)
+    zhi = k < nroot  # the upper end is a zero (else ξ = +1)
+    t = 0.5 + 0.5 * _GL_X[ng, i]
+    if zlo and zhi:
+        psi = t * t * (3.0 - 2.0 * t)
+        dpsi = 6.0 * t * (1.0 - t)
+    elif zlo:
+        psi = t * t
+        dpsi = 2.0 * t
+    elif zhi:
+        psi = t * (2.0 - t)
+        dpsi = 2.0 * (1.0 - t)
+    else:
+        psi = t
+        dpsi = 1.0
+    return lo + span * psi, 0.5 * span * dpsi * _GL_W[ng, i]
+
+
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0bz, d0rx, d0ry, d0rz,
                       s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez, u0,
-                      need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, out):
+                      need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, ln_eta0, out):
     """The integrals of the strip model in its limit of infinitely many strips, by Gauss–Legendre
     quadrature with ``ng`` nodes on each sub-interval of ξ = x/a ∈ [−1, 1] between the zeros of the
     rolling-direction sliding speed (:func:`rolling_slip_zeros`), where μ(s)·ŝ jumps or turns
@@ -939,8 +979,9 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
     the factor and smooth in the rest (u^0.648, the arms).  u0 [m/s] the entraining speed at the
     ellipse centre (u^0.648 is u0^0.648 (u/u0)^0.648 with the second factor by :func:`_pow_0648`, as in
     the strip loop).
-    The traction coefficient at a node is the strip loop's film law (seed eq. 2) for one point, its
-    contact-level constants set up once per call.  Writes out[0:10] like :func:`contact_traction`.  All SI."""
+    The traction coefficient at a node is the strip loop's film law (seed eq. 2) for one point,
+    :func:`_film_lanes` on eight nodes at a time (out[10:] their lanes; ln_eta0 = ln η0).  Writes out[0:10] like
+    :func:`contact_traction`.  All SI."""
     # rolling direction and the rates of the velocity fields along e_major and n
     rdx, rdy, rdz = ny * mz - nz * my, nz * mx - nx * mz, nx * my - ny * mx
     asx, asy, asz = wsy * mz - wsz * my, wsz * mx - wsx * mz, wsx * my - wsy * mx
@@ -970,53 +1011,28 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             if roll_zh:
                 k_zh_u0 = k_zh * math.exp(ln_zh + 0.648 * math.log(u0))
     inv_u0 = 1.0 / u0 if u0 > 0.0 else 0.0
-    # film law (traction.fluid_shear_stress, the strip loop's fast forms): contact-level constants
-    (ba, bb, bc, bd, fa, fb, fc, fd, tau0, t0c, lss_r, c1, c2, c3, c4, lss_floor, beta_v, roe_ln,
-     roe_z) = _law_constants(lub)
-    phys = need_f and fluid_kind != 0 and hc > 0.0
-    inv_den0 = 1.0 / (c2 + c3 * t0c)
-    l2x_c = 0.0  # ln 2x = ln u_s + l2x_c + Roelands' pressure term, x = η(p̄) u_s/(h τ0)
-    visco = False
-    gf_c = 0.0
-    sol_c = 0.0
-    inv_hc = 0.0
-    if phys:
-        l2x_c = math.log(2.0 / (hc * tau0)) + math.log(eta0)
-        inv_hc = 1.0 / hc
-        visco = lub[L_VISCO] != 0.0 and lss_r > 0.0
-        if visco:
-            gf_c = lub[L_GF_SCALE] / lss_r  # G_f = τ_L/r_L (× scale)
-            sol_c = lub[L_SFLEX] * b * inv_hc  # solids in series (Kalker L1)
+    # the nodes go through the film law eight at a time, as the strips do (traction_at): (A) each node's load,
+    # point and velocities on a lane, (B) the traction coefficient on the lanes (_film_lanes), (C) the traction of
+    # the loaded nodes with a sliding speed
+    film = need_f and fluid_kind != 0 and hc > 0.0
     p_c = 0.375 * q / (a * b)  # p̄ = p_c √(1 − ξ²)
     two_rx = 2.0 * rx
-    for k in range(nroot + 1):
-        lo = -1.0 if k == 0 else (z1 if k == 1 else z2)
-        hi = 1.0 if k == nroot else (z1 if k == 0 else z2)
-        span = hi - lo
-        # nodes graded towards the zeros of the rolling slip (t² maps, smoothstep with zeros at both
-        # ends): μ(s) rises steeply from 0 there (measured: graded 0.25 %, 2.4 %, 0.5 % error at 4
-        # nodes on the hub states against plain Gauss 0.64 %, 2.5 %, 1.6 %; grading towards ξ = ±1
-        # instead was worse, 1.3 %, 5.8 %, 2.3 %)
-        zlo = k > 0  # the lower end is a zero of the rolling slip (else ξ = −1)
-        zhi = k < nroot  # the upper end is a zero (else ξ = +1)
-        for i in range(ng):
-            t = 0.5 + 0.5 * _GL_X[ng, i]
-            if zlo and zhi:
-                psi = t * t * (3.0 - 2.0 * t)
-                dpsi = 6.0 * t * (1.0 - t)
-            elif zlo:
-                psi = t * t
-                dpsi = 2.0 * t
-            elif zhi:
-                psi = t * (2.0 - t)
-                dpsi = 2.0 * (1.0 - t)
-            else:
-                psi = t
-                dpsi = 1.0
-            xi = lo + span * psi
-            wgt = 0.5 * span * dpsi * _GL_W[ng, i]
-            om = 1.0 - xi * xi
-            if om <= 0.0:
+    lw = out[10:]
+    n_nodes = (nroot + 1) * ng
+    for c0 in range(0, n_nodes, LANES):
+        nl = min(LANES, n_nodes - c0)
+        for i in range(LANES):
+            om = xi = wgt = 0.0
+            if i < nl:
+                xi, wgt = _gauss_node(c0 + i, ng, nroot, z1, z2)
+                om = 1.0 - xi * xi
+            lw[LQ + i] = 0.0
+            if not om > 0.0:
+                lw[LP + i] = 1.0
+                lw[LSM + i] = 1.0
+                lw[LU + i] = 1.0
+                lw[LSR + i] = 1.0
+                lw[LCHORD + i] = 0.0
                 continue
             sq = math.sqrt(om)
             x = a * xi
@@ -1024,43 +1040,31 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             (sx, sy, sz, smag, ex, ey, ez, uj, njx, njy, njz) = _slice_kinematics(
                 x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz,
                 asx, asy, asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
-            qj = 0.75 * q * om * wgt
+            lw[LQ + i] = 0.75 * q * om * wgt
+            lw[LX + i] = x
+            lw[LOFF + i] = off
+            lw[LSX + i] = sx
+            lw[LSY + i] = sy
+            lw[LSZ + i] = sz
+            lw[LSM + i] = smag
+            lw[LU + i] = uj
+            lw[LSR + i] = smag * (1.0 / uj) if uj > 0.0 else 1e300
+            lw[LP + i] = p_c * sq
+            lw[LCHORD + i] = 2.0 * b * sq
+        _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0)
+        for i in range(nl):
+            qj = lw[LQ + i]
+            smag = lw[LSM + i]
+            if not (qj > 0.0 and smag > 0.0):
+                continue
+            mu = lw[LMU + i]
+            x = lw[LX + i]
+            off = lw[LOFF + i]
             qx = x * mx + off * nx
             qy = x * my + off * ny
             qz = x * mz + off * nz
-            dbx, dby, dbz = d0bx + qx, d0by + qy, d0bz + qz
-            drx, dry, drz = d0rx + qx, d0ry + qy, d0rz + qz
-            inv_u = 1.0 / uj if uj > 0.0 else 0.0
-            if smag > 0.0:
-                # traction coefficient at the node (seed eq. 2; the strip loop's formulae for one point)
-                sr = smag * inv_u if uj > 0.0 else 1e300
-                mu = 0.0
-                if need_b:
-                    mu = (ba + bb * sr) * math.exp(-bc * sr) + bd
-                if need_f:
-                    if fluid_kind == 0:
-                        mu += ((fa + fb * sr) * math.exp(-fc * sr) + fd - mu) * wfl
-                    elif phys:
-                        pbar = p_c * sq
-                        # Roelands: ln η(p̄) − ln η0 = (ln η0 + 9.67)((1 + p̄/1.96e8)^z − 1), fed into ln 2x
-                        l2x = (math.log(smag) + l2x_c
-                               + roe_ln * (math.exp(roe_z * math.log(1.0 + pbar / 1.96e8)) - 1.0))
-                        fl = lss_floor * pbar
-                        tl = lss_r * (c1 * pbar * inv_den0 - c4)
-                        if tl < fl:
-                            tl = fl
-                        tau = tl * _tanh_pos(tau0 / tl * _asinh_l2x(l2x))
-                        if theta > 0.0:
-                            tau = _heated_stress(tau, theta * smag, l2x, pbar, fl, tau0, t0c, lss_r, c1, c2, c3, c4,
-                                                 beta_v)
-                        if visco and uj > 0.0:
-                            g_f = tl * gf_c
-                            tau = elastic_plastic_mean_stress(tau, g_f * 2.0 * b * sq * inv_hc * sr
-                                                              / (1.0 + g_f * sol_c))
-                        mu += (tau / pbar - mu) * wfl
-                    else:
-                        mu -= mu * wfl
-                add_point_traction(out, -mu * qj / smag, sx, sy, sz, dbx, dby, dbz, drx, dry, drz, mu * qj * smag)
+            add_point_traction(out, -mu * qj / smag, lw[LSX + i], lw[LSY + i], lw[LSZ + i], d0bx + qx, d0by + qy,
+                               d0bz + qz, d0rx + qx, d0ry + qy, d0rz + qz, mu * qj * smag)
     # rolling resistance and oil-film force on the fixed Gauss-Jacobi nodes (the line-load factor in the weight)
     row = 0 if reg == 0 else 1
     for j in range(ROLL_NODES if do_roll else 0):
