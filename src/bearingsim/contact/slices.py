@@ -491,36 +491,23 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                     area = _area_primitive(xi1) - _area_primitive(xi0) if phys else 1.0
                     xbar = a * slice_centroid(xi0, xi1) if frac > 0.0 else 0.0
                 qj = q * frac
-            lw[LQ + i] = qj
             if not qj > 0.0:
-                lw[LP + i] = 1.0
-                lw[LCHORD + i] = 0.0
-                lw[LSM + i] = 1.0
-                lw[LU + i] = 1.0
-                lw[LSR + i] = 1.0
+                _empty_lane(lw, i)
                 continue
             lw[LFRAC + i] = frac
-            lw[LCHORD + i] = half_bn * area  # the strip's mean chord (strip area)/(strip width) [m]
             x = -xbar if s >= n_half else xbar
             off, root = slice_point_offset(xbar, curv)
             (sx, sy, sz, smag, ex, ey, ez, uj, njx, njy, njz) = _slice_kinematics(
                 x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz, asx, asy,
                 asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
-            lw[LX + i] = x
-            lw[LOFF + i] = off
-            lw[LSX + i] = sx
-            lw[LSY + i] = sy
-            lw[LSZ + i] = sz
-            lw[LSM + i] = smag
+            # the strip's mean pressure and its mean chord (strip area)/(strip width) [m]
+            _point_lane(lw, i, qj, x, off, sx, sy, sz, smag, uj, qj * inv_ab / area if phys else 1.0, half_bn * area)
             lw[LEX + i] = ex
             lw[LEY + i] = ey
             lw[LEZ + i] = ez
-            lw[LU + i] = uj
             lw[LNX + i] = njx
             lw[LNY + i] = njy
             lw[LNZ + i] = njz
-            lw[LSR + i] = smag * (1.0 / uj) if uj > 0.0 else 1e300
-            lw[LP + i] = qj * inv_ab / area if phys else 1.0
         # ---- (B) traction coefficients (seed eq. 2) on the eight lanes
         _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0)
         # ---- (C) each loaded strip's traction and rolling resistance
@@ -530,8 +517,6 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                 continue
             s = c0 + i
             j = s if s < n_half else n_slices - 1 - s
-            mu = lw[LMU + i]
-            smag = lw[LSM + i]
             uj = lw[LU + i]
             fr = 0.0
             if do_roll:
@@ -544,20 +529,63 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                               * _pow_0648(uj * inv_u0))
                 elif uj > 0.0:  # no entraining speed at the centre (u0 = 0): the formula as it stands
                     fr = k_zh * math.exp(0.648 * math.log(uj) + 0.246 * math.log(frac))
-            x = lw[LX + i]
-            off = lw[LOFF + i]
-            qx = x * mx + off * nx
-            qy = x * my + off * ny
-            qz = x * mz + off * nz
-            dbx, dby, dbz = d0bx + qx, d0by + qy, d0bz + qz
-            drx, dry, drz = d0rx + qx, d0ry + qy, d0rz + qz
-            if smag > 0.0:
-                add_point_traction(out, -mu * qj / smag, lw[LSX + i], lw[LSY + i], lw[LSZ + i], dbx, dby, dbz, drx,
-                                   dry, drz, mu * qj * smag)
+            dbx, dby, dbz, drx, dry, drz = _add_lane_traction(out, lw, i, mx, my, mz, nx, ny, nz, d0bx, d0by, d0bz,
+                                                              d0rx, d0ry, d0rz)
             if do_roll and uj > 0.0:
                 inv_u = 1.0 / uj
                 add_point_rolling(out, fr, uj, lw[LEX + i] * inv_u, lw[LEY + i] * inv_u, lw[LEZ + i] * inv_u, dbx, dby,
                                   dbz, drx, dry, drz, lw[LNX + i], lw[LNY + i], lw[LNZ + i], two_rx)
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def _empty_lane(lw, i):
+    """Lane i carries no load (past the last strip or node, or none there): values that keep :func:`_film_lanes`'
+    functions finite; its result is not used."""
+    lw[LQ + i] = 0.0
+    lw[LP + i] = 1.0
+    lw[LSM + i] = 1.0
+    lw[LU + i] = 1.0
+    lw[LSR + i] = 1.0
+    lw[LCHORD + i] = 0.0
+
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def _point_lane(lw, i, qj, x, off, sx, sy, sz, smag, uj, pbar, chord):
+    """Lane i ← a loaded strip or node: its load qj [N], its point x along the major axis and off along the normal
+    [m], sliding velocity (sx, sy, sz) of magnitude smag and entraining speed uj [m/s], mean pressure pbar [Pa] and
+    chord [m]; the slide–roll ratio (1e300 without rolling)."""
+    lw[LQ + i] = qj
+    lw[LX + i] = x
+    lw[LOFF + i] = off
+    lw[LSX + i] = sx
+    lw[LSY + i] = sy
+    lw[LSZ + i] = sz
+    lw[LSM + i] = smag
+    lw[LU + i] = uj
+    lw[LSR + i] = smag * (1.0 / uj) if uj > 0.0 else 1e300
+    lw[LP + i] = pbar
+    lw[LCHORD + i] = chord
+
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def _add_lane_traction(out, lw, i, mx, my, mz, nx, ny, nz, d0bx, d0by, d0bz, d0rx, d0ry, d0rz):
+    """Add lane i's traction −μ Q v_s/|v_s| (seed eq. 2; μ from :func:`_film_lanes`) at its point to out
+    (:func:`add_point_traction`; nothing without sliding).  d0b, d0r: the ellipse centre from the ball's and the
+    race's centres [m].  Returns the point's arms (d_b, d_r) [m] (for the rolling resistance)."""
+    x = lw[LX + i]
+    off = lw[LOFF + i]
+    qx = x * mx + off * nx
+    qy = x * my + off * ny
+    qz = x * mz + off * nz
+    dbx, dby, dbz = d0bx + qx, d0by + qy, d0bz + qz
+    drx, dry, drz = d0rx + qx, d0ry + qy, d0rz + qz
+    smag = lw[LSM + i]
+    if smag > 0.0:
+        mu = lw[LMU + i]
+        qj = lw[LQ + i]
+        add_point_traction(out, -mu * qj / smag, lw[LSX + i], lw[LSY + i], lw[LSZ + i], dbx, dby, dbz, drx, dry, drz,
+                           mu * qj * smag)
+    return dbx, dby, dbz, drx, dry, drz
+
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0):
@@ -1029,13 +1057,8 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             if i < nl:
                 xi, wgt = _gauss_node(c0 + i, ng, nroot, z1, z2)
                 om = 1.0 - xi * xi
-            lw[LQ + i] = 0.0
             if not om > 0.0:
-                lw[LP + i] = 1.0
-                lw[LSM + i] = 1.0
-                lw[LU + i] = 1.0
-                lw[LSR + i] = 1.0
-                lw[LCHORD + i] = 0.0
+                _empty_lane(lw, i)
                 continue
             sq = math.sqrt(om)
             x = a * xi
@@ -1043,31 +1066,12 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             (sx, sy, sz, smag, ex, ey, ez, uj, njx, njy, njz) = _slice_kinematics(
                 x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz,
                 asx, asy, asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
-            lw[LQ + i] = 0.75 * q * om * wgt
-            lw[LX + i] = x
-            lw[LOFF + i] = off
-            lw[LSX + i] = sx
-            lw[LSY + i] = sy
-            lw[LSZ + i] = sz
-            lw[LSM + i] = smag
-            lw[LU + i] = uj
-            lw[LSR + i] = smag * (1.0 / uj) if uj > 0.0 else 1e300
-            lw[LP + i] = p_c * sq
-            lw[LCHORD + i] = 2.0 * b * sq
+            # the node's load per unit ξ times its weight, mean pressure across its chord 2b√(1 − ξ²)
+            _point_lane(lw, i, 0.75 * q * om * wgt, x, off, sx, sy, sz, smag, uj, p_c * sq, 2.0 * b * sq)
         _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0)
         for i in range(nl):
-            qj = lw[LQ + i]
-            smag = lw[LSM + i]
-            if not (qj > 0.0 and smag > 0.0):
-                continue
-            mu = lw[LMU + i]
-            x = lw[LX + i]
-            off = lw[LOFF + i]
-            qx = x * mx + off * nx
-            qy = x * my + off * ny
-            qz = x * mz + off * nz
-            add_point_traction(out, -mu * qj / smag, lw[LSX + i], lw[LSY + i], lw[LSZ + i], d0bx + qx, d0by + qy,
-                               d0bz + qz, d0rx + qx, d0ry + qy, d0rz + qz, mu * qj * smag)
+            if lw[LQ + i] > 0.0:
+                _add_lane_traction(out, lw, i, mx, my, mz, nx, ny, nz, d0bx, d0by, d0bz, d0rx, d0ry, d0rz)
     # rolling resistance and oil-film force on the fixed Gauss-Jacobi nodes (the line-load factor in the weight)
     row = 0 if reg == 0 else 1
     for j in range(ROLL_NODES if do_roll else 0):
