@@ -9,11 +9,12 @@ are numba intrinsics that call glibc's vector math library ``libmvec`` directly 
 Measured alone: 4.1 ns per eight exponentials against 24 ns for eight scalar calls.
 
 :data:`MODE` is chosen once, at import: ``"avx512"`` or ``"avx2"`` when numba compiles for this machine's CPU
-(``NUMBA_CPU_NAME`` unset), the CPU has the instructions and libmvec (glibc ≥ 2.22) loads; ``"scalar"`` otherwise
-(eight calls of the scalar functions: the same results as ``math.exp`` bit for bit).  libmvec's functions are
-accurate to a few units in the last place (glibc manual, "Known Maximum Errors in Math Functions"; 2 ulp against
-the scalar exp measured here), so results differ from the scalar path's by rounding.  numba's cache of a kernel is
-specific to the CPU it was compiled for, so a cache made with one mode is not loaded on a machine of another.
+(``NUMBA_CPU_NAME`` and ``NUMBA_CPU_FEATURES`` unset), the CPU has the instructions and libmvec (glibc ≥ 2.22)
+loads; ``"scalar"`` otherwise (eight calls of the scalar functions: the same results as ``math.exp`` bit for bit).
+libmvec's functions are accurate to a few units in the last place (glibc manual, "Known Maximum Errors in Math
+Functions"; 2 ulp against the scalar exp measured here), so results differ from the scalar path's by rounding.
+numba's cache of a kernel is specific to the CPU it was compiled for, so a cache made with one mode is not loaded on
+a machine of another.
 
 Both intrinsics take (src, i0, dst, j0) with src and dst contiguous float64 arrays: dst[j0:j0 + 8] ←
 f(src[i0:i0 + 8]); the caller guarantees the eight elements on both sides (no bounds check).
@@ -41,8 +42,11 @@ FUNCTIONS = ("exp", "log")
 def _choose_mode() -> tuple[str, frozenset]:
     """("avx512" | "avx2" | "scalar", the functions libmvec has in that width) (module docstring); the vector
     symbols are registered with llvmlite."""
-    if os.environ.get("NUMBA_CPU_NAME"):
-        return "scalar", frozenset()
+    from numba import config
+
+    other_cpu = any(os.environ.get(v) for v in ("NUMBA_CPU_NAME", "NUMBA_CPU_FEATURES"))
+    if other_cpu or config.CPU_NAME or config.CPU_FEATURES:
+        return "scalar", frozenset()  # numba compiles for another CPU than this one: the vector ABI may not hold
     try:
         import llvmlite.binding as ll
 
