@@ -360,36 +360,37 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     fk_c = 0.0
     beta_eta = lub[L_BETA_ETA]
     width = 2.0 * a * (1.0 / n_slices) if n_slices > 0 else 1.0  # a strip's (as below)
-    lw[CL_LN + 0] = beta_eta * u0 * u0 / lub[L_KOIL]  # ln L (Zhu-Cheng)
-    lw[CL_LN + 1] = s0 / u0 if u0 > 0.0 else 1.0  # ln (s/u)
-    lw[CL_LN + 2] = eta0 * u0 / (e_eff * rx)  # ln U
-    lw[CL_LN + 3] = q / (e_eff * rx * rx)  # ln W
-    lw[CL_LN + 4] = eta0  # ln η0
-    lw[CL_LN + 5] = alpha * e_eff * eta0 / (e_eff * rx)  # ln G U/u (Zhou-Hoeprich)
-    lw[CL_LN + 6] = q / (width * e_eff * rx)  # ln W of a strip (Zhou-Hoeprich)
-    lw[CL_LN + 7] = u0  # ln u0
-    vlog(lw, CL_LN, lw, CL_LN)
-    ln_l = lw[CL_LN + 0]
-    ln_u = lw[CL_LN + 2]
-    ln_w = lw[CL_LN + 3]
     film = u0 > 0.0 and model != 0  # (the boundary model needs no film)
-    if film:
-        if lub[L_C_AE] == alpha * e_eff and lub[L_C_AR] == ry / rx:  # the contact type's constants, made once
-            ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = (lub[L_C_LNG], lub[L_C_K], lub[L_C_FKMIN], lub[L_C_FKC],
-                                                     lub[L_C_HIR], lub[L_C_FKIE])
-        else:
-            ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = film_constants(alpha, e_eff, rx, ry)
-    ln_gv = ln_g + 3.0 * ln_w - 2.0 * ln_u  # the regime map's (regime_code with the shared logarithms,
-    ln_ge = (8.0 / 3.0) * ln_w - 2.0 * ln_u  # the same formulae as ehl.regime_films)
-    lw[CL_EX + 0] = 0.42 * ln_l
-    lw[CL_EX + 1] = 0.83 * lw[CL_LN + 1]
-    lw[CL_EX + 2] = 0.64 * ln_l
-    lw[CL_EX + 3] = 0.67 * ln_u + 0.53 * ln_g - 0.067 * ln_w
-    lw[CL_EX + 4] = 0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w
-    lw[CL_EX + 5] = (2.0 / 3.0) * ln_gv
-    lw[CL_EX + 6] = 0.67 * ln_ge
-    lw[CL_EX + 7] = 0.49 * ln_gv + 0.17 * ln_ge
-    vexp(lw, CL_EX, lw, CL_EX)
+    if model != 0:  # (nor any of these)
+        lw[CL_LN + 0] = beta_eta * u0 * u0 / lub[L_KOIL]  # ln L (Zhu-Cheng)
+        lw[CL_LN + 1] = s0 / u0 if u0 > 0.0 else 1.0  # ln (s/u)
+        lw[CL_LN + 2] = eta0 * u0 / (e_eff * rx)  # ln U
+        lw[CL_LN + 3] = q / (e_eff * rx * rx)  # ln W
+        lw[CL_LN + 4] = eta0  # ln η0
+        lw[CL_LN + 5] = alpha * e_eff * eta0 / (e_eff * rx)  # ln G U/u (Zhou-Hoeprich)
+        lw[CL_LN + 6] = q / (width * e_eff * rx)  # ln W of a strip (Zhou-Hoeprich)
+        lw[CL_LN + 7] = u0  # ln u0
+        vlog(lw, CL_LN, lw, CL_LN)
+        ln_l = lw[CL_LN + 0]
+        ln_u = lw[CL_LN + 2]
+        ln_w = lw[CL_LN + 3]
+        if film:
+            if lub[L_C_AE] == alpha * e_eff and lub[L_C_AR] == ry / rx:  # the contact type's constants, made once
+                ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = (lub[L_C_LNG], lub[L_C_K], lub[L_C_FKMIN], lub[L_C_FKC],
+                                                         lub[L_C_HIR], lub[L_C_FKIE])
+            else:
+                ln_g, k_hd, fk_min, fk_c, h_ir, fk_ie = film_constants(alpha, e_eff, rx, ry)
+        ln_gv = ln_g + 3.0 * ln_w - 2.0 * ln_u  # the regime map's (regime_code with the shared logarithms,
+        ln_ge = (8.0 / 3.0) * ln_w - 2.0 * ln_u  # the same formulae as ehl.regime_films)
+        lw[CL_EX + 0] = 0.42 * ln_l
+        lw[CL_EX + 1] = 0.83 * lw[CL_LN + 1]
+        lw[CL_EX + 2] = 0.64 * ln_l
+        lw[CL_EX + 3] = 0.67 * ln_u + 0.53 * ln_g - 0.067 * ln_w
+        lw[CL_EX + 4] = 0.68 * ln_u + 0.49 * ln_g - 0.073 * ln_w
+        lw[CL_EX + 5] = (2.0 / 3.0) * ln_gv
+        lw[CL_EX + 6] = 0.67 * ln_ge
+        lw[CL_EX + 7] = 0.49 * ln_gv + 0.17 * ln_ge
+        vexp(lw, CL_EX, lw, CL_EX)
     if film:
         if thermal and beta_eta > 0.0:
             # ehl.zhu_cheng_thermal_factor with L^0.42 and L^0.64 from one logarithm
