@@ -35,18 +35,13 @@ from numba.extending import intrinsic
 LANES = 8
 
 
-#: the functions with a lane form here
-FUNCTIONS = ("exp", "log")
-
-
-def _choose_mode() -> tuple[str, frozenset]:
-    """("avx512" | "avx2" | "scalar", the functions libmvec has in that width) (module docstring); the vector
-    symbols are registered with llvmlite."""
+def _choose_mode() -> str:
+    """"avx512", "avx2" or "scalar" (module docstring); the vector exp and log are registered with llvmlite."""
     from numba import config
 
     other_cpu = any(os.environ.get(v) for v in ("NUMBA_CPU_NAME", "NUMBA_CPU_FEATURES"))
     if other_cpu or config.CPU_NAME or config.CPU_FEATURES:
-        return "scalar", frozenset()  # numba compiles for another CPU than this one: the vector ABI may not hold
+        return "scalar"  # numba compiles for another CPU than this one: the vector ABI may not hold
     try:
         import llvmlite.binding as ll
 
@@ -54,24 +49,17 @@ def _choose_mode() -> tuple[str, frozenset]:
         lib = ctypes.CDLL(ctypes.util.find_library("mvec") or "libmvec.so.1")
         for mode, feat, tag in (("avx512", "avx512f", "_ZGVeN8v_"), ("avx2", "avx2", "_ZGVdN4v_")):
             if feats.get(feat, False):
-                have = set()
-                for f in FUNCTIONS:
-                    try:
-                        addr = ctypes.cast(getattr(lib, tag + f), ctypes.c_void_p).value
-                    except AttributeError:
-                        continue
-                    ll.add_symbol(tag + f, addr)
-                    have.add(f)
-                if {"exp", "log"} <= have:
-                    return mode, frozenset(have)
+                addrs = {tag + f: ctypes.cast(getattr(lib, tag + f), ctypes.c_void_p).value for f in ("exp", "log")}
+                for name, addr in addrs.items():
+                    ll.add_symbol(name, addr)
+                return mode
     except (OSError, AttributeError, RuntimeError, KeyError):
         pass
-    return "scalar", frozenset()
+    return "scalar"
 
 
-#: "avx512", "avx2" or "scalar": how :func:`vexp` and :func:`vlog` are compiled in this process; VECTOR: the
-#: functions that are vector calls (both, or none)
-MODE, VECTOR = _choose_mode()
+#: "avx512", "avx2" or "scalar": how :func:`vexp` and :func:`vlog` are compiled in this process
+MODE = _choose_mode()
 
 
 def _lanes_codegen(fname: str):
@@ -84,7 +72,7 @@ def _lanes_codegen(fname: str):
         pa = builder.gep(a.data, [i0])
         pb = builder.gep(b.data, [j0])
         dbl = ir.DoubleType()
-        if fname not in VECTOR:
+        if MODE == "scalar":
             fn = builder.module.declare_intrinsic("llvm." + fname, [dbl])
             for k in range(LANES):
                 off = ir.Constant(ir.IntType(64), k)
