@@ -402,6 +402,31 @@ def test_kernel_matches_reference_operating_range(n_slices):
                     np.testing.assert_allclose(out, ref, rtol=1e-10, atol=1e-10 * scale, err_msg=str((kw, u, slip, q)))
 
 
+@pytest.mark.parametrize("n_slices", [4, 10, -3])
+def test_kernel_matches_reference_without_rolling_at_the_centre(n_slices):
+    """The rolling resistance where the ellipse centre does not roll (u0 = 0: the kernel's k_zh branch, which the
+    strips' and Gauss nodes' u0-scaled forms do not cover): the race spinning about the normal through the centre
+    (ball at rest) entrains the strips off the centre only; kernel vs the one-point-at-a-time reference at 1e-10.
+    Even strip counts: with an odd count the middle strip's centroid sits on the spin pole, where slip and rolling
+    speed both vanish and μ(s/u) has no limit (the kernel's tabled centroid is 0 exactly and gives no traction there,
+    the reference's running difference leaves ~1e-20 m and takes the limit along the spin field)."""
+    rd = S.deformed_surface_radius(D, F_I * D)
+    lub = _lub(model="mixed", roughness=0.1e-6)
+    for spin in (50.0, 800.0):
+        for q in (200.0, 5000.0):
+            a, b = HC.a * (q / Q) ** (1 / 3), HC.b * (q / Q) ** (1 / 3)
+            args = (q, a, b, rd, np.zeros(3), np.array([0.0, 0.0, 1.0]), np.array([1.0, 0.0, 0.0]),
+                    np.array([0.0, 0.0, R_BALL]), np.zeros(3), np.zeros(3), np.array([0.0, 0.0, -0.025]), np.zeros(3),
+                    np.array([0.0, 0.0, spin]), lub, n_slices)
+            out, ref = np.zeros(10), np.zeros(10)
+            S.contact_traction(*args, out)
+            S.contact_traction_reference(*args, ref)
+            assert out[9] > 0.0  # the strips roll: rolling resistance and its power
+            scale = np.max(np.abs(ref))
+            np.testing.assert_allclose(out, ref, rtol=1e-10, atol=1e-10 * scale,
+                                       err_msg=f"contact_traction_reference, u0 = 0, spin {spin}, Q {q}")
+
+
 @pytest.mark.parametrize("n_slices", [1, 10])
 def test_viscoelastic_film_linear_limit_closed_form(n_slices):
     """Small slide-roll ratio at 2 GPa: the film shears elastically (Johnson & Tevaarwerk 1977 linear elastic

@@ -1,10 +1,11 @@
-"""The eight-lane exp and log of the strip kernel (bearingsim.contact.vecmath, issue 14).
+"""The eight-lane exp, log, square root and reciprocal of the strip kernel (bearingsim.contact.vecmath, issue 14).
 
 glibc's vector math library promises a few units in the last place (glibc manual, "Known Maximum Errors in Math
 Functions"); the lanes are held to 4 ulp of the scalar functions over the film law's range and beyond, with every
 lane checked (a lane shifted by one, or a wrong function, fails).  The scalar fallback (NUMBA_CPU_NAME set: numba
 compiles for another CPU than this one) must give the scalar functions' results bit for bit; it runs in a child
-process with a cache of its own, as a user's process would.
+process with a cache of its own, as a user's process would.  The square root and the reciprocal are exactly rounded
+(IEEE 754), so every lane must equal ``math.sqrt(x)`` / ``1.0 / x`` bit for bit, on this CPU and on a generic one.
 """
 
 from __future__ import annotations
@@ -125,3 +126,75 @@ def test_this_machine_uses_the_vector_library_when_it_can():
         assert V.MODE == "scalar"
     else:
         assert V.MODE == ("avx512" if feats.get("avx512f") else "avx2")
+
+
+@njit(cache=False)
+def _ieee(x, kind):
+    y = np.empty_like(x)
+    for c in range(0, x.shape[0], V.LANES):
+        if kind == 0:
+            V.vsqrt(x, c, y, c)
+        else:
+            V.vrecip(x, c, y, c)
+    return y
+
+
+def _same_bits(got, ref):
+    return np.array_equal(np.asarray(got).view(np.int64), np.asarray(ref).view(np.int64))
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.floats(0.0, 1e300) | st.floats(1e-320, 1e-300), min_size=16, max_size=16),
+       st.lists(st.floats(allow_nan=False).filter(lambda v: v != 0.0), min_size=16, max_size=16))
+def test_vsqrt_and_vrecip_are_the_scalar_operations_bit_for_bit(xs, ds):
+    """Every lane (two calls of eight) equals the scalar square root / reciprocal exactly, subnormals included."""
+    x = np.array(xs)
+    assert _same_bits(_ieee(x, 0), [math.sqrt(v) for v in xs]), (x, _ieee(x, 0))
+    d = np.array(ds)
+    assert _same_bits(_ieee(d, 1), [1.0 / v for v in ds]), (d, _ieee(d, 1))
+
+
+def test_vsqrt_and_vrecip_special_values_and_offsets():
+    """±0, ±inf, negative arguments and NaN as IEEE 754 gives them; the offsets of source and destination held."""
+    x = np.array([0.0, -0.0, np.inf, -1.0, np.nan, 4.0, 2.0, 1e-310])
+    r = _ieee(x, 0)
+    assert _same_bits(r[:3], [0.0, -0.0, np.inf]) and np.isnan(r[3]) and np.isnan(r[4])
+    assert r[5] == 2.0 and r[6] == math.sqrt(2.0) and r[7] == math.sqrt(1e-310)
+    q = _ieee(np.array([0.0, -0.0, np.inf, -np.inf, np.nan, 4.0, -2.0, 3.0]), 1)
+    assert _same_bits(q[:4], [np.inf, -np.inf, 0.0, -0.0]) and np.isnan(q[4])
+    assert q[5] == 0.25 and q[6] == -0.5 and q[7] == 1.0 / 3.0
+
+    @njit(cache=False)
+    def shifted(a, b):
+        V.vsqrt(a, 3, b, 5)
+        V.vrecip(a, 2, b, 13)
+
+    a = np.arange(1.0, 17.0)
+    b = np.zeros(21)
+    shifted(a, b)
+    assert np.all(b[:5] == 0.0)
+    assert _same_bits(b[5:13], np.sqrt(a[3:11])) and _same_bits(b[13:21], 1.0 / a[2:10])
+
+
+def test_vsqrt_and_vrecip_on_a_generic_cpu_bit_for_bit():
+    """Compiled for another CPU (NUMBA_CPU_NAME=generic: LLVM splits the eight lanes to that target's registers) the
+    lanes are still the scalar operations exactly."""
+    code = (
+        "import math, numpy as np\n"
+        "from numba import njit\n"
+        "from bearingsim.contact import vecmath as V\n"
+        "@njit(cache=True)\n"
+        "def f(x, y, z):\n"
+        "    V.vsqrt(x, 0, y, 0)\n"
+        "    V.vrecip(x, 0, z, 0)\n"
+        "x = np.array([2.0, 3.0, 1e-310, 7.5, 1e300, 0.1, 5.0, 11.0]); y = np.empty(8); z = np.empty(8)\n"
+        "f(x, y, z)\n"
+        "assert all(y[i] == math.sqrt(x[i]) and z[i] == 1.0 / x[i] for i in range(8)), (y, z)\n"
+        "print('ok')\n")
+    with tempfile.TemporaryDirectory() as d:
+        script = os.path.join(d, "ieee.py")
+        with open(script, "w") as fh:
+            fh.write(code)
+        env = dict(os.environ, NUMBA_CPU_NAME="generic", NUMBA_CACHE_DIR=os.path.join(d, "cache"))
+        r = subprocess.run([sys.executable, script], env=env, capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]

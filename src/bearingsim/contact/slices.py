@@ -91,7 +91,7 @@ from numba import njit
 from ..errors import InputError
 from . import ehl, traction
 from .traction import MARTIN_ROLLING, elastic_plastic_mean_stress, mixed_weight
-from .vecmath import LANES, vexp, vlog
+from .vecmath import LANES, vexp, vlog, vrecip, vsqrt
 
 # ---- layout of the packed parameter vector `lub` -------------------------------------
 L_MODEL = 0  # 0 boundary, 1 fluid, 2 mixed
@@ -134,11 +134,11 @@ L_SIZE = 46
 
 # ---- the strip loop's lanes (traction_at): out[10:] holds these arrays of LANES floats, one lane per strip
 (LX, LOFF, LQ, LFRAC, LCHORD, LP, LSX, LSY, LSZ, LSM, LEX, LEY, LEZ, LU, LNX, LNY, LNZ, LSR, LMU, LA, LB, LL2X, LTL,
- LTAU, LZ1, LDEN, LNUM, LARG) = (k * LANES for k in range(28))
+ LTAU, LZ1, LDEN, LNUM, LARG, LIU, LIS) = (k * LANES for k in range(30))
 #: the contact's logarithms and its film's exponentials (the first two arrays: the strips' lanes come later)
 CL_LN, CL_EX = LX, LOFF
 #: length of traction_at's ``out``: the 10 results, then the lanes' work space
-TRACTION_OUT = 10 + 28 * LANES
+TRACTION_OUT = 10 + 30 * LANES
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
 FLUID_MODELS = {"curve": 0, "physical": 1}
@@ -218,15 +218,14 @@ def add_point_traction(out, f, sx, sy, sz, dbx, dby, dbz, drx, dry, drz, power):
 
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
-def add_point_rolling(out, fr, uj, hx, hy, hz, dbx, dby, dbz, drx, dry, drz, njx, njy, njz, two_rx):
+def add_point_rolling(out, fr, uj, hx, hy, hz, dbx, dby, dbz, drx, dry, drz, njx, njy, njz, two_rx, inv_r1):
     """Add the rolling resistance fr [N] at a point with entraining speed uj [m/s] along the unit vector h to out
     ([S1] eqs. 4–5, module docstring item 5): shear −fr on both surfaces, the pressure-centre shift as P₁ =
     2 fr R_x/R₁ on the ball through its centre (R₁ = |d_b|) and P₂ = 2 fr − P₁ on the race through its centre of
     curvature p − R₂ n_j (P₂ R₂ = 2 fr R_x): the race's moment (p − c_r) × ((P₂ − fr) h) − 2 fr R_x (n_j × h);
-    power 2 fr uj [W]."""
-    r1 = math.sqrt(dbx * dbx + dby * dby + dbz * dbz)
+    power 2 fr uj [W].  inv_r1 = 1/|d_b| [1/m] (the strips take it for eight points at once)."""
     c = fr * two_rx
-    p1 = c / r1
+    p1 = c * inv_r1
     gb = p1 - fr
     out[0] += gb * hx
     out[1] += gb * hy
@@ -444,10 +443,17 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     ln_eta0 = lw[CL_LN + 4] if phys else 0.0
     # rolling resistance (traction.rolling_resistance_zh / _ir) with the slice-independent factor
     # F_R = k_zh u^0.648 (Q_j/Q)^0.246,  k_zh = 29.2 (Rx/α) L (G η0/(E' Rx))^0.648 (Q/(L E' Rx))^0.246
+    # and, where the centre rolls (u0 > 0), k_zh u0^0.648 in the same exponential (the strips need only that product)
+    roll_zh = do_roll and reg != 0 and u0 > 0.0
     k_zh = 0.0
+    k_zh_u0 = 0.0
     if do_roll and reg != 0:
-        k_zh = 29.2 * (rx / alpha) * width * fr_scale * math.exp(0.648 * lw[CL_LN + 5] + 0.246 * lw[CL_LN + 6])
-    k_ir = MARTIN_ROLLING * width * math.sqrt(eta0 * q / width) * fr_scale
+        ln_zh = 0.648 * lw[CL_LN + 5] + 0.246 * lw[CL_LN + 6]
+        if roll_zh:
+            k_zh_u0 = 29.2 * (rx / alpha) * width * fr_scale * math.exp(ln_zh + 0.648 * lw[CL_LN + 7])
+        else:
+            k_zh = 29.2 * (rx / alpha) * width * fr_scale * math.exp(ln_zh)
+    k_ir = MARTIN_ROLLING * width * math.sqrt(eta0 * q / width) * fr_scale if do_roll and reg == 0 else 0.0
     two_rx = 2.0 * rx
 
     # rates of the sliding and entraining velocities along the major axis and the normal
@@ -465,15 +471,14 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     # strip or without load carry values that keep the functions finite and are not added.
     n_half = (n_slices + 1) // 2
     tabled = n_slices <= STRIP_TABLE_MAX
-    # rolling resistance (Zhou-Hoeprich) as k_zh u0^0.648 (Q_j/Q)^0.246 (u/u0)^0.648: one logarithm per
-    # contact, the strip's factor from the table, (u/u0)^0.648 by its series near 1 (_pow_0648)
-    roll_zh = do_roll and reg != 0 and u0 > 0.0
-    k_zh_u0 = k_zh * math.exp(0.648 * lw[CL_LN + 7]) if roll_zh else 0.0
+    # rolling resistance (Zhou-Hoeprich) as k_zh u0^0.648 (Q_j/Q)^0.246 (u/u0)^0.648: one exponential per
+    # contact (above), the strip's factor from the table, (u/u0)^0.648 by its series near 1 (_pow_0648)
     inv_u0 = 1.0 / u0 if u0 > 0.0 else 0.0
     film = need_f and fluid_kind != 0 and hc > 0.0  # the physical film law on the strips
     for c0 in range(0, n_slices, LANES):
         nl = min(LANES, n_slices - c0)
-        # ---- (A) the strips' loads, points and velocities
+        # ---- (A) the strips' loads, points and velocities; the square roots and divisions of all eight lanes in
+        # packed instructions (vsqrt, vrecip: exactly the scalar ones, 8 % of a hub step waited on them one by one)
         for i in range(LANES):
             s = c0 + i
             j = s if s < n_half else n_slices - 1 - s
@@ -492,26 +497,65 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                     area = _area_primitive(xi1) - _area_primitive(xi0) if phys else 1.0
                     xbar = a * slice_centroid(xi0, xi1) if frac > 0.0 else 0.0
                 qj = q * frac
-            if not qj > 0.0:
-                _empty_lane(lw, i)
-                continue
+            x = 0.0
+            if qj > 0.0:
+                x = -xbar if s >= n_half else xbar
+                # the strip's mean pressure and its mean chord (strip area)/(strip width) [m]
+                lw[LP + i] = qj * inv_ab / area if phys else 1.0
+                lw[LCHORD + i] = half_bn * area
+            else:
+                qj = 0.0
+            lw[LQ + i] = qj
             lw[LFRAC + i] = frac
-            x = -xbar if s >= n_half else xbar
-            off, root = slice_point_offset(xbar, curv)
-            (sx, sy, sz, smag, ex, ey, ez, uj, njx, njy, njz) = _slice_kinematics(
+            lw[LX + i] = x
+            cx = curv * x
+            lw[LA + i] = max(0.0, 1.0 - cx * cx)  # slice_point_offset's root², then 1 + root
+        vsqrt(lw, LA, lw, LB)  # slice_point_offset's root √(1 − c²x²)
+        for i in range(LANES):
+            lw[LA + i] = 1.0 + lw[LB + i]
+        vrecip(lw, LA, lw, LA)
+        for i in range(LANES):
+            x = lw[LX + i]
+            root = lw[LB + i]
+            off = curv * x * x * lw[LA + i]  # slice_point_offset: c x²/(1 + √(1 − c²x²))
+            sx, sy, sz, ex, ey, ez, njx, njy, njz = _slice_velocities(
                 x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz, asx, asy,
                 asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
-            # the strip's mean pressure and its mean chord (strip area)/(strip width) [m]
-            _point_lane(lw, i, qj, x, off, sx, sy, sz, smag, uj, qj * inv_ab / area if phys else 1.0, half_bn * area)
+            lw[LOFF + i] = off
+            lw[LSX + i] = sx
+            lw[LSY + i] = sy
+            lw[LSZ + i] = sz
             lw[LEX + i] = ex
             lw[LEY + i] = ey
             lw[LEZ + i] = ez
             lw[LNX + i] = njx
             lw[LNY + i] = njy
             lw[LNZ + i] = njz
+            lw[LA + i] = sx * sx + sy * sy + sz * sz
+            lw[LB + i] = ex * ex + ey * ey + ez * ez
+        vsqrt(lw, LA, lw, LSM)
+        vsqrt(lw, LB, lw, LU)
+        vrecip(lw, LSM, lw, LIS)  # 1/|s| (the traction's direction)
+        vrecip(lw, LU, lw, LIU)  # 1/u (slide–roll ratio, the rolling direction)
+        for i in range(LANES):
+            if lw[LQ + i] > 0.0:
+                uj = lw[LU + i]
+                lw[LSR + i] = lw[LSM + i] * lw[LIU + i] if uj > 0.0 else 1e300  # (as _point_lane)
+            else:
+                _empty_lane(lw, i)
         # ---- (B) traction coefficients (seed eq. 2) on the eight lanes
         _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0)
-        # ---- (C) each loaded strip's traction and rolling resistance
+        # ---- (C) each loaded strip's traction and rolling resistance (1/|d_b| of the eight points in LA)
+        if do_roll:
+            for i in range(LANES):
+                x = lw[LX + i]
+                off = lw[LOFF + i]
+                dbx = d0bx + x * mx + off * nx
+                dby = d0by + x * my + off * ny
+                dbz = d0bz + x * mz + off * nz
+                lw[LA + i] = dbx * dbx + dby * dby + dbz * dbz
+            vsqrt(lw, LA, lw, LA)
+            vrecip(lw, LA, lw, LA)
         for i in range(nl):
             qj = lw[LQ + i]
             if not qj > 0.0:
@@ -533,9 +577,9 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
             dbx, dby, dbz, drx, dry, drz = _add_lane_traction(out, lw, i, mx, my, mz, nx, ny, nz, d0bx, d0by, d0bz,
                                                               d0rx, d0ry, d0rz)
             if do_roll and uj > 0.0:
-                inv_u = 1.0 / uj
+                inv_u = lw[LIU + i]
                 add_point_rolling(out, fr, uj, lw[LEX + i] * inv_u, lw[LEY + i] * inv_u, lw[LEZ + i] * inv_u, dbx, dby,
-                                  dbz, drx, dry, drz, lw[LNX + i], lw[LNY + i], lw[LNZ + i], two_rx)
+                                  dbz, drx, dry, drz, lw[LNX + i], lw[LNY + i], lw[LNZ + i], two_rx, lw[LA + i])
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _empty_lane(lw, i):
@@ -569,9 +613,9 @@ def _point_lane(lw, i, qj, x, off, sx, sy, sz, smag, uj, pbar, chord):
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _add_lane_traction(out, lw, i, mx, my, mz, nx, ny, nz, d0bx, d0by, d0bz, d0rx, d0ry, d0rz):
-    """Add lane i's traction −μ Q v_s/|v_s| (seed eq. 2; μ from :func:`_film_lanes`) at its point to out
-    (:func:`add_point_traction`; nothing without sliding).  d0b, d0r: the ellipse centre from the ball's and the
-    race's centres [m].  Returns the point's arms (d_b, d_r) [m] (for the rolling resistance)."""
+    """Add lane i's traction −μ Q v_s/|v_s| (seed eq. 2; μ from :func:`_film_lanes`, 1/|v_s| from lw[LIS + i]) at
+    its point to out (:func:`add_point_traction`; nothing without sliding).  d0b, d0r: the ellipse centre from the
+    ball's and the race's centres [m].  Returns the point's arms (d_b, d_r) [m] (for the rolling resistance)."""
     x = lw[LX + i]
     off = lw[LOFF + i]
     qx = x * mx + off * nx
@@ -583,8 +627,8 @@ def _add_lane_traction(out, lw, i, mx, my, mz, nx, ny, nz, d0bx, d0by, d0bz, d0r
     if smag > 0.0:
         mu = lw[LMU + i]
         qj = lw[LQ + i]
-        add_point_traction(out, -mu * qj / smag, lw[LSX + i], lw[LSY + i], lw[LSZ + i], dbx, dby, dbz, drx, dry, drz,
-                           mu * qj * smag)
+        add_point_traction(out, -mu * qj * lw[LIS + i], lw[LSX + i], lw[LSY + i], lw[LSZ + i], dbx, dby, dbz, drx,
+                           dry, drz, mu * qj * smag)
     return dbx, dby, dbz, drx, dry, drz
 
 
@@ -633,7 +677,7 @@ def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln
     # Roelands: ln η(p̄) = ln η0 + (ln η0 + 9.67)((1 + p̄/1.96e8)^z − 1); the logarithm feeds ln 2x directly
     # (x = η γ̇/τ0), η itself is never formed
     for i in range(LANES):
-        lw[LA + i] = 1.0 + lw[LP + i] / 1.96e8
+        lw[LA + i] = 1.0 + lw[LP + i] * _INV_ROELANDS_P  # (a product: the divider is the kernel's bottleneck)
     vlog(lw, LA, lw, LB)
     for i in range(LANES):
         lw[LA + i] = roe_z * lw[LB + i]
@@ -647,19 +691,25 @@ def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln
         lw[LL2X + i] = l2x
         lw[LA + i] = -2.0 * l2x
     vexp(lw, LA, lw, LB)  # e^(−2 ln 2x) for asinh's series
+    c1_den0 = lss_c1 / den0
     for i in range(LANES):
         pbar = lw[LP + i]
-        tl = lss_r * (lss_c1 * pbar / den0 - lss_c4)
+        tl = lss_r * (c1_den0 * pbar - lss_c4)
         fl = lss_floor * pbar
         if tl < fl:
             tl = fl
         lw[LTL + i] = tl
-        z = tau0 / tl * _asinh_l2x_e(lw[LL2X + i], lw[LB + i])
+    vrecip(lw, LTL, lw, LDEN)  # 1/τ_L (LDEN is free until the heat balance)
+    for i in range(LANES):
+        z = tau0 * lw[LDEN + i] * _asinh_l2x_e(lw[LL2X + i], lw[LB + i])
         lw[LTAU + i] = z  # tanh's argument, then τ below
         lw[LA + i] = 2.0 * min(z, 20.0)
     vexp(lw, LA, lw, LB)
     for i in range(LANES):
-        lw[LTAU + i] = lw[LTL + i] * _tanh_pos_e(lw[LTAU + i], lw[LB + i])
+        lw[LA + i] = lw[LB + i] + 1.0
+    vrecip(lw, LA, lw, LA)
+    for i in range(LANES):
+        lw[LTAU + i] = lw[LTL + i] * _tanh_pos_e(lw[LTAU + i], lw[LB + i], lw[LA + i])
     if theta > 0.0:
         # the heat balance's secant step (_heated_stress), its two exponentials on the lanes
         for i in range(LANES):
@@ -678,6 +728,7 @@ def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln
         vexp(lw, LA, lw, LB)
         for i in range(LANES):
             lw[LTAU + i] = _heated_finish(lw[LTAU + i], lw[LDEN + i], lw[LNUM + i], lw[LZ1 + i], lw[LB + i])
+    vrecip(lw, LP, lw, LA)  # 1/p̄
     for i in range(LANES):
         tau = lw[LTAU + i]
         if visco and lw[LU + i] > 0.0:
@@ -685,7 +736,7 @@ def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln
             g = gf_c * lw[LTL + i]
             tau = elastic_plastic_mean_stress(tau, g * lw[LCHORD + i] * inv_hc * lw[LSR + i] / (1.0 + g * sol_c))
         mu = lw[LMU + i]
-        lw[LMU + i] = mu + (tau / lw[LP + i] - mu) * wfl
+        lw[LMU + i] = mu + (tau * lw[LA + i] - mu) * wfl
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def film_constants(alpha, e_eff, rx, ry):
@@ -764,6 +815,8 @@ def _pow_0648(x):
 
 #: ln(2·10⁶): asinh x = ln 2x within 2.5e-13 for x ≥ 10⁶
 _LN_2E6 = math.log(2.0e6)
+#: 1/(1.96e8 Pa): Roelands' pressure scale (traction.roelands_viscosity), as a factor
+_INV_ROELANDS_P = 1.0 / 1.96e8
 _LN_2 = math.log(2.0)
 _LN_200 = math.log(200.0)
 
@@ -772,24 +825,26 @@ _LN_200 = math.log(200.0)
 def _tanh_pos(z):
     """tanh z for z ≥ 0 [-]: (e^(2z) − 1)/(e^(2z) + 1) for 1e-3 ≤ z ≤ 20 (e^(2z) − 1 ≥ 2e-3, so at
     most ~500 ulp lost, ~1e-13 relative), exactly 1 above 20 (tanh 20 = 1 − 8e-18), math.tanh below."""
-    return _tanh_pos_e(z, math.exp(2.0 * z) if 1e-3 <= z <= 20.0 else 0.0)
+    e = math.exp(2.0 * z) if 1e-3 <= z <= 20.0 else 0.0
+    return _tanh_pos_e(z, e, 1.0 / (e + 1.0))
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
-def _tanh_pos_e(z, e):
-    """:func:`_tanh_pos` with e = e^(2z) given (used only where 1e-3 ≤ z ≤ 20; the strip lanes take it from
-    :func:`.vecmath.vexp`)."""
+def _tanh_pos_e(z, e, r):
+    """:func:`_tanh_pos` with e = e^(2z) and r = 1/(e + 1) given ((e − 1) r; used only where 1e-3 ≤ z ≤ 20; the
+    strip lanes take e from :func:`.vecmath.vexp` and r from :func:`.vecmath.vrecip`)."""
     if z > 20.0:
         return 1.0
     if z >= 1e-3:
-        return (e - 1.0) / (e + 1.0)
+        return (e - 1.0) * r
     return math.tanh(z)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
-def _slice_kinematics(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx, asy, asz,
+def _slice_velocities(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx, asy, asz,
                       e1x, e1y, e1z, aex, aey, aez):
-    """Tangential sliding and entraining velocities at the slice point x̄ (module docstring, item 3)."""
+    """Tangential sliding and entraining velocities at the slice point x̄ (module docstring, item 3) and the local
+    normal there: (s (3), e (3), n_j (3)) [m/s, m/s, -]."""
     cx = curv * x
     njx = root * nx - cx * mx
     njy = root * ny - cx * my
@@ -808,6 +863,15 @@ def _slice_kinematics(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx,
     ex -= en * njx
     ey -= en * njy
     ez -= en * njz
+    return sx, sy, sz, ex, ey, ez, njx, njy, njz
+
+
+@njit(cache=True, error_model="numpy", fastmath={"contract"})
+def _slice_kinematics(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx, asy, asz,
+                      e1x, e1y, e1z, aex, aey, aez):
+    """:func:`_slice_velocities` with the speeds |s| and |e| [m/s]: (s (3), |s|, e (3), |e|, n_j (3))."""
+    sx, sy, sz, ex, ey, ez, njx, njy, njz = _slice_velocities(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z,
+                                                              asx, asy, asz, e1x, e1y, e1z, aex, aey, aez)
     return (sx, sy, sz, math.sqrt(sx * sx + sy * sy + sz * sz), ex, ey, ez, math.sqrt(ex * ex + ey * ey + ez * ez),
             njx, njy, njz)
 
@@ -1069,6 +1133,7 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
                 asx, asy, asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
             # the node's load per unit ξ times its weight, mean pressure across its chord 2b√(1 − ξ²)
             _point_lane(lw, i, 0.75 * q * om * wgt, x, off, sx, sy, sz, smag, uj, p_c * sq, 2.0 * b * sq)
+        vrecip(lw, LSM, lw, LIS)
         _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0)
         for i in range(nl):
             if lw[LQ + i] > 0.0:
@@ -1094,7 +1159,7 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
         dbx, dby, dbz = d0bx + x * mx + off * nx, d0by + x * my + off * ny, d0bz + x * mz + off * nz
         drx, dry, drz = d0rx + x * mx + off * nx, d0ry + x * my + off * ny, d0rz + x * mz + off * nz
         add_point_rolling(out, fr, uj, ex * inv_u, ey * inv_u, ez * inv_u, dbx, dby, dbz, drx, dry, drz, njx, njy,
-                          njz, two_rx)
+                          njz, two_rx, 1.0 / math.sqrt(dbx * dbx + dby * dby + dbz * dbz))
 
 
 # --------------------------------------------------------------------------- Python side

@@ -18,6 +18,13 @@ a machine of another.
 
 Both intrinsics take (src, i0, dst, j0) with src and dst contiguous float64 arrays: dst[j0:j0 + 8] ←
 f(src[i0:i0 + 8]); the caller guarantees the eight elements on both sides (no bounds check).
+
+:func:`vsqrt` and :func:`vrecip` (√x and 1/x on eight lanes, issue 14, eleventh pass) are LLVM's vector square
+root and division, whatever :data:`MODE` is: IEEE-754 rounds both exactly, so every lane is bit for bit the scalar
+``math.sqrt(x)`` / ``1.0 / x``.  They exist because the strip kernel's square roots and divisions share one
+execution unit that takes 4–6 cycles for each scalar one (``perf``: 8 % of a hub step waited on them); a packed
+instruction does eight in about the time of three.  numba's LLVM does not pack them by itself (its SLP vectoriser
+is off: docs/dynamics.md, eleventh pass).
 """
 
 from __future__ import annotations
@@ -101,3 +108,36 @@ def vlog(typingctx, src, i0, dst, j0):
     """dst[j0:j0 + 8] ← log(src[i0:i0 + 8]) (module docstring)."""
     return types.void(src, types.intp, dst, types.intp), _lanes_codegen("log")
 
+
+
+def _lanes_ieee(op: str):
+    """Code of an exactly rounded operation on eight lanes: "sqrt" (llvm.sqrt on <8 x double>) or "recip" (1/x by
+    ``fdiv``); LLVM splits the vector to the target's register width."""
+
+    def codegen(context, builder, sig, args):
+        src, i0, dst, j0 = args
+        a = context.make_array(sig.args[0])(context, builder, src)
+        b = context.make_array(sig.args[2])(context, builder, dst)
+        vt = ir.VectorType(ir.DoubleType(), LANES)
+        v = builder.load(builder.bitcast(builder.gep(a.data, [i0]), vt.as_pointer()), align=8)
+        if op == "sqrt":
+            fn = cgutils.get_or_insert_function(builder.module, ir.FunctionType(vt, [vt]), f"llvm.sqrt.v{LANES}f64")
+            r = builder.call(fn, [v])
+        else:
+            r = builder.fdiv(ir.Constant(vt, [1.0] * LANES), v)
+        builder.store(r, builder.bitcast(builder.gep(b.data, [j0]), vt.as_pointer()), align=8)
+        return context.get_dummy_value()
+
+    return codegen
+
+
+@intrinsic
+def vsqrt(typingctx, src, i0, dst, j0):
+    """dst[j0:j0 + 8] ← √src[i0:i0 + 8], each lane exactly ``math.sqrt`` (module docstring)."""
+    return types.void(src, types.intp, dst, types.intp), _lanes_ieee("sqrt")
+
+
+@intrinsic
+def vrecip(typingctx, src, i0, dst, j0):
+    """dst[j0:j0 + 8] ← 1/src[i0:i0 + 8], each lane exactly ``1.0 / x`` (module docstring)."""
+    return types.void(src, types.intp, dst, types.intp), _lanes_ieee("recip")
