@@ -699,17 +699,13 @@ def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln
         if tl < fl:
             tl = fl
         lw[LTL + i] = tl
-    vrecip(lw, LTL, lw, LDEN)  # 1/τ_L (LDEN is free until the heat balance)
     for i in range(LANES):
-        z = tau0 * lw[LDEN + i] * _asinh_l2x_e(lw[LL2X + i], lw[LB + i])
+        z = tau0 / lw[LTL + i] * _asinh_l2x_e(lw[LL2X + i], lw[LB + i])
         lw[LTAU + i] = z  # tanh's argument, then τ below
         lw[LA + i] = 2.0 * min(z, 20.0)
     vexp(lw, LA, lw, LB)
     for i in range(LANES):
-        lw[LA + i] = lw[LB + i] + 1.0
-    vrecip(lw, LA, lw, LA)
-    for i in range(LANES):
-        lw[LTAU + i] = lw[LTL + i] * _tanh_pos_e(lw[LTAU + i], lw[LB + i], lw[LA + i])
+        lw[LTAU + i] = lw[LTL + i] * _tanh_pos_e(lw[LTAU + i], lw[LB + i])
     if theta > 0.0:
         # the heat balance's secant step (_heated_stress), its two exponentials on the lanes
         for i in range(LANES):
@@ -728,7 +724,6 @@ def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln
         vexp(lw, LA, lw, LB)
         for i in range(LANES):
             lw[LTAU + i] = _heated_finish(lw[LTAU + i], lw[LDEN + i], lw[LNUM + i], lw[LZ1 + i], lw[LB + i])
-    vrecip(lw, LP, lw, LA)  # 1/p̄
     for i in range(LANES):
         tau = lw[LTAU + i]
         if visco and lw[LU + i] > 0.0:
@@ -736,7 +731,7 @@ def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln
             g = gf_c * lw[LTL + i]
             tau = elastic_plastic_mean_stress(tau, g * lw[LCHORD + i] * inv_hc * lw[LSR + i] / (1.0 + g * sol_c))
         mu = lw[LMU + i]
-        lw[LMU + i] = mu + (tau * lw[LA + i] - mu) * wfl
+        lw[LMU + i] = mu + (tau / lw[LP + i] - mu) * wfl
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def film_constants(alpha, e_eff, rx, ry):
@@ -825,18 +820,17 @@ _LN_200 = math.log(200.0)
 def _tanh_pos(z):
     """tanh z for z ≥ 0 [-]: (e^(2z) − 1)/(e^(2z) + 1) for 1e-3 ≤ z ≤ 20 (e^(2z) − 1 ≥ 2e-3, so at
     most ~500 ulp lost, ~1e-13 relative), exactly 1 above 20 (tanh 20 = 1 − 8e-18), math.tanh below."""
-    e = math.exp(2.0 * z) if 1e-3 <= z <= 20.0 else 0.0
-    return _tanh_pos_e(z, e, 1.0 / (e + 1.0))
+    return _tanh_pos_e(z, math.exp(2.0 * z) if 1e-3 <= z <= 20.0 else 0.0)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
-def _tanh_pos_e(z, e, r):
-    """:func:`_tanh_pos` with e = e^(2z) and r = 1/(e + 1) given ((e − 1) r; used only where 1e-3 ≤ z ≤ 20; the
-    strip lanes take e from :func:`.vecmath.vexp` and r from :func:`.vecmath.vrecip`)."""
+def _tanh_pos_e(z, e):
+    """:func:`_tanh_pos` with e = e^(2z) given (used only where 1e-3 ≤ z ≤ 20; the strip lanes take it from
+    :func:`.vecmath.vexp`)."""
     if z > 20.0:
         return 1.0
     if z >= 1e-3:
-        return (e - 1.0) * r
+        return (e - 1.0) / (e + 1.0)
     return math.tanh(z)
 
 
