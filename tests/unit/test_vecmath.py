@@ -26,12 +26,17 @@ from bearingsim.contact import vecmath as V
 
 @njit(cache=False)
 def _apply(x, kind):
+    """kind 0: vexp, 1: vlog, 2: vsqrt, 3: vrecip, eight lanes at a time over x."""
     y = np.empty_like(x)
     for c in range(0, x.shape[0], V.LANES):
         if kind == 0:
             V.vexp(x, c, y, c)
-        else:
+        elif kind == 1:
             V.vlog(x, c, y, c)
+        elif kind == 2:
+            V.vsqrt(x, c, y, c)
+        else:
+            V.vrecip(x, c, y, c)
     return y
 
 
@@ -100,16 +105,20 @@ def test_scalar_fallback_is_the_scalar_functions_bit_for_bit():
         "assert all(y[i] == math.exp(x0[i]) for i in range(8)), y\n"
         "assert all(z[i] == math.log(y[i]) for i in range(8)), z\n"
         "print('ok')\n")
+    _run_on_a_generic_cpu(code, runs=2)  # twice: compiled, then loaded from the cache
+
+
+def _run_on_a_generic_cpu(code: str, runs: int = 1) -> None:
+    """Run ``code`` in a child process compiling for NUMBA_CPU_NAME=generic with a cache of its own, ``runs`` times;
+    each run must print "ok"."""
     with tempfile.TemporaryDirectory() as d:
-        script = os.path.join(d, "fallback.py")
+        script = os.path.join(d, "child.py")
         with open(script, "w") as fh:
             fh.write(code)
         env = dict(os.environ, NUMBA_CPU_NAME="generic", NUMBA_CACHE_DIR=os.path.join(d, "cache"))
-        # twice: compiled, then loaded from the cache
-        r = subprocess.run([sys.executable, script], env=env, capture_output=True, text=True, timeout=300)
-        assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]
-        r = subprocess.run([sys.executable, script], env=env, capture_output=True, text=True, timeout=300)
-    assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]
+        for _ in range(runs):
+            r = subprocess.run([sys.executable, script], env=env, capture_output=True, text=True, timeout=300)
+            assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]
 
 
 def test_this_machine_uses_the_vector_library_when_it_can():
@@ -128,15 +137,9 @@ def test_this_machine_uses_the_vector_library_when_it_can():
         assert V.MODE == ("avx512" if feats.get("avx512f") else "avx2")
 
 
-@njit(cache=False)
 def _ieee(x, kind):
-    y = np.empty_like(x)
-    for c in range(0, x.shape[0], V.LANES):
-        if kind == 0:
-            V.vsqrt(x, c, y, c)
-        else:
-            V.vrecip(x, c, y, c)
-    return y
+    """kind 0: vsqrt, 1: vrecip."""
+    return _apply(x, 2 + kind)
 
 
 def _same_bits(got, ref):
@@ -191,10 +194,4 @@ def test_vsqrt_and_vrecip_on_a_generic_cpu_bit_for_bit():
         "f(x, y, z)\n"
         "assert all(y[i] == math.sqrt(x[i]) and z[i] == 1.0 / x[i] for i in range(8)), (y, z)\n"
         "print('ok')\n")
-    with tempfile.TemporaryDirectory() as d:
-        script = os.path.join(d, "ieee.py")
-        with open(script, "w") as fh:
-            fh.write(code)
-        env = dict(os.environ, NUMBA_CPU_NAME="generic", NUMBA_CACHE_DIR=os.path.join(d, "cache"))
-        r = subprocess.run([sys.executable, script], env=env, capture_output=True, text=True, timeout=300)
-    assert r.returncode == 0 and r.stdout.strip() == "ok", r.stderr[-2000:]
+    _run_on_a_generic_cpu(code)

@@ -69,15 +69,19 @@ def _choose_mode() -> str:
 MODE = _choose_mode()
 
 
+def _lane_pointers(context, builder, sig, args):
+    """Pointers to src[i0] and dst[j0] of an intrinsic called as (src, i0, dst, j0)."""
+    src, i0, dst, j0 = args
+    a = context.make_array(sig.args[0])(context, builder, src)
+    b = context.make_array(sig.args[2])(context, builder, dst)
+    return builder.gep(a.data, [i0]), builder.gep(b.data, [j0])
+
+
 def _lanes_codegen(fname: str):
     """The intrinsic's code: load eight doubles, apply ``fname`` ("exp" or "log"), store eight."""
 
     def codegen(context, builder, sig, args):
-        src, i0, dst, j0 = args
-        a = context.make_array(sig.args[0])(context, builder, src)
-        b = context.make_array(sig.args[2])(context, builder, dst)
-        pa = builder.gep(a.data, [i0])
-        pb = builder.gep(b.data, [j0])
+        pa, pb = _lane_pointers(context, builder, sig, args)
         dbl = ir.DoubleType()
         if MODE == "scalar":
             fn = builder.module.declare_intrinsic("llvm." + fname, [dbl])
@@ -109,23 +113,20 @@ def vlog(typingctx, src, i0, dst, j0):
     return types.void(src, types.intp, dst, types.intp), _lanes_codegen("log")
 
 
-
 def _lanes_ieee(op: str):
     """Code of an exactly rounded operation on eight lanes: "sqrt" (llvm.sqrt on <8 x double>) or "recip" (1/x by
     ``fdiv``); LLVM splits the vector to the target's register width."""
 
     def codegen(context, builder, sig, args):
-        src, i0, dst, j0 = args
-        a = context.make_array(sig.args[0])(context, builder, src)
-        b = context.make_array(sig.args[2])(context, builder, dst)
+        pa, pb = _lane_pointers(context, builder, sig, args)
         vt = ir.VectorType(ir.DoubleType(), LANES)
-        v = builder.load(builder.bitcast(builder.gep(a.data, [i0]), vt.as_pointer()), align=8)
+        v = builder.load(builder.bitcast(pa, vt.as_pointer()), align=8)
         if op == "sqrt":
             fn = cgutils.get_or_insert_function(builder.module, ir.FunctionType(vt, [vt]), f"llvm.sqrt.v{LANES}f64")
             r = builder.call(fn, [v])
         else:
             r = builder.fdiv(ir.Constant(vt, [1.0] * LANES), v)
-        builder.store(r, builder.bitcast(builder.gep(b.data, [j0]), vt.as_pointer()), align=8)
+        builder.store(r, builder.bitcast(pb, vt.as_pointer()), align=8)
         return context.get_dummy_value()
 
     return codegen
