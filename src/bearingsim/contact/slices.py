@@ -477,8 +477,7 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     film = need_f and fluid_kind != 0 and hc > 0.0  # the physical film law on the strips
     for c0 in range(0, n_slices, LANES):
         nl = min(LANES, n_slices - c0)
-        # ---- (A) the strips' loads, points and velocities; the square roots and divisions of all eight lanes in
-        # packed instructions (vsqrt, vrecip: exactly the scalar ones, 8 % of a hub step waited on them one by one)
+        # ---- (A) the strips' loads and points, then their velocities (_lane_kinematics)
         for i in range(LANES):
             s = c0 + i
             j = s if s < n_half else n_slices - 1 - s
@@ -508,41 +507,8 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
             lw[LQ + i] = qj
             lw[LFRAC + i] = frac
             lw[LX + i] = x
-            cx = curv * x
-            lw[LA + i] = max(0.0, 1.0 - cx * cx)  # slice_point_offset's root², then 1 + root
-        vsqrt(lw, LA, lw, LB)  # slice_point_offset's root √(1 − c²x²)
-        for i in range(LANES):
-            lw[LA + i] = 1.0 + lw[LB + i]
-        vrecip(lw, LA, lw, LA)
-        for i in range(LANES):
-            x = lw[LX + i]
-            root = lw[LB + i]
-            off = curv * x * x * lw[LA + i]  # slice_point_offset: c x²/(1 + √(1 − c²x²))
-            sx, sy, sz, ex, ey, ez, njx, njy, njz = _slice_velocities(
-                x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz, asx, asy,
-                asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
-            lw[LOFF + i] = off
-            lw[LSX + i] = sx
-            lw[LSY + i] = sy
-            lw[LSZ + i] = sz
-            lw[LEX + i] = ex
-            lw[LEY + i] = ey
-            lw[LEZ + i] = ez
-            lw[LNX + i] = njx
-            lw[LNY + i] = njy
-            lw[LNZ + i] = njz
-            lw[LA + i] = sx * sx + sy * sy + sz * sz
-            lw[LB + i] = ex * ex + ey * ey + ez * ez
-        vsqrt(lw, LA, lw, LSM)
-        vsqrt(lw, LB, lw, LU)
-        vrecip(lw, LSM, lw, LIS)  # 1/|s| (the traction's direction)
-        vrecip(lw, LU, lw, LIU)  # 1/u (slide–roll ratio, the rolling direction)
-        for i in range(LANES):
-            if lw[LQ + i] > 0.0:
-                uj = lw[LU + i]
-                lw[LSR + i] = lw[LSM + i] * lw[LIU + i] if uj > 0.0 else 1e300  # (as _point_lane)
-            else:
-                _empty_lane(lw, i)
+        _lane_kinematics(lw, curv, nx, ny, nz, mx, my, mz, s0x, s0y, s0z, bsx, bsy, bsz, asx, asy, asz, e0x, e0y, e0z,
+                         bex, bey, bez, aex, aey, aez)
         # ---- (B) traction coefficients (seed eq. 2) on the eight lanes
         _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0)
         # ---- (C) each loaded strip's traction and rolling resistance (1/|d_b| of the eight points in LA)
@@ -582,6 +548,54 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                                   dbz, drx, dry, drz, lw[LNX + i], lw[LNY + i], lw[LNZ + i], two_rx, lw[LA + i])
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def _lane_kinematics(lw, curv, nx, ny, nz, mx, my, mz, s0x, s0y, s0z, bsx, bsy, bsz, asx, asy, asz, e0x, e0y, e0z,
+                     bex, bey, bez, aex, aey, aez):
+    """The eight lanes' points and velocities from their positions x = lw[LX + i] [m] along the major axis (lanes
+    with load lw[LQ + i] = 0 are emptied, :func:`_empty_lane`): the offset from the tangent plane (the formula of
+    :func:`slice_point_offset`), sliding and entraining velocities and the local normal (:func:`_slice_velocities`;
+    centre values s0, e0 [m/s] and their rates along the normal (bs, be) and the major axis (as, ae) [1/s]), |s|, u,
+    1/|s|, 1/u and the slide–roll ratio.  Square roots and reciprocals are taken for all eight lanes in packed
+    instructions (:func:`.vecmath.vsqrt`, :func:`.vecmath.vrecip`: exactly the scalar ones): one by one they held
+    8 % of a hub step (docs/dynamics.md, eleventh pass)."""
+    for i in range(LANES):
+        cx = curv * lw[LX + i]
+        lw[LA + i] = max(0.0, 1.0 - cx * cx)
+    vsqrt(lw, LA, lw, LB)  # slice_point_offset's root √(1 − c²x²)
+    for i in range(LANES):
+        lw[LA + i] = 1.0 + lw[LB + i]
+    vrecip(lw, LA, lw, LA)
+    for i in range(LANES):
+        x = lw[LX + i]
+        root = lw[LB + i]
+        off = curv * x * x * lw[LA + i]  # slice_point_offset: c x²/(1 + √(1 − c²x²))
+        sx, sy, sz, ex, ey, ez, njx, njy, njz = _slice_velocities(
+            x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz, asx, asy,
+            asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
+        lw[LOFF + i] = off
+        lw[LSX + i] = sx
+        lw[LSY + i] = sy
+        lw[LSZ + i] = sz
+        lw[LEX + i] = ex
+        lw[LEY + i] = ey
+        lw[LEZ + i] = ez
+        lw[LNX + i] = njx
+        lw[LNY + i] = njy
+        lw[LNZ + i] = njz
+        lw[LA + i] = sx * sx + sy * sy + sz * sz
+        lw[LB + i] = ex * ex + ey * ey + ez * ez
+    vsqrt(lw, LA, lw, LSM)
+    vsqrt(lw, LB, lw, LU)
+    vrecip(lw, LSM, lw, LIS)  # 1/|s| (the traction's direction)
+    vrecip(lw, LU, lw, LIU)  # 1/u (slide–roll ratio, the rolling direction)
+    for i in range(LANES):
+        if lw[LQ + i] > 0.0:
+            uj = lw[LU + i]
+            lw[LSR + i] = lw[LSM + i] * lw[LIU + i] if uj > 0.0 else 1e300  # (1e300 without rolling)
+        else:
+            _empty_lane(lw, i)
+
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _empty_lane(lw, i):
     """Lane i carries no load (past the last strip or node, or none there): values that keep :func:`_film_lanes`'
     functions finite; its result is not used."""
@@ -591,24 +605,6 @@ def _empty_lane(lw, i):
     lw[LU + i] = 1.0
     lw[LSR + i] = 1.0
     lw[LCHORD + i] = 0.0
-
-
-@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
-def _point_lane(lw, i, qj, x, off, sx, sy, sz, smag, uj, pbar, chord):
-    """Lane i ← a loaded strip or node: its load qj [N], its point x along the major axis and off along the normal
-    [m], sliding velocity (sx, sy, sz) of magnitude smag and entraining speed uj [m/s], mean pressure pbar [Pa] and
-    chord [m]; the slide–roll ratio (1e300 without rolling)."""
-    lw[LQ + i] = qj
-    lw[LX + i] = x
-    lw[LOFF + i] = off
-    lw[LSX + i] = sx
-    lw[LSY + i] = sy
-    lw[LSZ + i] = sz
-    lw[LSM + i] = smag
-    lw[LU + i] = uj
-    lw[LSR + i] = smag * (1.0 / uj) if uj > 0.0 else 1e300
-    lw[LP + i] = pbar
-    lw[LCHORD + i] = chord
 
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
@@ -1116,18 +1112,21 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
             if i < nl:
                 xi, wgt = _gauss_node(c0 + i, ng, nroot, z1, z2)
                 om = 1.0 - xi * xi
-            if not om > 0.0:
-                _empty_lane(lw, i)
-                continue
-            sq = math.sqrt(om)
-            x = a * xi
-            off, root = slice_point_offset(x, curv)
-            (sx, sy, sz, smag, ex, ey, ez, uj, njx, njy, njz) = _slice_kinematics(
-                x, root, curv, nx, ny, nz, mx, my, mz, s0x + off * bsx, s0y + off * bsy, s0z + off * bsz,
-                asx, asy, asz, e0x + off * bex, e0y + off * bey, e0z + off * bez, aex, aey, aez)
-            # the node's load per unit ξ times its weight, mean pressure across its chord 2b√(1 − ξ²)
-            _point_lane(lw, i, 0.75 * q * om * wgt, x, off, sx, sy, sz, smag, uj, p_c * sq, 2.0 * b * sq)
-        vrecip(lw, LSM, lw, LIS)
+            qn = 0.0
+            if om > 0.0:
+                qn = 0.75 * q * om * wgt  # the node's load per unit ξ times its weight
+            else:
+                xi = om = 0.0
+            lw[LQ + i] = qn
+            lw[LX + i] = a * xi
+            lw[LA + i] = om
+        vsqrt(lw, LA, lw, LB)  # √(1 − ξ²)
+        for i in range(LANES):
+            # mean pressure across the node's chord 2b√(1 − ξ²)
+            lw[LP + i] = p_c * lw[LB + i]
+            lw[LCHORD + i] = 2.0 * b * lw[LB + i]
+        _lane_kinematics(lw, curv, nx, ny, nz, mx, my, mz, s0x, s0y, s0z, bsx, bsy, bsz, asx, asy, asz, e0x, e0y, e0z,
+                         bex, bey, bez, aex, aey, aez)
         _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln_eta0)
         for i in range(nl):
             if lw[LQ + i] > 0.0:
