@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from bearingsim.contact import slices
 from bearingsim.dynamics import contacts as ct
@@ -59,3 +61,40 @@ def test_race_contact_carries_no_tension():
     assert res[0] == 0.0 and np.all(fb == 0.0)
     _, _, _, _, fb, _, _, _, res = _contact(1e-6, -20.0, 0.1)  # separating fast: 1 + 3/2 α δ̇ < 0
     assert res[0] == 0.0 and np.all(fb == 0.0)
+
+
+def _decimal_cbrt(x) -> float:
+    """x^(1/3) to 40 digits (decimal arithmetic), then rounded to a float: the reference of the tests below."""
+    from decimal import Decimal, localcontext
+
+    with localcontext() as ctx:
+        ctx.prec = 40
+        return float(Decimal(x) ** (Decimal(1) / Decimal(3)))
+
+
+@settings(max_examples=300, deadline=None)
+@given(d=st.one_of(st.floats(-1e-3, 1e-3), st.floats(-0.999, 50.0)))
+def test_cube_root_of_the_damping_factor_is_correct_to_rounding(d):
+    """contacts._cbrt_1p(d) = (1 + d)^(1/3) (binomial series, Abramowitz & Stegun 3.6.8, where |d| ≤ 1e-3; the cube
+    root elsewhere) within 2 ulp of the decimal reference — the series is truncated below rounding."""
+    from decimal import Decimal
+
+    want = _decimal_cbrt(Decimal(1) + Decimal(d))
+    got = ct._cbrt_1p(d)
+    assert abs(got - want) <= 2 * np.spacing(want), (d, got, want)
+
+
+@settings(max_examples=200, deadline=None)
+@given(delta=st.floats(1e-9, 5e-5), ddot=st.floats(-1.0, 1.0), kc=st.floats(1e9, 5e10))
+def test_contact_load_cube_root_without_pow(delta, ddot, kc):
+    """Q^(1/3) as race_contact_at forms it, K^(1/3) δ^(1/2) (1 + 1.5 α δ̇)^(1/3) with K^(1/3) from Model.rowx, equals
+    the cube root of the Hertz–Hunt–Crossley load Q = K δ^1.5 (1 + 1.5 α δ̇) (Hunt & Crossley 1975) to a few ulp
+    (the ellipse's semi-axes are a = a_c Q^(1/3): they must not depend on how the root is taken)."""
+    from decimal import Decimal
+
+    alpha = 0.05
+    damp = 1.5 * alpha * ddot
+    q = Decimal(kc) * Decimal(delta) ** Decimal("1.5") * (Decimal(1) + Decimal(damp))
+    want = _decimal_cbrt(q)
+    got = float(np.cbrt(kc)) * math.sqrt(delta) * ct._cbrt_1p(damp)
+    assert abs(got - want) <= 6 * np.spacing(want), (got, want)

@@ -3,6 +3,7 @@
 import ast
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from bearingsim.dynamics import forces as fo
@@ -73,6 +74,10 @@ def test_state_offsets_follow_the_layout():
     assert m.n_state == ly.cage_offset(m.n_balls, m.n_cages) + 2 * 4
     assert m.mode_slices(0)[0].start == int(m.cp[0, ly.C_MODE0]) == ly.cage_offset(m.n_balls, m.n_cages)
     assert m.rowx.shape[1] == ly.NROWX and m.gp.shape == (ly.NGP,) and m.cp.shape[1] == ly.NCP
+    from bearingsim.statics import layout as kn
+
+    np.testing.assert_allclose(m.rowx[:, ly.X_KCI] ** 3, m.rows[:, kn.P_KI], rtol=1e-14)  # K^(1/3) of each row
+    np.testing.assert_allclose(m.rowx[:, ly.X_KCO] ** 3, m.rows[:, kn.P_KO], rtol=1e-14)
     assert (md.N_RING, md.C_MASS, md.DOF, fo.D_QC, fo.GD_ECAGE) == (ly.N_RING, ly.C_MASS, ly.DOF, ly.D_QC, ly.GD_ECAGE)
     assert md.describe_component(m, ly.R_QD + 4) == "inner ring gamma_z rate"
     with pytest.raises(AttributeError):

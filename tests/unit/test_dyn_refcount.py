@@ -49,7 +49,7 @@ def _ir_of_fresh_copy(nrt: bool) -> str:
     gp = np.zeros(ly.NGP)
     tbuf = np.zeros(60)
     fresh(0.0, 30e-3, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 30e-3 - 0.2e-3 - 1e-6, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-          0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 8e9, 0.2e-3, 6e-3, 0.0, lub, gp, 1e-4, 1e-5, 10e-3, 1.0, 0.0,
+          0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 8e9, np.cbrt(8e9), 0.2e-3, 6e-3, 0.0, lub, gp, 1e-4, 1e-5, 10e-3, 1.0, 0.0,
           0.0, tbuf)
     (ir,) = fresh.inspect_llvm().values()
     # the function itself, not its Python and C wrappers
@@ -102,8 +102,8 @@ def test_array_and_component_forms_of_the_contact_agree_bit_for_bit(seed, mode, 
                     tang, fb, mb, fr, mr, res, tbuf)
     tb2 = np.zeros_like(tbuf)
     ct.slice_table(8, tb2[44:])
-    out = ct.race_contact_at(*b, *v, *w, *g, *vg, worb, *rcen, *vrace, *wrace, kc, rgroove, half_d, alpha, lub, gp,
-                             a_c, b_c, r_dev, *tang, tb2)
+    out = ct.race_contact_at(*b, *v, *w, *g, *vg, worb, *rcen, *vrace, *wrace, kc, np.cbrt(kc), rgroove, half_d,
+                             alpha, lub, gp, a_c, b_c, r_dev, *tang, tb2)
     got = np.array(out)
     want = np.concatenate([res[:7], fb, mb, fr, mr])
     np.testing.assert_array_equal(got, want)

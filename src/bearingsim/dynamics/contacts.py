@@ -165,8 +165,8 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
     """
     (q, delta, u0, u1, u2, srr, power, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry, mrz) = race_contact_at(
         b[0], b[1], b[2], v[0], v[1], v[2], w[0], w[1], w[2], g[0], g[1], g[2], vg_lin[0], vg_lin[1], vg_lin[2], worb,
-        rcen[0], rcen[1], rcen[2], vrace[0], vrace[1], vrace[2], wrace[0], wrace[1], wrace[2], kc, rgroove, half_d,
-        alpha, lub, gp, a_c, b_c, r_dev, tang[0], tang[1], tang[2], tbuf)
+        rcen[0], rcen[1], rcen[2], vrace[0], vrace[1], vrace[2], wrace[0], wrace[1], wrace[2], kc, np.cbrt(kc), rgroove,
+        half_d, alpha, lub, gp, a_c, b_c, r_dev, tang[0], tang[1], tang[2], tbuf)
     res[0] = q
     res[1] = delta
     res[2] = u0
@@ -188,17 +188,30 @@ def race_contact(b, v, w, g, vg_lin, worb, rcen, vrace, wrace, kc, rgroove, half
     mr[2] += mrz
 
 
+@njit(cache=True, error_model="numpy")
+def _cbrt_1p(d):
+    """(1 + d)^(1/3) [-] for d > −1: the binomial series 1 + d/3 − d²/9 + 5d³/81 − 10d⁴/243 (Abramowitz & Stegun
+    3.6.8) where |d| ≤ 1e-3 (the next term, 22d⁵/729, is below 3.1e-17: the series is the cube root to rounding),
+    else the cube root itself.  For the Hertz load's Hunt–Crossley factor 1 + 1.5 α δ̇ (small but for impacts), so
+    that Q^(1/3) = K^(1/3) δ^(1/2) (1 + 1.5 α δ̇)^(1/3) needs no pow per contact (pow was 2.7 % of a hub step)."""
+    if abs(d) <= 1e-3:
+        return 1.0 + d * (1.0 / 3.0 + d * (-1.0 / 9.0 + d * (5.0 / 81.0 - d * (10.0 / 243.0))))
+    return np.cbrt(1.0 + d)
+
+
 @njit(cache=True, _nrt=False)
 def race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, gx, gy, gz, vgx, vgy, vgz, worb, rcx, rcy, rcz, vrx0, vry0,
-                    vrz0, wrx0, wry0, wrz0, kc, rgroove, half_d, alpha, lub, gp, a_c, b_c, r_dev, tx, ty, tz, tbuf):
+                    vrz0, wrx0, wry0, wrz0, kc, kc13, rgroove, half_d, alpha, lub, gp, a_c, b_c, r_dev, tx, ty, tz,
+                    tbuf):
     """:func:`race_contact` on the vectors' components, returning (Q [N], δ [m], u (3), slide-roll ratio at the
     centre, power loss [W], force on the ball (3) [N], moment on the ball (3) [N·m], force on the ring (3) [N],
-    moment on the ring about rcen (3) [N·m]).  The engine calls this form: numba increments and decrements an
-    atomic reference count for every array argument of a function it does not inline and for every array view,
-    and the array form's 17 arguments and 12 views per contact cost ≈ 12 % of the hub right-hand side (issue 14;
-    compiled without counting, ``_nrt=False``, as it allocates nothing); here only ``lub``,
-    ``gp`` and ``tbuf`` (the traction's work array: tbuf[0:10] its out, the Coulomb stand-in's vectors at 10:31
-    and its slice table at 44:) are arrays."""
+    moment on the ring about rcen (3) [N·m]).  kc13 = kc^(1/3) [N^(1/3)/m^(1/2)] (``Model.rowx``: the ellipse's
+    size a = a_c Q^(1/3) from K^(1/3) δ^(1/2) without a pow, :func:`_cbrt_1p`).  The engine calls this form:
+    numba increments and decrements an atomic reference count for every array argument of a function it does not
+    inline and for every array view, and the array form's 17 arguments and 12 views per contact cost ≈ 12 % of the
+    hub right-hand side (issue 14; compiled without counting, ``_nrt=False``, as it allocates nothing); here only
+    ``lub``, ``gp`` and ``tbuf`` (the traction's work array: tbuf[0:10] its out, the Coulomb stand-in's vectors at
+    10:31 and its slice table at 44:) are arrays."""
     d0 = bx - gx
     d1 = by - gy
     d2 = bz - gz
@@ -211,7 +224,9 @@ def race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, gx, gy, gz, vgx, vgy, vg
     u1 = d1 / ll
     u2 = d2 / ll
     ddot = u0 * (vx - vgx) + u1 * (vy - vgy) + u2 * (vz - vgz)
-    q = kc * delta * math.sqrt(delta) * (1.0 + 1.5 * alpha * ddot)
+    sqrt_delta = math.sqrt(delta)
+    damp = 1.5 * alpha * ddot
+    q = kc * delta * sqrt_delta * (1.0 + damp)
     if q <= 0.0:
         return 0.0, delta, u0, u1, u2, 0.0, 0.0, z, z, z, z, z, z, z, z, z, z, z, z
     fbx = 0.0
@@ -284,7 +299,7 @@ def race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, gx, gy, gz, vgx, vgy, vg
     mbz = 0.0
     if mode == 0:
         return q, delta, u0, u1, u2, srr, 0.0, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry, mrz
-    q13 = q ** (1.0 / 3.0)
+    q13 = kc13 * sqrt_delta * _cbrt_1p(damp)  # Q^(1/3) without a pow (issue 14)
     # both traction models take the normal from the race towards the ball; tbuf[0:10] ← their out
     if mode == 1:
         vec = tbuf[10:44]

@@ -192,7 +192,8 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
     (qi, di, ux, uy, uz, srr, pw, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry,
      mrz) = race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, g[0], g[1], g[2], vg[0], vg[1], vg[2], worb,
                             c[0], c[1], c[2], cd[0], cd[1], cd[2], wring[0], wring[1], wring[2],
-                            rows[r, kn.P_KI], rows[r, kn.P_RI], half_d, alpha, lubs[2 * r], gp,
+                            rows[r, kn.P_KI], rowx[r, ly.X_KCI], rows[r, kn.P_RI], half_d, alpha,
+                            lubs[2 * r], gp,
                             rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang[0], tang[1],
                             tang[2], tbuf)
     fb[0] = fbx
@@ -231,7 +232,8 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
         (qo, do_, ux, uy, uz, srr, pw, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry,
          mrz) = race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, rowx[r, ly.X_XGO], rgo * cps, rgo * sps,
                                 0.0, 0.0, 0.0, worb, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-                                rows[r, kn.P_KO], rows[r, kn.P_RO], half_d, alpha, lubs[2 * r + 1], gp,
+                                rows[r, kn.P_KO], rowx[r, ly.X_KCO], rows[r, kn.P_RO], half_d, alpha,
+                                lubs[2 * r + 1], gp,
                                 rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], 0.0, -sps, cps,
                                 tbuf)
         fbo[0] = fbx
@@ -296,8 +298,20 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
 def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work,
                     contrib):
     """:func:`_one_ball` for every ball in a numba ``prange`` (threads: ``numba.set_num_threads``), each with
-    its own work row; contrib[k] ← its reactions and diagnostics (layout of :func:`balls_on_raceways`)."""
-    for k in prange(ball_row.shape[0]):
+    its own work row; contrib[k] ← its reactions and diagnostics (layout of :func:`balls_on_raceways`).
+
+    The balls are dealt to the threads, not handed out in contiguous blocks: iteration i of the loop takes ball 2i
+    while 2i < the ball count, then the odd balls, so that on 2 threads (numba's static schedule hands each thread a
+    contiguous block of iterations) one thread takes the even balls and the other the odd ones.  The balls are
+    numbered row by row and along each row, so a contiguous block was a row, and under a moment load one row
+    carries its load zone while the other is half unloaded (an unloaded contact returns at once): hub (b), 2
+    threads, right-hand side at three states 23.0–25.0 → 21.6–22.5 µs (issue 14, docs/dynamics.md twelfth pass;
+    the van der Corput order, which would spread the balls for any power-of-two thread count, measured 0.5 µs
+    slower on 2).  Which thread computes a ball does not change its numbers."""
+    nb = ball_row.shape[0]
+    half = (nb + 1) // 2
+    for i in prange(nb):
+        k = 2 * i if i < half else 2 * (i - half) + 1
         _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work[k],
                   contrib[k])
 
@@ -400,7 +414,8 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
             (qi, di, ux, uy, uz, srr, pw, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry,
              mrz) = race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, g[0], g[1], g[2], vg[0], vg[1], vg[2], worb,
                                     c[0], c[1], c[2], cd[0], cd[1], cd[2], wring[0], wring[1], wring[2],
-                                    rows[r, kn.P_KI], rows[r, kn.P_RI], half_d, alpha, lubs[2 * r], gp,
+                                    rows[r, kn.P_KI], rowx[r, ly.X_KCI], rows[r, kn.P_RI], half_d, alpha,
+                                    lubs[2 * r], gp,
                                     rowx[r, ly.X_CAI], rowx[r, ly.X_CBI], rowx[r, ly.X_RDI], tang[0], tang[1],
                                     tang[2], tbuf)
             fb[0] = fbx
@@ -439,7 +454,8 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
                 (qo, do_, ux, uy, uz, srr, pw, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry,
                  mrz) = race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, rowx[r, ly.X_XGO], rgo * cps, rgo * sps,
                                         0.0, 0.0, 0.0, worb, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0,
-                                        rows[r, kn.P_KO], rows[r, kn.P_RO], half_d, alpha, lubs[2 * r + 1], gp,
+                                        rows[r, kn.P_KO], rowx[r, ly.X_KCO], rows[r, kn.P_RO], half_d, alpha,
+                                        lubs[2 * r + 1], gp,
                                         rowx[r, ly.X_CAO], rowx[r, ly.X_CBO], rowx[r, ly.X_RDO], 0.0, -sps, cps,
                                         tbuf)
                 fbo[0] = fbx

@@ -144,6 +144,8 @@ def row_extras(bearing, rows: np.ndarray) -> np.ndarray:
         rxi, ryi = b.raceway_radii(True)
         rxo, ryo = b.raceway_radii(False)
         rx[r, ly.X_RXI], rx[r, ly.X_RYI], rx[r, ly.X_RXO], rx[r, ly.X_RYO] = rxi, ryi, rxo, ryo
+        rx[r, ly.X_KCI] = np.cbrt(par[kn.P_KI])
+        rx[r, ly.X_KCO] = np.cbrt(par[kn.P_KO])
     return rx
 
 

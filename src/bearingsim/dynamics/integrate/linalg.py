@@ -178,21 +178,23 @@ def _coupled_w_ball(b, jac, jbr, jrb, c, winv, wm, q, sb):
     block_w_inverse(jac[b], c, wm, winv[b])
     # J_br's rows 0–2 (ṙ = v of the ball) and J_rb's rows 0–4 (the ring's q̇ = q̇) are zero by construction
     # (jacobian.ring_jac, jacobian.ring_rows): their terms are skipped (they added exact zeros: the same numbers)
+    # the sums over k run outermost and the rows' ten columns j innermost (contiguous, so the compiler packs them):
+    # each element still adds its terms in ascending k from 0.0, the same numbers as a dot product per element
     for i in range(NB):
         for j in range(NR):
-            acc = 0.0
-            for k in range(3, NB):
-                acc += winv[b, i, k] * c * jbr[b, k, j]
-            q[b, i, j] = acc
+            q[b, i, j] = 0.0
+        for k in range(3, NB):
+            wc = winv[b, i, k] * c
+            for j in range(NR):
+                q[b, i, j] += wc * jbr[b, k, j]
     for i in range(NR):
         for j in range(NR):
             sb[i, j] = 0.0
     for i in range(NR // 2, NR):
-        for j in range(NR):
-            acc = 0.0
-            for k in range(NB):
-                acc += c * jrb[b, i, k] * q[b, k, j]
-            sb[i, j] = acc
+        for k in range(NB):
+            cj = c * jrb[b, i, k]
+            for j in range(NR):
+                sb[i, j] += cj * q[b, k, j]
 
 
 @njit(cache=True, _nrt=False)
