@@ -267,12 +267,14 @@ def test_rolling_resistance_force_system_balances():
 
 def test_fast_tanh_and_asinh_forms_match_libm():
     """The kernel's tanh (via exp) and asinh from ln 2x alone (ln 2x for x ≥ 1e6, where the dropped 1/(4x²) is
-    ≤ 1.8e-14 of the value; the series in 1/x² for 100 ≤ x < 1e6; asinh(e^(ln 2x − ln 2)) below) agree with
-    math.tanh/asinh, on both sides of both switches."""
+    ≤ 1.8e-14 of the value; eight terms of the series in 1/x² for 10 ≤ x < 1e6; asinh(e^(ln 2x − ln 2)) below) agree
+    with math.tanh/asinh, on both sides of both switches; the series' coefficients are C(2n, n)/(4ⁿ 2n)
+    (Abramowitz & Stegun 4.6.31)."""
     for z in np.geomspace(1e-9, 60.0, 400):
         assert S._tanh_pos(z) == pytest.approx(math.tanh(z), rel=2e-13, abs=0.0)
     assert S._tanh_pos(0.0) == 0.0
-    for x in np.concatenate([np.geomspace(1e-9, 1e15, 400), np.geomspace(99.0, 101.0, 50), np.geomspace(9.9e5, 1.01e6, 50)]):
+    for x in np.concatenate([np.geomspace(1e-9, 1e15, 400), np.geomspace(9.9, 10.1, 50),
+                        np.geomspace(99.0, 101.0, 50), np.geomspace(9.9e5, 1.01e6, 50)]):
         assert S._asinh_l2x(math.log(2 * x)) == pytest.approx(math.asinh(x), rel=3e-14)
 
 

@@ -60,7 +60,7 @@ fields moved from the centre to each slice with constant cross-product matrices;
 Hamrock–Dowson films, regime map and Zhu–Cheng factor from shared logarithms, powers as
 exp(c ln x); the Eyring argument x = ηγ̇/τ₀ carried as ln 2x = ln u_s + ln η(p̄) + const only
 (:func:`_asinh_l2x`: asinh x = ln 2x for x ≥ 10⁶, error ≤ 2.5e-13 absolute, its asymptotic series in
-1/x² for 100 ≤ x < 10⁶, asinh(e^(ln 2x − ln 2)) below; so η = e^(ln η) is never formed and asinh rarely
+1/x² for 10 ≤ x < 10⁶, asinh(e^(ln 2x − ln 2)) below; so η = e^(ln η) is never formed and asinh rarely
 called), the same for the heat-balance step's
 asinh(x e^(−βΔT)) with ln 2x − βΔT; tanh z = (e^(2z) − 1)/(e^(2z) + 1) for
 1e-3 ≤ z ≤ 20 (≤ ~1e-13 relative).  No allocation.  Of fastmath only ``contract``: LLVM may fuse a
@@ -809,7 +809,7 @@ _LN_2E6 = math.log(2.0e6)
 #: 1/(1.96e8 Pa): Roelands' pressure scale (traction.roelands_viscosity), as a factor
 _INV_ROELANDS_P = 1.0 / 1.96e8
 _LN_2 = math.log(2.0)
-_LN_200 = math.log(200.0)
+_LN_20 = math.log(20.0)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
@@ -869,23 +869,27 @@ def _slice_kinematics(x, root, curv, nx, ny, nz, mx, my, mz, s1x, s1y, s1z, asx,
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _asinh_l2x(l2x):
     """asinh x for x > 0 from l2x = ln 2x alone [-]: ln 2x when x ≥ 1e6 (the dropped term 1/(4x²) ≤ 2.5e-13
-    absolute, ≤ 1.8e-14 of the value); for 100 ≤ x < 1e6 the asymptotic series ln 2x + w/4 − 3w²/32 + 5w³/96
-    − 35w⁴/1024, w = 1/x² = 4e^(−2 ln 2x) (Abramowitz & Stegun 4.6.31; next term 63w⁵/2560 < 2.5e-22); below,
-    asinh(e^(ln 2x − ln 2)).  The film law never needs x itself, so the viscosity η(p̄) = e^(ln η) is not formed,
-    and no asinh call is made where x ≥ 100 (the loaded EHL contact's usual range)."""
-    return _asinh_l2x_e(l2x, math.exp(-2.0 * l2x) if _LN_200 <= l2x < _LN_2E6 else 0.0)
+    absolute, ≤ 1.8e-14 of the value); for 10 ≤ x < 1e6 the asymptotic series asinh x = ln 2x + Σ_{n≥1}
+    (−1)^(n+1) C(2n, n) wⁿ/(4ⁿ 2n), w = 1/x² = 4e^(−2 ln 2x) (Abramowitz & Stegun 4.6.31: w/4 − 3w²/32 + 5w³/96
+    − 35w⁴/1024 + …), eight terms (at x = 10 the ninth is 1e-20); below, asinh(e^(ln 2x − ln 2)).  The film law
+    never needs x itself, so the viscosity η(p̄) = e^(ln η) is not formed, and no asinh call is made where x ≥ 10
+    (the loaded EHL contact's usual range; the switch moved down from x = 100 in issue 14's twelfth pass: the lanes
+    near the slip's zeros between 10 and 100 skip glibc's asinh and the exponential before it; hub (b) −2 to −3 %
+    per step)."""
+    return _asinh_l2x_e(l2x, math.exp(-2.0 * l2x) if _LN_20 <= l2x < _LN_2E6 else 0.0)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _asinh_l2x_e(l2x, e):
-    """:func:`_asinh_l2x` with e = e^(−2 ln 2x) given (used only where 100 ≤ x < 1e6; the strip lanes take it from
-    :func:`.vecmath.vexp`).  Below x = 100 the scalar asinh (a vector asinh on all eight lanes cost more than
+    """:func:`_asinh_l2x` with e = e^(−2 ln 2x) given (used only where 10 ≤ x < 1e6; the strip lanes take it from
+    :func:`.vecmath.vexp`).  Below x = 10 the scalar asinh (a vector asinh on all eight lanes cost more than
     the one or two lanes near a zero of the slip that need it: docs/dynamics.md, tenth pass)."""
     if l2x >= _LN_2E6:
         return l2x
-    if l2x >= _LN_200:
+    if l2x >= _LN_20:
         w = 4.0 * e
-        return l2x + w * (0.25 + w * (-3.0 / 32.0 + w * (5.0 / 96.0 - w * (35.0 / 1024.0))))
+        return l2x + w * (1.0 / 4.0 + w * (-3.0 / 32.0 + w * (5.0 / 96.0 + w * (-35.0 / 1024.0 + w * (
+            63.0 / 2560.0 + w * (-77.0 / 4096.0 + w * (429.0 / 28672.0 - w * (6435.0 / 524288.0))))))))
     return math.asinh(math.exp(l2x - _LN_2))
 
 
