@@ -593,13 +593,19 @@ def cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, w
     kcg = cpar[ly.C_KC]
     mu = cpar[ly.C_MU]
     vref = gp[ly.G_VREF]
+    # cos φ_j, sin φ_j by turning pocket 0's by 2π/Z from pocket to pocket (two sincos per cage instead of one per
+    # pocket, a serial part of the threaded right-hand side; the rounding grows by ≤ 1 ulp per pocket)
+    dphi = 2.0 * math.pi / z if z > 0 else 0.0
+    cdp = math.cos(dphi)
+    sdp = math.sin(dphi)
+    cph = math.cos(cpar[ly.C_PSI0])
+    sph = math.sin(cpar[ly.C_PSI0])
     for j in range(z):
+        if j > 0:
+            cph, sph = cph * cdp - sph * sdp, sph * cdp + cph * sdp
         k = b0 + j
         ob = ly.N_RING + ly.N_BALL * k
         half_d = 0.5 * rows[ball_row[k], kn.P_D]
-        phi = cpar[ly.C_PSI0] + 2.0 * math.pi * j / z
-        cph = math.cos(phi)
-        sph = math.sin(phi)
         for i in range(3):
             tmp[i] = y[ob + i] - occ[i]
         for i in range(3):
