@@ -305,7 +305,7 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
     contiguous block of iterations) one thread takes the even balls and the other the odd ones.  The balls are
     numbered row by row and along each row, so a contiguous block was a row, and under a moment load one row
     carries its load zone while the other is half unloaded (an unloaded contact returns at once): hub (b), 2
-    threads, right-hand side at three states 23.0–25.0 → 21.6–22.5 µs (issue 14, docs/dynamics.md twelfth pass;
+    threads, right-hand side at three states 22.3–24.0 → 21.6–22.6 µs (issue 14, docs/dynamics.md twelfth pass;
     the van der Corput order, which would spread the balls for any power-of-two thread count, measured 0.5 µs
     slower on 2).  Which thread computes a ball does not change its numbers."""
     nb = ball_row.shape[0]

@@ -74,7 +74,7 @@ X_RXI = 11  #: rolling-direction radius R_x at the free contact angle, inner [m]
 X_RXO = 12  #: R_x, outer [m]
 X_RYI = 13  #: transverse radius R_y, inner [m]
 X_RYO = 14  #: R_y, outer [m]
-X_KCI = 15  #: cube root of the inner load–deflection constant, K_i^(1/3) (Q^(1/3) = K^(1/3) δ^(1/2)) [N^(1/3)/m^(1/2)]
+X_KCI = 15  #: K_i^(1/3), cube root of the inner load–deflection constant (for Q^(1/3)) [N^(1/3)/m^(1/2)]
 X_KCO = 16  #: K_o^(1/3), outer [N^(1/3)/m^(1/2)]
 NROWX = 17  #: length of a rowx row
 
