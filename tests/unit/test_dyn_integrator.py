@@ -403,3 +403,73 @@ def test_a_failing_workspace_reports_the_status_and_keeps_its_step():
     st = ig.METHODS["dopri5"].advance(ws, 1.0)
     assert st is ig.Status.MAX_STEPS and ig.STATUS_TEXT[st] == "step limit reached"
     assert 0.0 < ws.t < 1.0 and ws.h == 1e-3 and ws.steps + ws.rejected == 5
+
+
+# ---- dense output of ROS34PW2 (issue 14) --------------------------------------------------------------------
+def test_hermite_interpolant_is_exact_for_cubics_and_lands_on_the_step_end():
+    """The cubic Hermite interpolant (Hairer, Nørsett & Wanner, Solving ODEs I, §II.6 eq. 6.7) reproduces any
+    cubic from its values and slopes at both ends, and θ = 1 gives y1 itself."""
+    from bearingsim.dynamics.integrate.common import hermite
+
+    rng = np.random.default_rng(7)
+    for _ in range(20):
+        c = rng.normal(size=(4, 3))
+        t0, t1 = sorted(rng.uniform(-2.0, 2.0, size=2))
+        p = lambda t: c[0] + c[1] * t + c[2] * t**2 + c[3] * t**3  # noqa: E731
+        dp = lambda t: c[1] + 2 * c[2] * t + 3 * c[3] * t**2  # noqa: E731
+        for th in (0.0, 0.1, 0.5, 0.77, 0.999):
+            t = t0 + th * (t1 - t0)
+            np.testing.assert_allclose(hermite(t0, p(t0), dp(t0), t1, p(t1), dp(t1), t), p(t), rtol=1e-12,
+                                       atol=1e-12, err_msg="HNW I eq. II.6.7: exact for cubics")
+        y1 = p(t1)
+        assert np.array_equal(hermite(t0, p(t0), dp(t0), t1, y1, dp(t1), t1), y1)
+    # a non-cubic: the error is θ²(1 − θ)² h⁴ y⁽⁴⁾(ξ)/4! (the remainder of Hermite interpolation), here e^t on
+    # [0, h] at θ = 1/3: it falls as h⁴ and lies between the remainder's values for ξ at the step's two ends
+    for h in (0.4, 0.2, 0.1):
+        th = 1.0 / 3.0
+        err = math.exp(th * h) - hermite(0.0, np.array([1.0]), np.array([1.0]), h, np.array([math.exp(h)]),
+                                         np.array([math.exp(h)]), th * h)[0]
+        bound = th**2 * (1 - th) ** 2 * h**4 / 24
+        assert bound <= err <= bound * math.exp(h), (h, err, bound)
+
+
+def _ros34_dense(outputs, k=1e4, tol=1e-7):
+    """The stiff problem above with ROS34PW2's dense output, sampled at ``outputs`` (a call per output)."""
+    from bearingsim.dynamics.integrate.common import dense_arrays, hermite
+
+    blk = np.array([0], dtype=np.int64)
+    y = np.array([1.0, 0.0, 1.0])
+    info = np.zeros(4)
+    ws = ig.ros34_workspace(1, 3, False)
+    dns, dst = dense_arrays(3)
+    t, h, steps, out = 0.0, 1e-3, 0, []
+    for to in outputs:
+        if to > t:
+            st, t, h = ig.advance_ros34(stiff, (k,), t, to, y, h, np.full(3, tol), np.zeros(3), 1e-12, 10**6, info,
+                                        blk, 3, 20, ws, dns=dns, dst=dst)
+            assert st == ig.OK and t >= to
+            steps += int(info[0])
+        out.append(hermite(dst[0], dns[0], dns[1], t, y, dns[2], to))
+    return np.array(out), steps
+
+
+def test_ros34w_dense_output_steps_do_not_depend_on_the_output_times():
+    """With dense output the steps run past the output times: samples every 0.05 and every 0.2 (and a single
+    call to the end) come from the very same steps, bit for bit at the common times."""
+    fine = np.linspace(0.0, 2.0, 41)[1:]
+    a, na = _ros34_dense(fine)
+    b, nb = _ros34_dense(fine[3::4])
+    c, nc = _ros34_dense([2.0])
+    assert na == nb == nc
+    assert np.array_equal(a[3::4], b) and np.array_equal(a[-1], c[-1])
+
+
+def test_ros34w_dense_output_is_as_accurate_as_the_steps():
+    """The interpolated samples between the steps are as close to the exact solution (y1 = y3 = cos t,
+    y2 = sin t) as the steps' own ends are at that tolerance: the interpolant's O(h⁴) error is below the
+    method's local error."""
+    ts = np.linspace(0.0, 2.0, 201)[1:]
+    for tol in (1e-5, 1e-7):
+        y, _ = _ros34_dense(ts, tol=tol)
+        err = np.max(np.abs(y - np.stack([np.cos(ts), np.sin(ts), np.cos(ts)], axis=1)))
+        assert err < 20 * tol, (tol, err)

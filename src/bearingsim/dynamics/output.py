@@ -6,8 +6,8 @@ component along ``dof``, as :func:`bearingsim.io.netcdf.units_attributes` takes 
 :func:`to_dataset` makes an xarray Dataset of them.  :class:`_Writer` appends samples to a netCDF-3
 file through :class:`bearingsim.io.netcdf.NetCDFWriter` (the one writer of the package).  A checkpoint
 (``OUT.ckpt.npz``, :func:`_save_checkpoint` / :func:`_read_checkpoint`) holds what a resumed run needs
-to repeat the same steps: t, y, the step size, the step counts, the output index and the integrator's
-Jacobian; it is written under a temporary name and renamed into place.
+to repeat the same steps: t, y, the step size, the step counts, the output index, the integrator's
+Jacobian and, with dense output, its last step (:attr:`.stepper.Stepper.dense`); it is written under a temporary name and renamed into place.
 """
 
 from __future__ import annotations
@@ -164,6 +164,7 @@ def _save_checkpoint(path: Path, stepper, index: int, fingerprint: str) -> None:
     tmp = _checkpoint_tmp(path)
     np.savez(tmp, t=stepper.t, h=stepper.h, y=stepper.y, index=index, steps=stepper.steps,
              rejected=stepper.rejected, fingerprint=fingerprint,
-             **{f"jacobian_{i}": a for i, a in enumerate(stepper._ws)})
+             **{f"jacobian_{i}": a for i, a in enumerate(stepper._ws)},
+             **{f"dense_{i}": a for i, a in enumerate(stepper._dense or ())})
     os.replace(tmp, path)
 

@@ -89,7 +89,8 @@ def _note(console, text: str) -> None:
 
 
 def simulate(case, out: str | Path | None = None, resume: bool = False, progress: bool = False,
-             console=None, checkpoint_seconds: float | None = None, threads: int | None = None) -> Results:
+             console=None, checkpoint_seconds: float | None = None, threads: int | None = None,
+             dense: bool = True) -> Results:
     """Run a dynamic case.
 
     Parameters
@@ -111,6 +112,9 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     threads : threads for the ball contacts of the right-hand side (None: 1; ``"auto"``: the idle cores,
         :func:`.stepper.idle_cores`; at most NUMBA_NUM_THREADS; the trajectory is the same bit for bit for any
         count; serial by default so that runs in parallel processes do not oversubscribe, :attr:`Stepper.threads`)
+    dense : with ROS34PW2, dense output (:attr:`Stepper.dense`): the steps do not stop at the output times, the
+        samples are interpolated in the steps, and the trajectory does not depend on the output interval (False:
+        every output time is a step's end, as with the other integrators)
 
     Returns :class:`Results`.  On a diverging step or when every ball has separated
     the data so far are saved and :class:`SimulationError` is raised.
@@ -131,7 +135,7 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     model, loadspec, y0, static = build(case)
     fp = case.fingerprint()
     stepper = Stepper(model, loadspec, y0, tol=case.tolerance, h=min(1e-7, case.output_interval),
-                      method=case.method, threads=threads)
+                      method=case.method, threads=threads, dense=dense)
     attrs = {"title": "bearingsim dynamic simulation", "bearing": model.names.get("bearing", ""),
              "traction": case.traction, "tolerance": case.tolerance, "case_fingerprint": fp,
              "conventions": "x bearing axis, outer ring fixed, psi = 0 on +y, SI units",
@@ -164,6 +168,13 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
             if all(v is not None and v.shape == a.shape for v, a in zip(saved, stepper._ws)):
                 for v, a in zip(saved, stepper._ws):
                     a[...] = v
+            if stepper._dense is not None:
+                # the dense output's last step (its start and f at both ends) and the controller's memory: without
+                # them (an older checkpoint, which stopped at an output time) the next step starts afresh
+                saved = [c.get(f"dense_{i}") for i in range(2)]
+                if all(v is not None and v.shape == a.shape for v, a in zip(saved, stepper._dense)):
+                    for v, a in zip(saved, stepper._dense):
+                        a[...] = v
             start = int(c["index"])
             writer = _Writer(out_path, model, attrs, start)
             if len(writer.ds.dimensions["time"]) < start:
@@ -177,6 +188,7 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     if start == 0:
         buf.append(stepper.sample())
     t_wall0 = time.perf_counter()
+    first = start if start > 0 else 1
     prog = None
     task = None
     if progress:
@@ -187,13 +199,13 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
                         TextColumn("{task.fields[rate]:.3g} wall s per sim s"), TimeRemainingColumn(),
                         console=console, transient=False)
         prog.start()
-        task = prog.add_task("sim", total=n_total, completed=max(start - 1, 0), simt=stepper.t * 1e3,
-                             tot=case.duration * 1e3, rate=0.0)
-    first = start if start > 0 else 1
+        task = prog.add_task("sim", total=n_total, completed=max(start - 1, 0), simt=(first - 1) * case.output_interval
+                             * 1e3, tot=case.duration * 1e3, rate=0.0)
     chunks = 0
     error = None
     completed = False
-    t_sim0 = stepper.t
+    # the last output time (the stepper's own time may be past it with dense output)
+    t_out = t_sim0 = (first - 1) * case.output_interval
     last_ckpt = time.monotonic()
 
     def flush(final=False, checkpoint=False):
@@ -216,17 +228,18 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     try:
         for i in range(first, n_total + 1):
             try:
-                stepper.advance(i * case.output_interval)
+                y_out = stepper.state_at(i * case.output_interval)
             except SimulationError as exc:
                 error = exc
                 break
-            s = stepper.sample()
+            t_out = i * case.output_interval
+            s = stepper.sample(t_out, y_out)
             buf.append(s)
             # the inner ring has left every ball for three output samples in a row
             n_free = n_free + 1 if not np.any(s["inner_contact_load"] > 0) else 0
             if n_free >= 3:
                 error = SimulationError(f"every ball has separated from the inner raceway at t = "
-                                        f"{stepper.t * 1e3:.6g} ms (the loads lift the inner ring off the balls); "
+                                        f"{t_out * 1e3:.6g} ms (the loads lift the inner ring off the balls); "
                                         "data so far saved")
                 break
             if len(buf) >= case.chunk:
@@ -235,8 +248,8 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
                 flush(checkpoint=True)  # the run can be resumed from here, chunk or not
             if prog is not None:
                 el = time.perf_counter() - t_wall0
-                prog.update(task, completed=i, simt=stepper.t * 1e3,
-                            rate=el / max(stepper.t - t_sim0, 1e-30))
+                prog.update(task, completed=i, simt=t_out * 1e3,
+                            rate=el / max(t_out - t_sim0, 1e-30))
         else:
             completed = True
     finally:
@@ -249,10 +262,10 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
         ckpt.unlink(missing_ok=True)  # a completed run leaves no checkpoint behind
         _checkpoint_tmp(ckpt).unlink(missing_ok=True)  # (nor one half-saved when an earlier run was killed)
     wall = time.perf_counter() - t_wall0
-    summary = {"wall_seconds": wall, "simulated_seconds": stepper.t - t_sim0, "steps": stepper.steps,
+    summary = {"wall_seconds": wall, "simulated_seconds": t_out - t_sim0, "steps": stepper.steps,
                "threads": stepper.threads,
                "rejected_steps": stepper.rejected,
-               "wall_per_simulated_second": wall / max(stepper.t - t_sim0, 1e-30),
+               "wall_per_simulated_second": wall / max(t_out - t_sim0, 1e-30),
                "initial_static_converged": bool(static.converged)}
     res = Results(data=stack_samples(samples_mem) if writer is None else None, attrs=attrs,
                   path=str(out_path) if out_path else None, summary=summary)

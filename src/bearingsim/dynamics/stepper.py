@@ -7,6 +7,10 @@ advances it with the integrator named by ``method`` through the contract of
 Jacobian (ROS34PW2 keeps it from one call to the next, and checkpoints save it) is ``Stepper._ws``.
 :meth:`Stepper.sample` evaluates the right-hand side of :mod:`.forces` once at the current state and
 packs the output quantities (:func:`sample_from`), named as in :data:`.output.VARIABLES`.
+
+With ``dense=True`` (ROS34PW2 only; :func:`.run.simulate` sets it) the integrator does not stop at the output
+times: :meth:`Stepper.state_at` advances to the first step at or past the time asked and interpolates the state
+there (:func:`.integrate.common.hermite`), so the steps, and the trajectory, do not depend on the output interval.
 """
 
 from __future__ import annotations
@@ -22,6 +26,7 @@ from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import forces as fo
 from . import integrate as ig
 from . import model as md
+from .integrate.common import dense_arrays, hermite
 from .integrate.specialised import engine_kernel
 
 
@@ -67,6 +72,9 @@ class Stepper:
     #: in processes, as the hub study does, must not oversubscribe the cores); with the OpenMP layer 2 threads ran
     #: the hub case at 110 wall s per simulated s against 171 on one on this idle 2-core machine (issue 14).
     threads: int | str | None = None
+    #: dense output (ROS34PW2; ignored by the other methods): the steps run past the output times and
+    #: :meth:`state_at` interpolates; then :attr:`t` and :attr:`y` are the integrator's own time and state
+    dense: bool = False
     steps: int = 0
     rejected: int = 0
     atol: np.ndarray = field(default=None, repr=False)
@@ -94,19 +102,23 @@ class Stepper:
             self._bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
         # the ROS34PW2 Jacobian lives from one call to the next (and in checkpoints)
         self._ws = ig.ros34_workspace(m.n_balls, md.N_BALL, self._rmass.shape[0] == 5)
+        self.dense = bool(self.dense) and self.method == "ros34w"
+        #: the dense output's arrays (:func:`.integrate.common.dense_arrays`; saved in checkpoints), or None
+        self._dense = dense_arrays(self.y.shape[0]) if self.dense else None
         self.threads = resolve_threads(self.threads)
         fun = fo.rhs_args_threaded if self.threads > 1 else fo.rhs_args
         kernel = engine_kernel(ig.METHODS[self.method].__name__.rsplit(".", 1)[1], fun)
         self.workspace = ig.Workspace(fun, self._args, self.y, self.atol, self.rtol, vec=self.vec, blk=self._blk,
                                       kernel=kernel, nbk=md.N_BALL, rmass=self._rmass, bmass=self._bmass,
-                                      jacobian=self._ws, info=self._info)
+                                      jacobian=self._ws, info=self._info, dense=self._dense)
 
     def advance(self, t_end: float) -> None:
-        """Integrate to t_end [s] with ``METHODS[method].advance(workspace, t_end)``; raises
-        :class:`SimulationError` naming the time and body on failure."""
+        """Integrate to t_end [s] with ``METHODS[method].advance(workspace, t_end)`` (with :attr:`dense`: to the
+        first step at or past t_end); raises :class:`SimulationError` naming the time and body on failure."""
         ws = self.workspace
         # the stepper's fields are the state (tests and checkpoints set them): the workspace takes them
         ws.y, ws.atol, ws.rtol, ws.vec, ws.jacobian = self.y, self.atol, self.rtol, self.vec, self._ws
+        ws.dense = self._dense
         ws.t, ws.h, ws.h_min = self.t, self.h, self.h_min
         ws.max_steps, ws.jac_every = self.max_steps_per_interval, self.jac_every
         ws.steps, ws.rejected = self.steps, self.rejected
@@ -121,10 +133,27 @@ class Stepper:
                                   f"largest error in {comp}")
         self.h = ws.h
 
-    def sample(self) -> dict:
-        """Output quantities at the current state (SI)."""
-        dy, diag, gd = fo.evaluate(self.model, self.t, self.y, self.loadspec)
-        out = sample_from(self.model, self.t, self.y, diag, gd)
+    def state_at(self, t: float) -> np.ndarray:
+        """The state at time t [s] (a new array): integrated to t; with :attr:`dense` to the first step at or past
+        t and interpolated in that step (:func:`.integrate.common.hermite`).  Times must not go back past the
+        start of the last step."""
+        if t > self.t:
+            self.advance(t)
+        if not self.dense or t == self.t:
+            if t != self.t:
+                raise ValueError(f"the stepper is at t = {self.t!r} s, not at {t!r} s (no dense output)")
+            return self.y.copy()
+        dns, dst = self._dense
+        if dst[3] == 0.0 or t < dst[0]:
+            raise ValueError(f"t = {t!r} s is before the last step [{dst[0]!r}, {self.t!r}] s of the dense output")
+        return hermite(float(dst[0]), dns[0], dns[1], self.t, self.y, dns[2], float(t))
+
+    def sample(self, t: float | None = None, y: np.ndarray | None = None) -> dict:
+        """Output quantities at the current state, or at (t [s], y) (:meth:`state_at`) (SI)."""
+        if t is None:
+            t, y = self.t, self.y
+        dy, diag, gd = fo.evaluate(self.model, t, y, self.loadspec)
+        out = sample_from(self.model, t, y, diag, gd)
         out["power_loss_rolling"] = 0.0
         if int(self.model.gp[md.G_TRAC]) == 2 and self.model.lubs is not None:
             # rolling viscous resistance share: the same state without it (Sakaguchi & Shibutani [S1] eqs. 4-5)
@@ -135,7 +164,7 @@ class Stepper:
             saved = self.model.lubs.copy()
             try:
                 self.model.lubs[:, slices.L_ROLLRES] = 0.0
-                _, _, gd2 = fo.evaluate(self.model, self.t, self.y, self.loadspec)
+                _, _, gd2 = fo.evaluate(self.model, t, y, self.loadspec)
             finally:
                 self.model.lubs[:] = saved
             out["power_loss_rolling"] = (gd[fo.GD_PI] + gd[fo.GD_PO]) - (gd2[fo.GD_PI] + gd2[fo.GD_PO])

@@ -77,6 +77,9 @@ class Workspace:
     rejected: int = 0  #: rejected steps so far
     #: the method's kernel specialised for ``fun`` (:func:`.specialised.engine_kernel`), or None: the generic one
     kernel: object = None
+    #: ROS34PW2's dense output (:func:`.common.dense_arrays`): the calls stop at the first step at or past t_end
+    #: (ws.t ≥ t_end) and leave that step's ends for :func:`.common.hermite`; None: every call lands on t_end
+    dense: tuple | None = None
 
     def finish(self, status: int, t: float, h: float) -> Status:
         """Book the result of one kernel call (see the module docstring) and return its status."""

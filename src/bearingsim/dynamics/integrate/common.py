@@ -36,6 +36,33 @@ STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (dive
 
 #: no vector groups: every component's relative tolerance is on its own magnitude (:func:`error_scale`)
 NO_VECTORS = np.zeros((0, 2), dtype=np.int64)
+#: no dense output (:func:`dense_arrays`): the calls stop exactly at t_end
+NO_DENSE = np.zeros((3, 0))
+NO_DENSE_STATE = np.array([0.0, 1.0, 0.0, 0.0])
+
+
+def dense_arrays(n: int) -> tuple[np.ndarray, np.ndarray]:
+    """The arrays of a dense-output run of ROS34PW2 (:func:`.ros34pw2.integrate`) for n states: float[3, n]
+    (y₀ and f(t₀, y₀) at the start of the last step, f at its end) and float[4] (t₀ [s], the step controller's
+    previous error (1 at the start, as in a call without dense output), 1 after a rejected step, 1 when row 2
+    holds f at the current state)."""
+    return np.zeros((3, n)), np.array([0.0, 1.0, 0.0, 0.0])
+
+
+def hermite(t0: float, y0: np.ndarray, f0: np.ndarray, t1: float, y1: np.ndarray, f1: np.ndarray,
+            t: float) -> np.ndarray:
+    """The cubic Hermite interpolant of one step at t ∈ [t0, t1] [s] from the values y and derivatives f at both
+    ends (Hairer, Nørsett & Wanner, *Solving ODEs I*, 2nd ed. 1993, §II.6, eq. 6.7): with h = t1 − t0 and
+    θ = (t − t0)/h, u(θ) = (1 − θ) y0 + θ y1 + θ(θ − 1)[(1 − 2θ)(y1 − y0) + (θ − 1) h f0 + θ h f1].  Exact for
+    cubics; its error is O(h⁴), the order of ROS34PW2's local error (order 3), and it is continuous with a
+    continuous derivative from one step to the next.  θ = 1 returns y1 bit for bit."""
+    h = t1 - t0
+    if t >= t1 or h <= 0.0:
+        return y1.copy()
+    th = (t - t0) / h
+    dy = y1 - y0
+    return (1.0 - th) * y0 + th * y1 + th * (th - 1.0) * ((1.0 - 2.0 * th) * dy + (th - 1.0) * h * f0
+                                                          + th * h * f1)
 
 
 @njit(cache=True, _nrt=False)

@@ -24,6 +24,8 @@ from numba import njit
 from .base import Workspace, ros34_workspace
 from .common import (
     MAX_STEPS,
+    NO_DENSE,
+    NO_DENSE_STATE,
     NO_VECTORS,
     NOT_FINITE,
     OK,
@@ -107,7 +109,8 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
 
 @njit
 def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
-              rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False, vec=NO_VECTORS):
+              rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False, vec=NO_VECTORS,
+              dns=NO_DENSE, dst=NO_DENSE_STATE):
     """ROS34PW2 from t to t_end in place (module docstring).
 
     ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
@@ -120,6 +123,14 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     (the results do not change).  ``threaded``: W's ball blocks formed on ``numba.get_num_threads()`` threads
     (:func:`.linalg.coupled_w_threaded`, the same result bit for bit; 33 µs per step size serially on the hub
     case, issue 14).  ``vec``: the vectors the relative tolerances are measured on (:func:`.common.error_scale`).
+
+    Dense output (``dns`` float[3, n], ``dst`` float[4]; :func:`.common.dense_arrays`): the steps are not clipped at
+    t_end; the call returns at the first step that reaches or passes it, with t ≥ t_end, and leaves the last step's
+    start (t₀ in dst[0], y₀ and f(t₀, y₀) in dns[0], dns[1]) and f at the state reached (dns[2]) for the Hermite
+    interpolant of :func:`.common.hermite`.  The controller's memory (err_prev, a rejection just before) and f at the
+    state reached are carried from one call to the next in ``dst``, so that the steps do not depend on where the
+    calls stop: the trajectory is the same for any output interval (a checkpoint saves these arrays too).
+    Without them (no columns): every call stops exactly at t_end and starts its controller afresh.
     """
     n = y.shape[0]
     nb = blk.shape[0]
@@ -158,11 +169,23 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     have_f0 = False
     prev_rej = False
     err_prev = 1.0
+    dense = dns.shape[1] == n
+    if dense:
+        # the controller's memory and f at the current state, carried from the previous call
+        err_prev = dst[1]
+        prev_rej = dst[2] > 0.0
+        if dst[3] > 0.0:
+            for i in range(n):
+                f0[i] = dns[2, i]
+            have_f0 = True
     while t < t_end:
         if nacc + nrej >= max_steps:
             status = MAX_STEPS
             break
-        hs, last = clip_step(t, h, t_end)
+        if dense:
+            hs, last = h, False
+        else:
+            hs, last = clip_step(t, h, t_end)
         if not have_f0:
             fun(t, y, f0, args)
             have_f0 = True
@@ -198,6 +221,11 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                 stats[i] += r * r
             stats[n + int(info[2])] += 1.0
         if err <= 1.0:
+            if dense:
+                dst[0] = t  # the step's start for the interpolant
+                for i in range(n):
+                    dns[0, i] = y[i]
+                    dns[1, i] = f0[i]
             for i in range(n):
                 y[i] = ynew[i]
             t = t_end if last else t + hs
@@ -221,6 +249,16 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                 break
     jst[0] = since
     jst[1] = 0 if need_jac else 1
+    if dense:
+        if status == OK and not have_f0:
+            fun(t, y, f0, args)  # (the next step's f0: computed once, carried in dns[2])
+            have_f0 = True
+        if have_f0:
+            for i in range(n):
+                dns[2, i] = f0[i]
+        dst[1] = err_prev
+        dst[2] = 1.0 if prev_rej else 0.0
+        dst[3] = 1.0 if have_f0 else 0.0
     info[0] = nacc
     info[1] = nrej
     return status, t, h
@@ -265,15 +303,17 @@ def fixed_steps(fun, args, t, y, h, nsteps, blk, nbk):
 def advance(ws: Workspace, t_end: float) -> Status:
     """Integrate the workspace to t_end [s] with ROS34PW2 (the contract of :mod:`.base`); the Jacobian
     lives in ``ws.jacobian`` (made here on first use).  The engine's right-hand sides run the cached kernel of
-    :mod:`.specialised` (the same code)."""
+    :mod:`.specialised` (the same code).  With ``ws.dense`` (:func:`.common.dense_arrays`) the call stops at the
+    first step at or past t_end (dense output, :func:`integrate`)."""
     if ws.jacobian is None:
         ws.jacobian = ros34_workspace(ws.blk.shape[0], ws.nbk, ws.rmass.shape[0] == 5)
+    dns, dst = ws.dense if ws.dense is not None else (NO_DENSE, NO_DENSE_STATE)
     kernel = ws.kernel
     if kernel is not None:
         status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
-                              ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass, ws.vec)
+                              ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass, ws.vec, dns, dst)
     else:
         status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
                                  ws.max_steps, ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass,
-                                 ws.bmass, vec=ws.vec)
+                                 ws.bmass, vec=ws.vec, dns=dns, dst=dst)
     return ws.finish(status, t, h)

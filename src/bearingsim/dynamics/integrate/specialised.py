@@ -135,18 +135,18 @@ def ros2_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk,
 # ---- ROS34PW2 (without the profiling statistics of bench_dynamics --steps, which calls the generic kernel) ---
 @_cached
 def ros34_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass, bmass,
-                 vec):
+                 vec, dns, dst):
     """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
     return ros34pw2.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk,
-                              jac_every, ws, rmass, bmass, np.zeros(0), False, vec)
+                              jac_every, ws, rmass, bmass, np.zeros(0), False, vec, dns, dst)
 
 
 @_cached
 def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass,
-                   bmass, vec):
+                   bmass, vec, dns, dst):
     """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
     return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
-                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec)
+                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec, dns, dst)
 
 
 #: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel
