@@ -7,7 +7,8 @@ component along ``dof``, as :func:`bearingsim.io.netcdf.units_attributes` takes 
 file through :class:`bearingsim.io.netcdf.NetCDFWriter` (the one writer of the package).  A checkpoint
 (``OUT.ckpt.npz``, :func:`_save_checkpoint` / :func:`_read_checkpoint`) holds what a resumed run needs
 to repeat the same steps: t, y, the step size, the step counts, the output index, the integrator's
-Jacobian and, with dense output, its last step (:attr:`.stepper.Stepper.dense`); it is written under a temporary name and renamed into place.
+Jacobian and, with dense output, its last step (:attr:`.stepper.Stepper.dense`); it is written under a temporary
+name and renamed into place.
 """
 
 from __future__ import annotations

@@ -25,6 +25,7 @@ from ..errors import BearingSimError, InputError
 from ..statics import layout as kn  # the row-parameter layout (P_*)
 from . import forces as fo
 from . import integrate as ig
+from . import layout as ly
 from . import model as md
 from .integrate.common import dense_arrays, hermite
 from .integrate.specialised import engine_kernel
@@ -167,7 +168,7 @@ class Stepper:
                 _, _, gd2 = fo.evaluate(self.model, t, y, self.loadspec)
             finally:
                 self.model.lubs[:] = saved
-            out["power_loss_rolling"] = (gd[fo.GD_PI] + gd[fo.GD_PO]) - (gd2[fo.GD_PI] + gd2[fo.GD_PO])
+            out["power_loss_rolling"] = (gd[ly.GD_PI] + gd[ly.GD_PO]) - (gd2[ly.GD_PI] + gd2[ly.GD_PO])
         return out
 
 
@@ -261,34 +262,34 @@ def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: 
         "time": t,
         "inner_ring_displacement": y[0:5].copy(),
         "inner_ring_velocity": y[5:10].copy(),
-        "applied_load": gd[fo.GD_FA:fo.GD_MZ + 1].copy(),
-        "shaft_speed": gd[fo.GD_W],
+        "applied_load": gd[ly.GD_FA:ly.GD_MZ + 1].copy(),
+        "shaft_speed": gd[ly.GD_W],
         "cage_angular_speed": cage,
         "cage_angle": cage_angle,
         "cage_position": cage_pos,
-        "ball_orbital_speed": diag[:, fo.D_WM].copy(),
-        "ball_spin_speed": diag[:, fo.D_WR].copy(),
-        "ball_pitch_angle": diag[:, fo.D_BETA].copy(),
-        "inner_contact_load": diag[:, fo.D_QI].copy(),
-        "outer_contact_load": diag[:, fo.D_QO].copy(),
-        "inner_contact_angle": diag[:, fo.D_AI].copy(),
-        "outer_contact_angle": diag[:, fo.D_AO].copy(),
-        "inner_approach": diag[:, fo.D_DI].copy(),
-        "outer_approach": diag[:, fo.D_DO].copy(),
-        "inner_slide_roll_ratio": diag[:, fo.D_SRI].copy(),
-        "outer_slide_roll_ratio": diag[:, fo.D_SRO].copy(),
-        "inner_power_loss": diag[:, fo.D_PI].copy(),
-        "outer_power_loss": diag[:, fo.D_PO].copy(),
-        "cage_contact_load": diag[:, fo.D_QC].copy(),
-        "cage_power_loss": diag[:, fo.D_PC].copy(),
-        "inner_ring_friction_torque": gd[fo.GD_TQI],
-        "outer_ring_friction_torque": gd[fo.GD_TQO],
-        "power_loss_inner": gd[fo.GD_PI],
-        "power_loss_outer": gd[fo.GD_PO],
-        "power_loss_cage": gd[fo.GD_PC],
-        "power_loss_land": gd[fo.GD_PL],
-        "contact_potential_energy": gd[fo.GD_EPOT],
-        "cage_strain_energy": gd[fo.GD_ECAGE],
+        "ball_orbital_speed": diag[:, ly.D_WM].copy(),
+        "ball_spin_speed": diag[:, ly.D_WR].copy(),
+        "ball_pitch_angle": diag[:, ly.D_BETA].copy(),
+        "inner_contact_load": diag[:, ly.D_QI].copy(),
+        "outer_contact_load": diag[:, ly.D_QO].copy(),
+        "inner_contact_angle": diag[:, ly.D_AI].copy(),
+        "outer_contact_angle": diag[:, ly.D_AO].copy(),
+        "inner_approach": diag[:, ly.D_DI].copy(),
+        "outer_approach": diag[:, ly.D_DO].copy(),
+        "inner_slide_roll_ratio": diag[:, ly.D_SRI].copy(),
+        "outer_slide_roll_ratio": diag[:, ly.D_SRO].copy(),
+        "inner_power_loss": diag[:, ly.D_PI].copy(),
+        "outer_power_loss": diag[:, ly.D_PO].copy(),
+        "cage_contact_load": diag[:, ly.D_QC].copy(),
+        "cage_power_loss": diag[:, ly.D_PC].copy(),
+        "inner_ring_friction_torque": gd[ly.GD_TQI],
+        "outer_ring_friction_torque": gd[ly.GD_TQO],
+        "power_loss_inner": gd[ly.GD_PI],
+        "power_loss_outer": gd[ly.GD_PO],
+        "power_loss_cage": gd[ly.GD_PC],
+        "power_loss_land": gd[ly.GD_PL],
+        "contact_potential_energy": gd[ly.GD_EPOT],
+        "cage_strain_energy": gd[ly.GD_ECAGE],
         "cage_pocket_deformation": deform,
         "cage_peak_stress": stress,
     }

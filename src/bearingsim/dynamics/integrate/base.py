@@ -13,7 +13,9 @@ checkpoint saves).  Each method module (:mod:`.dopri5`, :mod:`.ros2`, :mod:`.ros
   component with the largest error at the last step, that scaled error;
 * ``advance(ws, t_end) -> Status`` — the same on a :class:`Workspace`: on success ws.t = t_end and
   ws.h the proposed step; on failure ws.t is the time reached and ws.h unchanged; ws.steps and
-  ws.rejected count the steps.
+  ws.rejected count the steps.  With ``ws.dense`` (ROS34PW2's dense output) the call instead stops at the
+  first step that reaches or passes t_end (ws.t ≥ t_end) and leaves that step for the interpolant
+  (:func:`.common.hermite`).
 
 When ``ws.kernel`` holds the method's kernel specialised for ``ws.fun`` (:mod:`.specialised`, cached on disk;
 the stepper sets it for the engine's own right-hand sides with :func:`.specialised.engine_kernel`), ``advance``
@@ -22,7 +24,8 @@ again in every process.
 
 Status codes and messages: :mod:`.common`.  Determinism: no randomness, a fixed arithmetic order,
 and every call stops exactly at t_end and returns the proposed next step, so a run restarted from
-(t, y, h) — and for ROS34PW2 its Jacobian — repeats the same steps bit for bit.
+(t, y, h) — and for ROS34PW2 its Jacobian and, with dense output, its last step and controller memory — repeats
+the same steps bit for bit.
 """
 
 from __future__ import annotations
