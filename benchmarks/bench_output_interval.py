@@ -41,7 +41,7 @@ def main() -> None:
         res = simulate(run, **kw)
         s = res.summary
         wall = s["wall_seconds"]  # (the quasi-static start excluded)
-        print(f"case (b), output every {us:g} us ({mode}): {s['simulated_seconds'] * 1e3:.4g} ms in {wall:.3g} s -> "
+        print(f"case (b), output every {us * 1e-3:g} ms ({mode}): {s['simulated_seconds'] * 1e3:.4g} ms in {wall:.3g} s -> "
               f"{wall / s['simulated_seconds']:.4g} wall s per simulated s; {s['steps']} steps "
               f"({s['rejected_steps']} rejected); {run.n_samples + 1} samples", flush=True)
 
