@@ -244,6 +244,7 @@ def test_dense_output_samples_do_not_depend_on_the_output_interval(tmp_path):
     coarse = simulate(dataclasses.replace(case, output_interval=1e-4))
     clipped = simulate(case, dense=False)
     assert fine.summary["steps"] == coarse.summary["steps"]
+    assert fine.attrs["output_sampling"].startswith("dense output") and "ends" in clipped.attrs["output_sampling"]
     assert fine.summary["simulated_seconds"] == pytest.approx(2e-3, abs=1e-15)
     for k in ("time", "inner_ring_displacement", "inner_contact_load", "ball_orbital_speed", "cage_angle"):
         assert np.array_equal(np.asarray(fine.data[k])[::2], np.asarray(coarse.data[k])), k

@@ -140,6 +140,9 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
              "traction": case.traction, "tolerance": case.tolerance, "case_fingerprint": fp,
              "conventions": "x bearing axis, outer ring fixed, psi = 0 on +y, SI units",
              "integrator": integrator_text(case.method, model, stepper.ring_coupling)}
+    attrs["output_sampling"] = ("dense output: each sample from the cubic Hermite interpolant of the integrator's step "
+                                "that holds its time (the steps do not stop at the output times)" if stepper.dense
+                                else "every output time ends an integrator step")
     if case.traction == "slices":
         gauss = f"Gauss-Legendre, {case.n_slices} nodes per stretch between the zeros of the rolling slip"
         attrs["traction_quadrature"] = gauss if case.slice_rule == "gauss" else f"{case.n_slices} equal strips"
