@@ -245,6 +245,16 @@ def test_dense_output_samples_do_not_depend_on_the_output_interval(tmp_path):
     clipped = simulate(case, dense=False)
     assert fine.summary["steps"] == coarse.summary["steps"]
     assert fine.attrs["output_sampling"].startswith("dense output") and "ends" in clipped.attrs["output_sampling"]
+    # the in-memory runner with a dense stepper samples at the output times too: the same samples as simulate's
+    from bearingsim.dynamics.run import Stepper, build, run_stepper
+
+    model, loadspec, y0, _ = build(case)
+    st = Stepper(model, loadspec, y0, tol=case.tolerance, h=min(1e-7, case.output_interval), method=case.method,
+                 dense=True)
+    mem = run_stepper(st, case.duration, case.output_interval).data
+    assert st.t >= case.duration  # (the stepper stops at or past the last output time)
+    for k in ("time", "inner_ring_displacement", "inner_contact_load"):
+        assert np.array_equal(np.asarray(mem[k]), np.asarray(fine.data[k])), k
     assert fine.summary["simulated_seconds"] == pytest.approx(2e-3, abs=1e-15)
     for k in ("time", "inner_ring_displacement", "inner_contact_load", "ball_orbital_speed", "cage_angle"):
         assert np.array_equal(np.asarray(fine.data[k])[::2], np.asarray(coarse.data[k])), k

@@ -41,13 +41,14 @@ __all__ = ["CHECKPOINT_SECONDS", "VARIABLES", "Results", "SimulationError", "Ste
 
 
 def run_stepper(stepper: Stepper, duration: float, output_interval: float, progress=None) -> Results:
-    """Run in memory (tests and the API without a file): samples at every output interval."""
+    """Run in memory (tests and the API without a file): samples at every output interval (interpolated when the
+    stepper has dense output, :meth:`Stepper.state_at`)."""
     n = int(round(duration / output_interval))
     samples = [stepper.sample()]
     t0 = stepper.t
     for i in range(1, n + 1):
-        stepper.advance(t0 + i * output_interval)
-        samples.append(stepper.sample())
+        t = t0 + i * output_interval
+        samples.append(stepper.sample(t, stepper.state_at(t)))
     return Results(data=stack_samples(samples), attrs={})
 
 
