@@ -47,7 +47,7 @@ def integrator_text(method: str, model: md.Model | None = None, ring_coupling: b
     """What the ``integrator`` attribute of an output file says about ``method``.  ROS34PW2 couples the
     inner ring's block with the balls unless the ring is held fixed (``G_RING_FIXED``) or
     ``ring_coupling`` is off; then its Jacobian is block-diagonal per ball."""
-    if method == "ros34w" and (not ring_coupling or (model is not None and model.gp[md.G_RING_FIXED] > 0.0)):
+    if method == "ros34w" and (not ring_coupling or (model is not None and model.gp[ly.G_RING_FIXED] > 0.0)):
         return "ROS34PW2 W-method (Rang & Angermann 2005), block-diagonal per ball"
     return INTEGRATOR_TEXT[method]
 
@@ -92,17 +92,17 @@ class Stepper:
             raise InputError("integrator", f"unknown integrator {self.method!r}", "use dopri5, ros2w or ros34w")
         self._args = fo.args_of(self.model, self.loadspec)
         self._info = np.zeros(4)
-        self._blk = np.array([md.N_RING + md.N_BALL * k for k in range(self.model.n_balls)], dtype=np.int64)
+        self._blk = np.array([ly.N_RING + ly.N_BALL * k for k in range(self.model.n_balls)], dtype=np.int64)
         # ROS34PW2 also carries the inner ring's block and its coupling with the balls (a stiff mode at
         # low rolling speed, docs/dynamics.md) unless the ring is held fixed
         m = self.model
-        if m.gp[md.G_RING_FIXED] > 0.0 or not self.ring_coupling:
+        if m.gp[ly.G_RING_FIXED] > 0.0 or not self.ring_coupling:
             self._rmass, self._bmass = np.zeros(0), np.zeros((0, 2))
         else:
-            self._rmass = np.array([m.gp[md.G_MR]] * 3 + [m.gp[md.G_ITR]] * 2)
+            self._rmass = np.array([m.gp[ly.G_MR]] * 3 + [m.gp[ly.G_ITR]] * 2)
             self._bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
         # the ROS34PW2 Jacobian lives from one call to the next (and in checkpoints)
-        self._ws = ig.ros34_workspace(m.n_balls, md.N_BALL, self._rmass.shape[0] == 5)
+        self._ws = ig.ros34_workspace(m.n_balls, ly.N_BALL, self._rmass.shape[0] == 5)
         self.dense = bool(self.dense) and self.method == "ros34w"
         #: the dense output's arrays (:func:`.integrate.common.dense_arrays`; saved in checkpoints), or None
         self._dense = dense_arrays(self.y.shape[0]) if self.dense else None
@@ -110,7 +110,7 @@ class Stepper:
         fun = fo.rhs_args_threaded if self.threads > 1 else fo.rhs_args
         kernel = engine_kernel(ig.METHODS[self.method].__name__.rsplit(".", 1)[1], fun)
         self.workspace = ig.Workspace(fun, self._args, self.y, self.atol, self.rtol, vec=self.vec, blk=self._blk,
-                                      kernel=kernel, nbk=md.N_BALL, rmass=self._rmass, bmass=self._bmass,
+                                      kernel=kernel, nbk=ly.N_BALL, rmass=self._rmass, bmass=self._bmass,
                                       jacobian=self._ws, info=self._info, dense=self._dense)
 
     def advance(self, t_end: float) -> None:
@@ -156,7 +156,7 @@ class Stepper:
         dy, diag, gd = fo.evaluate(self.model, t, y, self.loadspec)
         out = sample_from(self.model, t, y, diag, gd)
         out["power_loss_rolling"] = 0.0
-        if int(self.model.gp[md.G_TRAC]) == 2 and self.model.lubs is not None:
+        if int(self.model.gp[ly.G_TRAC]) == 2 and self.model.lubs is not None:
             # rolling viscous resistance share: the same state without it (Sakaguchi & Shibutani [S1] eqs. 4-5)
             from ..contact import slices
 
@@ -246,14 +246,14 @@ def sample_from(model: md.Model, t: float, y: np.ndarray, diag: np.ndarray, gd: 
     """Pack one output sample (dictionary of numpy arrays / floats, SI)."""
     oc = model.cage_offset
     nc = model.n_cages
-    cage = np.array([y[oc + md.N_CAGE * c + 9] for c in range(nc)])
-    cage_angle = np.array([y[oc + md.N_CAGE * c + 6] for c in range(nc)])
-    cage_pos = np.array([y[oc + md.N_CAGE * c:oc + md.N_CAGE * c + 3] for c in range(nc)])
+    cage = np.array([y[oc + ly.N_CAGE * c + 9] for c in range(nc)])
+    cage_angle = np.array([y[oc + ly.N_CAGE * c + 6] for c in range(nc)])
+    cage_pos = np.array([y[oc + ly.N_CAGE * c:oc + ly.N_CAGE * c + 3] for c in range(nc)])
     deform = np.zeros(nc)
     stress = np.zeros(nc)
     for c in range(nc):
         eta, _ = model.mode_slices(c)
-        n, z = eta.stop - eta.start, int(model.cp[c, md.C_Z])
+        n, z = eta.stop - eta.start, int(model.cp[c, ly.C_Z])
         if n:
             u = np.einsum("k,kjd->jd", y[eta], model.cage_modes[c, :n, 2:2 + 6 * z].reshape(n, z, 6)[:, :, :3])
             deform[c] = np.sqrt((u * u).sum(axis=1)).max()
