@@ -169,3 +169,27 @@ def _save_checkpoint(path: Path, stepper, index: int, fingerprint: str) -> None:
              **{f"dense_{i}": a for i, a in enumerate(stepper._dense or ())})
     os.replace(tmp, path)
 
+
+def _restore_arrays(c: dict, prefix: str, arrays) -> None:
+    """Copy the checkpoint's ``prefix_0``, ``prefix_1`` … into ``arrays`` in place, all or none (a checkpoint of an
+    older version that lacks them, or holds other shapes, leaves them as they are)."""
+    saved = [c.get(f"{prefix}_{i}") for i in range(len(arrays))]
+    if all(v is not None and v.shape == a.shape for v, a in zip(saved, arrays)):
+        for v, a in zip(saved, arrays):
+            a[...] = v
+
+
+def _restore_checkpoint(c: dict, stepper) -> None:
+    """Set a :class:`~.stepper.Stepper` to the state a checkpoint of :func:`_save_checkpoint` holds: t, y, the step
+    size and counts, the integrator's Jacobian (the same steps as without the stop; a checkpoint of an older version
+    has none, and the run then starts from a fresh Jacobian, the same trajectory to the tolerance) and, with dense
+    output, the last step and the controller's memory (without them — an older checkpoint, which stopped at an
+    output time — the next step starts afresh)."""
+    stepper.y[:] = c["y"]
+    stepper.t = float(c["t"])
+    stepper.h = float(c["h"])
+    stepper.steps = int(c["steps"])
+    stepper.rejected = int(c["rejected"])
+    _restore_arrays(c, "jacobian", stepper._ws)
+    if stepper._dense is not None:
+        _restore_arrays(c, "dense", stepper._dense)

@@ -27,6 +27,7 @@ from .output import (  # noqa: F401  (re-exported: the former names of this modu
     _checkpoint_path,
     _checkpoint_tmp,
     _read_checkpoint,
+    _restore_checkpoint,
     _save_checkpoint,
     _variables,
     _Writer,
@@ -161,24 +162,7 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
             if c is None:
                 _note(console, f"--resume: {why}; starting from the beginning")
         if c is not None:
-            stepper.y[:] = c["y"]
-            stepper.t = float(c["t"])
-            stepper.h = float(c["h"])
-            stepper.steps = int(c["steps"])
-            stepper.rejected = int(c["rejected"])
-            # the integrator's Jacobian: the same steps as without the stop (a checkpoint of an older version
-            # has none: the run then starts from a fresh Jacobian, the same trajectory to the tolerance)
-            saved = [c.get(f"jacobian_{i}") for i in range(len(stepper._ws))]
-            if all(v is not None and v.shape == a.shape for v, a in zip(saved, stepper._ws)):
-                for v, a in zip(saved, stepper._ws):
-                    a[...] = v
-            if stepper._dense is not None:
-                # the dense output's last step (its start and f at both ends) and the controller's memory: without
-                # them (an older checkpoint, which stopped at an output time) the next step starts afresh
-                saved = [c.get(f"dense_{i}") for i in range(2)]
-                if all(v is not None and v.shape == a.shape for v, a in zip(saved, stepper._dense)):
-                    for v, a in zip(saved, stepper._dense):
-                        a[...] = v
+            _restore_checkpoint(c, stepper)
             start = int(c["index"])
             writer = _Writer(out_path, model, attrs, start)
             if len(writer.ds.dimensions["time"]) < start:

@@ -36,17 +36,18 @@ STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (dive
 
 #: no vector groups: every component's relative tolerance is on its own magnitude (:func:`error_scale`)
 NO_VECTORS = np.zeros((0, 2), dtype=np.int64)
-#: no dense output (:func:`dense_arrays`): the calls stop exactly at t_end
-NO_DENSE = np.zeros((3, 0))
-NO_DENSE_STATE = np.array([0.0, 1.0, 0.0, 0.0])
 
 
 def dense_arrays(n: int) -> tuple[np.ndarray, np.ndarray]:
     """The arrays of a dense-output run of ROS34PW2 (:func:`.ros34pw2.integrate`) for n states: float[3, n]
     (y₀ and f(t₀, y₀) at the start of the last step, f at its end) and float[4] (t₀ [s], the step controller's
     previous error (1 at the start, as in a call without dense output), 1 after a rejected step, 1 when row 2
-    holds f at the current state)."""
+    holds f at the current state).  With n = 0: no dense output (:data:`NO_DENSE`)."""
     return np.zeros((3, n)), np.array([0.0, 1.0, 0.0, 0.0])
+
+
+#: no dense output (:func:`dense_arrays` for no states): the calls stop exactly at t_end
+NO_DENSE, NO_DENSE_STATE = dense_arrays(0)
 
 
 def hermite(t0: float, y0: np.ndarray, f0: np.ndarray, t1: float, y1: np.ndarray, f1: np.ndarray,
