@@ -210,22 +210,18 @@ def profile_steps(st, ls, duration: float, label: str) -> None:
 
 
 def _count_rhs(st):
-    """A counter of right-hand-side calls of a stepper's integrator: a Python wrapper cannot be called from
-    compiled code, so the count is estimated from the integrator's known costs (stages per step, Jacobian
-    refreshes); returns a function of the stepper giving the calls since now."""
+    """A counter of right-hand-side calls of a stepper's integrator; returns a function of the stepper giving the
+    calls since now.  ROS34PW2 counts its own (``Workspace.work``, exact); for the others the count is estimated from
+    the integrator's known costs (stages per step)."""
     s0, r0 = st.steps, st.rejected
+    w0 = int(st.workspace.work[0])
 
     def calls(s):
         acc, rej = s.steps - s0, s.rejected - r0
         if s.method == "dopri5":
             return 6 * (acc + rej) + 1  # 7 stages, the last reused as the next first (FSAL)
         if s.method == "ros34w":
-            from bearingsim.dynamics import model as md
-
-            # f(t, y) once per accepted step (kept after a rejection), 3 more stages per attempt; the Jacobian
-            # (the per-ball block columns, all balls at once, then the ring's 10 columns) every jac_every accepted
-            # steps (refreshes after two rejections in a row are not counted)
-            return 3 * (acc + rej) + acc + (md.N_BALL + 10) * (acc / s.jac_every)
+            return int(s.workspace.work[0]) - w0  # (f per accepted step, 3 per attempt, the Jacobian's sweeps)
         return 2 * (acc + rej) + acc
     return calls
 
@@ -239,7 +235,7 @@ def main(argv=None):
     ap.add_argument("--tolerance", type=float, default=None, help="integrator tolerance (default: the case file)")
     ap.add_argument("--n-slices", type=int, default=None, help="slices per contact ellipse, or Gauss nodes per "
                     "stretch with --slice-rule gauss (default: the case file)")
-    ap.add_argument("--slice-rule", default=None, choices=["strips", "gauss"],
+    ap.add_argument("--slice-rule", default=None, choices=["strips", "split", "gauss"],
                     help="traction quadrature (default: the case file's, strips)")
     ap.add_argument("--vehicle-speed", type=float, default=None, help="hub case (b) at this vehicle speed [km/h] "
                     "(default: the case file's 100 km/h)")

@@ -3,6 +3,7 @@
 Prints µs per call after warm-up, called from a numba loop (as the dynamics engine does)
 for 10 slices and a few other counts (best and median of repeated runs), and for the Gauss quadrature between the
 zeros of the rolling slip (n_slices = −k: k nodes per sub-interval; the case has two zeros, so 3k μ evaluations), for
+equal strips cut at those zeros ("split": n strips, n + 2 evaluations here), for
 the physical fluid model, the four-parameter curve and the boundary model.  Run:  python benchmarks/bench_slices.py
 Not a test: figures depend on the machine.
 """
@@ -96,7 +97,7 @@ def main(repeats: int = 25, n_calls: int = 10_000):
           f"{repeats} repeats; the best is the figure least disturbed by other load on the machine)")
     for model, fluid in (("mixed", "physical"), ("fluid", "curve"), ("boundary", "physical")):
         args = case(model, fluid)
-        for n_slices in (1, 5, 8, 10, 20, -2, -3, -4):
+        for n_slices in (1, 5, 8, 10, 20, S.SPLIT_BASE + 6, S.SPLIT_BASE + 8, -2, -3, -4):
             out = np.zeros(10)
             _loop(10, *args, n_slices, out)
             times = []
@@ -104,7 +105,8 @@ def main(repeats: int = 25, n_calls: int = 10_000):
                 t0 = time.perf_counter()
                 _loop(n_calls, *args, n_slices, out)
                 times.append((time.perf_counter() - t0) / n_calls * 1e6)
-            label = f"slices={n_slices:3d}" if n_slices > 0 else f"gauss ={-n_slices:3d}"
+            label = (f"split ={n_slices - S.SPLIT_BASE:3d}" if n_slices > S.SPLIT_BASE
+                     else f"slices={n_slices:3d}" if n_slices > 0 else f"gauss ={-n_slices:3d}")
             print(f"  model={model:8s} fluid={fluid:8s} {label}: best {min(times):6.3f}  "
                   f"median {float(np.median(times)):6.3f} µs/call")
 

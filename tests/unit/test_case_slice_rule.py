@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 from _cli import run  # tests/unit/_cli.py: the installed console script
 
-from bearingsim.contact.slices import GAUSS_MAX
+from bearingsim.contact.slices import GAUSS_MAX, SPLIT_BASE
 from bearingsim.dynamics.case import case_from_dict
 from bearingsim.errors import InputError
 
@@ -66,4 +66,21 @@ def test_gauss_case_runs_through_the_console_script_and_says_its_rule(tmp_path):
         "--quiet")
     with xr.open_dataset(out) as ds:
         assert ds.attrs["traction_quadrature"].startswith("Gauss-Legendre, 4 nodes"), ds.attrs
+        assert ds.sizes["time"] == 3
+
+
+def test_split_rule_reaches_the_kernel_above_split_base_and_says_its_rule(tmp_path):
+    """slice_rule = "split": n equal strips cut at the zeros of the rolling slip (tests/unit/test_split_strips.py);
+    the kernel takes SPLIT_BASE + n, a resume never mixes it with the equal strips, and the output file names it."""
+    import xarray as xr
+
+    split = case_from_dict(_data(slice_rule="split", n_slices=6), base=HUB.parent)
+    assert split.model_options()["n_slices"] == SPLIT_BASE + 6
+    assert split.fingerprint() != case_from_dict(_data(n_slices=6), base=HUB.parent).fingerprint()
+    case = tmp_path / "split.toml"
+    case.write_text(HUB.read_text().replace("n_slices = 8", 'n_slices = 6\nslice_rule = "split"'))
+    out = tmp_path / "s.nc"
+    run("simulate", str(case), "--duration", "0.2 ms", "--out", str(out), "--quiet")
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["traction_quadrature"] == "6 equal strips, cut at the zeros of the rolling slip", ds.attrs
         assert ds.sizes["time"] == 3

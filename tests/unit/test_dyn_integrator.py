@@ -172,6 +172,30 @@ def test_ros34w_step_statistics_leave_the_steps_unchanged_and_count_every_attemp
     assert st[:3].sum() > 0 and np.all(st[:3] >= 0)
 
 
+def test_ros34w_counts_its_right_hand_sides_factorisations_and_refreshes_exactly():
+    """info[4:7] (benchmarks/bench_dynamics.py --kernel, the cost model): a right-hand side per accepted step (f at
+    its start), three per attempt (stages 2–4), nbk per Jacobian refresh of the blocks; a W factorisation per new
+    step size, at least one per refresh.  Counted independently here by wrapping the right-hand side with a counter
+    (a numba function with an array in its arguments)."""
+    @njit
+    def counted(t, y, dy, args):
+        args[1][0] += 1.0
+        stiff(t, y, dy, (args[0],))
+
+    blk = np.array([0], dtype=np.int64)
+    for jac_every in (1, 5, 20):
+        y = np.array([1.0, 0.0, 1.0])
+        info = np.zeros(ig.INFO_SIZE)
+        calls = np.zeros(1)
+        st, t, _ = ig.advance_ros34(counted, (1e4, calls), 0.0, 1.0, y, 0.5, np.full(3, 1e-7), np.zeros(3), 1e-12,
+                                    10**6, info, blk, 3, jac_every, ig.ros34_workspace(1, 3, False))
+        acc, rej, nfun, nfac, njac = info[0], info[1], info[4], info[5], info[6]
+        assert st == ig.OK and t == 1.0 and rej > 0
+        assert nfun == calls[0] == acc + 3 * (acc + rej) + 3 * njac, (info, calls)
+        assert njac >= acc / jac_every and njac <= acc + rej
+        assert njac <= nfac <= acc + rej
+
+
 @pytest.mark.parametrize("kinematic", [False, True])
 def test_arrowhead_w_solve_equals_the_dense_one(kinematic):
     """The ring–ball coupled W of ROS34PW2 (ring block, ball blocks, coupling; Schur complement of the

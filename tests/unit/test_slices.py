@@ -85,7 +85,7 @@ def _random_state(rng):
                                 dict(model="mixed", roughness=0.02e-6, thermal=False),
                                 dict(model="mixed", roughness=0.3e-6, starvation_factor=0.7),
                                 dict(model="fluid", fluid_model="physical", viscoelastic=False)])
-@pytest.mark.parametrize("n_slices", [1, 4, 11])
+@pytest.mark.parametrize("n_slices", [1, 4, 11, S.SPLIT_BASE + 1, S.SPLIT_BASE + 6])
 def test_kernel_matches_reference(kw, n_slices):
     rng = np.random.default_rng(n_slices)
     lub = _lub(**kw)
@@ -380,11 +380,13 @@ def test_heated_stress_matches_fluid_shear_stress():
         assert tau == pytest.approx(ref, rel=1e-12), (p, u_s, h, eta_p, theta)
 
 
-@pytest.mark.parametrize("n_slices", [9, 10, -3, -4])
+@pytest.mark.parametrize("n_slices", [9, 10, -3, -4, S.SPLIT_BASE + 6, S.SPLIT_BASE + 9])
 def test_kernel_matches_reference_operating_range(n_slices):
     """Kernel vs reference at 1e-10 over speeds, slips and loads of ball bearings (all branches of the fast forms);
     n_slices < 0: the Gauss rule between the zeros of the rolling slip (the spin of 40 u rad/s puts two zeros in
-    the ellipse), whose nodes the reference evaluates with the model functions one point at a time."""
+    the ellipse), whose nodes the reference evaluates with the model functions one point at a time;
+    SPLIT_BASE + n: n strips cut at those zeros (the reference sorts the zeros into the strips' edges and takes
+    every part as a strip of its own width; 9 strips and two cuts need two passes of the eight lanes)."""
     rd = S.deformed_surface_radius(D, F_I * D)
     for kw in (dict(model="mixed", roughness=0.1e-6), dict(model="fluid"), dict(model="mixed", roughness=0.3e-6)):
         lub = _lub(**kw)
@@ -404,7 +406,7 @@ def test_kernel_matches_reference_operating_range(n_slices):
                     np.testing.assert_allclose(out, ref, rtol=1e-10, atol=1e-10 * scale, err_msg=str((kw, u, slip, q)))
 
 
-@pytest.mark.parametrize("n_slices", [4, 10, -3])
+@pytest.mark.parametrize("n_slices", [4, 10, -3, S.SPLIT_BASE + 6])
 def test_kernel_matches_reference_without_rolling_at_the_centre(n_slices):
     """The rolling resistance where the ellipse centre does not roll (u0 = 0: the kernel's k_zh branch, which the
     strips' and Gauss nodes' u0-scaled forms do not cover): the race spinning about the normal through the centre

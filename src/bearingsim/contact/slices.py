@@ -134,11 +134,13 @@ L_SIZE = 46
 
 # ---- the strip loop's lanes (traction_at): out[10:] holds these arrays of LANES floats, one lane per strip
 (LX, LOFF, LQ, LFRAC, LCHORD, LP, LSX, LSY, LSZ, LSM, LEX, LEY, LEZ, LU, LNX, LNY, LNZ, LSR, LMU, LA, LB, LL2X, LTL,
- LTAU, LZ1, LDEN, LNUM, LARG, LIU, LIS) = (k * LANES for k in range(30))
+ LTAU, LZ1, LDEN, LNUM, LARG, LIU, LIS, LRF) = (k * LANES for k in range(31))
 #: the contact's logarithms and its film's exponentials (the first two arrays: the strips' lanes come later)
 CL_LN, CL_EX = LX, LOFF
 #: length of traction_at's ``out``: the 10 results, then the lanes' work space
-TRACTION_OUT = 10 + 30 * LANES
+TRACTION_OUT = 10 + 31 * LANES
+#: n_slices = SPLIT_BASE + n: n equal strips, those holding a zero of the rolling slip split there
+SPLIT_BASE = 1_000_000
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
 FLUID_MODELS = {"curve": 0, "physical": 1}
@@ -288,6 +290,9 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     if not (q > 0.0 and a > 0.0 and b > 0.0) or n_slices == 0:
         return
     curv = surface_curvature(r_dev)
+    split = n_slices > SPLIT_BASE
+    if split:
+        n_slices -= SPLIT_BASE
 
     # orbital angular velocity of the ball centre about the race centre
     rbx, rby, rbz = cbx - crx, cby - cry, cbz - crz
@@ -471,19 +476,56 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     # strip or without load carry values that keep the functions finite and are not added.
     n_half = (n_slices + 1) // 2
     tabled = n_slices <= STRIP_TABLE_MAX
+    # split strips: the strips that hold a zero of the rolling slip are cut there (rolling_slip_zeros)
+    nroot = 0
+    z1 = z2 = 0.0
+    if split:
+        rdx, rdy, rdz = ny * mz - nz * my, nz * mx - nx * mz, nx * my - ny * mx
+        nroot, z1, z2 = rolling_slip_zeros(s0x * rdx + s0y * rdy + s0z * rdz, a * (asx * rdx + asy * rdy + asz * rdz),
+                                           bsx * rdx + bsy * rdy + bsz * rdz, a, curv)
+    n_parts = n_slices + nroot
+    e_x, e_k, e_ku, e_iz = -1.0, 0, 1, 0  # the cut strips' last edge (ξ = −1, uniform edge 0) and the next ones
+    hz1 = _area_primitive(z1) if nroot >= 1 and phys else 0.0
+    hz2 = _area_primitive(z2) if nroot >= 2 and phys else 0.0
     # rolling resistance (Zhou-Hoeprich) as k_zh u0^0.648 (Q_j/Q)^0.246 (u/u0)^0.648: one exponential per
     # contact (above), the strip's factor from the table, (u/u0)^0.648 by its series near 1 (_pow_0648)
     inv_u0 = 1.0 / u0 if u0 > 0.0 else 0.0
     film = need_f and fluid_kind != 0 and hc > 0.0  # the physical film law on the strips
-    for c0 in range(0, n_slices, LANES):
-        nl = min(LANES, n_slices - c0)
+    for c0 in range(0, n_parts, LANES):
+        nl = min(LANES, n_parts - c0)
         # ---- (A) the strips' loads and points, then their velocities (_lane_kinematics)
         for i in range(LANES):
             s = c0 + i
+            whole = True
+            if split and i < nl:
+                # the next part: from the last edge to the next one (uniform or a zero)
+                xi0, k0 = e_x, e_k
+                e_x, e_k, e_ku, e_iz = _next_edge(e_ku, e_iz, n_slices, nroot, z1, z2)
+                xi1, k1 = e_x, e_k
+                whole = k0 >= 0 and k1 >= 0
+                s = k0 if k0 >= 0 else (k1 - 1 if k1 >= 0 else e_ku - 1)  # the strip the part lies in
             j = s if s < n_half else n_slices - 1 - s
             qj = 0.0
             frac = area = xbar = 0.0
-            if i < nl:
+            rf = 0.0
+            if i < nl and not whole:
+                # a part of a strip cut at a zero: its load share, centroid and area from the strip formulae
+                frac = slice_fraction(xi0, xi1) if xi1 > xi0 else 0.0
+                if frac > 0.0:
+                    if phys:  # H at its edges: a strip edge's from the table, a zero's taken once per contact
+                        h0 = _EDGE_H[n_slices, k0] if k0 >= 0 and tabled else (
+                            hz1 if k0 == -1 else (hz2 if k0 == -2 else _area_primitive(xi0)))
+                        h1 = _EDGE_H[n_slices, k1] if k1 >= 0 and tabled else (
+                            hz1 if k1 == -1 else (hz2 if k1 == -2 else _area_primitive(xi1)))
+                        area = h1 - h0
+                    else:
+                        area = 1.0
+                    xbar = a * slice_centroid(xi0, xi1)
+                    rf = 0.5 * (xi1 - xi0) * n_slices  # (its width over a strip's; the rolling factor below)
+                else:
+                    frac = 0.0
+                qj = q * frac
+            elif i < nl:
                 if tabled:
                     # strip load share, centroid and area from the tables (the running differences, done once)
                     frac = _STRIP_FRAC[n_slices, j]
@@ -496,17 +538,33 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                     area = _area_primitive(xi1) - _area_primitive(xi0) if phys else 1.0
                     xbar = a * slice_centroid(xi0, xi1) if frac > 0.0 else 0.0
                 qj = q * frac
+                rf = 1.0
             x = 0.0
             if qj > 0.0:
-                x = -xbar if s >= n_half else xbar
+                if whole:
+                    x = -xbar if s >= n_half else xbar
+                    lw[LCHORD + i] = half_bn * area
+                else:
+                    x = xbar
+                    lw[LCHORD + i] = b * area / (xi1 - xi0)
                 # the strip's mean pressure and its mean chord (strip area)/(strip width) [m]
                 lw[LP + i] = qj * inv_ab / area if phys else 1.0
-                lw[LCHORD + i] = half_bn * area
             else:
                 qj = 0.0
             lw[LQ + i] = qj
+            lw[LRF + i] = rf
             lw[LFRAC + i] = frac
             lw[LX + i] = x
+        if split and do_roll and reg != 0:
+            # Zhou–Hoeprich's factor of a part of width w (a strip's w₀): (w/w₀)^0.754 (Q_j/Q)^0.246, on the lanes
+            for i in range(LANES):
+                lw[LA + i] = lw[LFRAC + i] if lw[LQ + i] > 0.0 else 1.0
+                lw[LB + i] = lw[LRF + i] if lw[LQ + i] > 0.0 else 1.0
+            vlog(lw, LA, lw, LA)
+            vlog(lw, LB, lw, LB)
+            for i in range(LANES):
+                lw[LA + i] = 0.246 * lw[LA + i] + 0.754 * lw[LB + i]
+            vexp(lw, LA, lw, LRF)
         _lane_kinematics(lw, curv, nx, ny, nz, mx, my, mz, s0x, s0y, s0z, bsx, bsy, bsz, asx, asy, asz, e0x, e0y, e0z,
                          bex, bey, bez, aex, aey, aez)
         # ---- (B) traction coefficients (seed eq. 2) on the eight lanes
@@ -532,20 +590,38 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
             fr = 0.0
             if do_roll:
                 frac = lw[LFRAC + i]
-                if reg == 0:
-                    fr = k_ir * math.sqrt(frac) * math.sqrt(uj)
+                if reg == 0:  # (a cut strip's part: Martin's factor √(w Q_j), w its width)
+                    fr = k_ir * math.sqrt(frac * lw[LRF + i] if split else frac) * math.sqrt(uj)
                 elif roll_zh:
                     if uj > 0.0:
-                        fr = (k_zh_u0 * (_STRIP_Q246[n_slices, j] if tabled else math.exp(0.246 * math.log(frac)))
-                              * _pow_0648(uj * inv_u0))
+                        rf = lw[LRF + i] if split else (_STRIP_Q246[n_slices, j] if tabled
+                                                         else math.exp(0.246 * math.log(frac)))
+                        fr = k_zh_u0 * rf * _pow_0648(uj * inv_u0)
                 elif uj > 0.0:  # no entraining speed at the centre (u0 = 0): the formula as it stands
-                    fr = k_zh * math.exp(0.648 * math.log(uj) + 0.246 * math.log(frac))
+                    if split:
+                        fr = k_zh * math.exp(0.648 * math.log(uj)) * lw[LRF + i]
+                    else:
+                        fr = k_zh * math.exp(0.648 * math.log(uj) + 0.246 * math.log(frac))
             dbx, dby, dbz, drx, dry, drz = _add_lane_traction(out, lw, i, mx, my, mz, nx, ny, nz, d0bx, d0by, d0bz,
                                                               d0rx, d0ry, d0rz)
             if do_roll and uj > 0.0:
                 inv_u = lw[LIU + i]
                 add_point_rolling(out, fr, uj, lw[LEX + i] * inv_u, lw[LEY + i] * inv_u, lw[LEZ + i] * inv_u, dbx, dby,
                                   dbz, drx, dry, drz, lw[LNX + i], lw[LNY + i], lw[LNZ + i], two_rx, lw[LA + i])
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def _next_edge(ku, iz, n, nroot, z1, z2):
+    """The next edge along ξ of the n equal strips cut at the zeros z1 < z2 (nroot of them) of the rolling slip,
+    the uniform edges −1 + 2k/n and the zeros merged in order (a zero on a uniform edge comes after it: a part of no
+    width).  ku: the next uniform edge's index, iz: the next zero's.  Returns (ξ, code, ku, iz) with code the uniform
+    edge's index k, or −1 for z1 and −2 for z2."""
+    xu = -1.0 + 2.0 * ku / n
+    if iz < nroot:
+        zz = z1 if iz == 0 else z2
+        if zz < xu:
+            return zz, -1 - iz, ku, iz + 1
+    return xu, ku, ku + 1, iz
+
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _lane_kinematics(lw, curv, nx, ny, nz, mx, my, mz, s0x, s0y, s0z, bsx, bsy, bsz, asx, asy, asz, e0x, e0y, e0z,
@@ -761,6 +837,8 @@ _STRIP_FRAC = np.zeros((STRIP_TABLE_MAX + 1, (STRIP_TABLE_MAX + 1) // 2))
 _STRIP_XI = np.zeros_like(_STRIP_FRAC)
 _STRIP_AREA = np.zeros_like(_STRIP_FRAC)
 _STRIP_Q246 = np.zeros_like(_STRIP_FRAC)
+#: _EDGE_H[n, k] = H(−1 + 2k/n): the area primitive at the edges of n equal strips (the cut strips' parts)
+_EDGE_H = np.zeros((STRIP_TABLE_MAX + 1, STRIP_TABLE_MAX + 1))
 
 
 def _fill_strip_tables():
@@ -780,6 +858,9 @@ def _fill_strip_tables():
 
 
 _fill_strip_tables()
+for _n in range(1, STRIP_TABLE_MAX + 1):
+    for _k in range(_n + 1):
+        _EDGE_H[_n, _k] = _area_primitive.py_func(-1.0 + 2.0 * _k / _n)
 
 #: Taylor coefficients of (1 + r)^0.648 (binomial series), r^0 … r^POW_SERIES_ORDER
 POW_SERIES_ORDER = 9
@@ -1431,9 +1512,19 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
 
     H = lambda z: z * math.sqrt(max(0.0, 1 - z * z)) + math.asin(min(1.0, max(-1.0, z)))  # noqa: E731
     if n_slices > 0:
-        width = 2 * a / n_slices
-        for j in range(n_slices):
-            xi0, xi1 = -1 + 2 * j / n_slices, -1 + 2 * (j + 1) / n_slices
+        # equal strips; with n_slices = SPLIT_BASE + n the strips that hold a zero of the rolling slip are cut there,
+        # each part a strip of its own width
+        nst = n_slices - SPLIT_BASE if n_slices > SPLIT_BASE else n_slices
+        edges = [-1 + 2 * j / nst for j in range(nst + 1)]
+        if n_slices > SPLIT_BASE:
+            rdir = np.cross(n, m)
+            ws = wb - wr
+            sc, _ = kin(p0, n)
+            sig = (float(sc @ rdir), a * float(np.cross(ws, m) @ rdir), float(np.cross(ws, n) @ rdir))
+            nroot, z1, z2 = rolling_slip_zeros.py_func(*sig, a, c)
+            edges = sorted(edges + [z1, z2][:nroot])
+        for xi0, xi1 in zip(edges, edges[1:]):
+            width = a * (xi1 - xi0)
             Fc = lambda z: (3 * z - z**3) / 4  # noqa: E731
             Gc = lambda z: 0.75 * (z * z / 2 - z**4 / 4)  # noqa: E731
             qj = q * (Fc(xi1) - Fc(xi0))

@@ -74,6 +74,18 @@ from ..errors import InputError
 from .loads import LoadHistory, SpeedHistory
 
 
+def kernel_slices(n: int, rule: str) -> int:
+    """The contact kernel's ``n_slices`` for a case's n_slices and slice_rule (:func:`.contact.slices.traction_at`:
+    n equal strips, −n Gauss nodes per stretch, SPLIT_BASE + n strips cut at the zeros of the rolling slip)."""
+    if rule == "gauss":
+        return -n
+    if rule == "split":
+        from ..contact.slices import SPLIT_BASE
+
+        return SPLIT_BASE + n
+    return n
+
+
 def _gauss_max() -> int:
     """Most Gauss nodes per stretch of the contact kernel (imported when asked: the kernel module is heavy)."""
     from ..contact.slices import GAUSS_MAX
@@ -151,8 +163,9 @@ class Case:
                              'add lubricant = "iso-vg-68" or set traction = "none"')
         if isinstance(self.n_slices, bool) or not (isinstance(self.n_slices, int) and 1 <= self.n_slices <= 64):
             raise InputError("n_slices", f"must be an integer in 1..64, got {self.n_slices!r}", "e.g. 8")
-        if self.slice_rule not in ("strips", "gauss"):
-            raise InputError("slice_rule", f"unknown rule {self.slice_rule!r}"[:120], 'use "strips" or "gauss"')
+        if self.slice_rule not in ("strips", "gauss", "split"):
+            raise InputError("slice_rule", f"unknown rule {self.slice_rule!r}"[:120],
+                             'use "strips", "split" or "gauss"')
         if self.slice_rule == "gauss" and self.n_slices > (GAUSS_MAX := _gauss_max()):
             raise InputError("n_slices", f"with slice_rule = \"gauss\" it counts nodes per stretch: 1..{GAUSS_MAX}, "
                              f"got {self.n_slices}", "e.g. n_slices = 4")
@@ -240,7 +253,7 @@ class Case:
             lub["solids"] = self.solids_shear()
         return dict(ring_mass=self.ring_mass, ring_inertia=self.ring_inertia, gravity=self.gravity,
                     damping_alpha=self.damping_alpha(), traction=self.traction,
-                    n_slices=-self.n_slices if self.slice_rule == "gauss" else self.n_slices,
+                    n_slices=kernel_slices(self.n_slices, self.slice_rule),
                     load_point=self.load_point, speed=self.speed.as_tuple(), lubricant=self.lubricant,
                     temperature=self.temperature, lubrication=lub or None, ball_orbit=self.ball_orbit,
                     cage_mass=c.get("mass"), pocket_clearance=c.get("pocket_clearance"),

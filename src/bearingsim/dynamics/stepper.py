@@ -91,7 +91,7 @@ class Stepper:
         if self.method not in ig.METHODS:
             raise InputError("integrator", f"unknown integrator {self.method!r}", "use dopri5, ros2w or ros34w")
         self._args = fo.args_of(self.model, self.loadspec)
-        self._info = np.zeros(4)
+        self._info = np.zeros(ig.INFO_SIZE)
         self._blk = np.array([ly.N_RING + ly.N_BALL * k for k in range(self.model.n_balls)], dtype=np.int64)
         # ROS34PW2 also carries the inner ring's block and its coupling with the balls (a stiff mode at
         # low rolling speed, docs/dynamics.md) unless the ring is held fixed

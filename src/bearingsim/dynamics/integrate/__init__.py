@@ -28,7 +28,7 @@ constants, and the linear-algebra helpers under their former private names.
 from __future__ import annotations
 
 from . import dopri5, ros2, ros34pw2
-from .base import Workspace, ros34_workspace
+from .base import INFO_SIZE, Workspace, ros34_workspace
 from .common import MAX_STEPS, NOT_FINITE, OK, STATUS_TEXT, STEP_TOO_SMALL, Status, clip_step, error_norm
 from .dopri5 import (  # noqa: F401
     A21,
@@ -123,10 +123,9 @@ _coupled_apply_w = coupled_apply_w
 _stages = dopri5.stages
 _ros34_stages = ros34pw2.stages
 
-__all__ = ["METHODS", "MAX_STEPS", "NOT_FINITE", "NR", "OK", "R34_G", "ROS2_GAMMA", "STATUS_TEXT", "STEP_TOO_SMALL",
-           "Status", "Workspace", "advance", "advance_ros2", "advance_ros34", "block_w_inverse", "fixed_steps",
-           "fixed_steps_ros34",
-           "no_coupling", "ros34_workspace", "w_solve"]
+__all__ = ["INFO_SIZE", "METHODS", "MAX_STEPS", "NOT_FINITE", "NR", "OK", "R34_G", "ROS2_GAMMA", "STATUS_TEXT",
+           "STEP_TOO_SMALL", "Status", "Workspace", "advance", "advance_ros2", "advance_ros34", "block_w_inverse",
+           "fixed_steps", "fixed_steps_ros34", "no_coupling", "ros34_workspace", "w_solve"]
 
 
 def advance_workspace(ws: Workspace, t_end: float, method: str) -> Status:

@@ -10,7 +10,8 @@ checkpoint saves).  Each method module (:mod:`.dopri5`, :mod:`.ros2`, :mod:`.ros
 * ``integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, ...)`` — the numba
   kernel: integrates y in place from t to exactly t_end with error control and returns
   (status, t reached, proposed next step); info[0:4] ← steps accepted, steps rejected, index of the
-  component with the largest error at the last step, that scaled error;
+  component with the largest error at the last step, that scaled error; ROS34PW2 also info[4:7] ← the
+  right-hand sides evaluated, the W factorisations and the Jacobian refreshes (:attr:`Workspace.work`);
 * ``advance(ws, t_end) -> Status`` — the same on a :class:`Workspace`: on success ws.t = t_end and
   ws.h the proposed step; on failure ws.t is the time reached and ws.h unchanged; ws.steps and
   ws.rejected count the steps.  With ``ws.dense`` (ROS34PW2's dense output) the call instead stops at the
@@ -35,6 +36,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .common import NO_VECTORS, OK, Status
+
+#: entries of a workspace's ``info`` (module docstring)
+INFO_SIZE = 7
 
 
 def ros34_workspace(nb: int, nbk: int, coupled: bool) -> tuple:
@@ -75,9 +79,12 @@ class Workspace:
     rmass: np.ndarray = field(default_factory=lambda: np.zeros(0))
     bmass: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
     jacobian: tuple | None = None  #: ROS34PW2's Jacobian (:func:`ros34_workspace`), made on first use
-    info: np.ndarray = field(default_factory=lambda: np.zeros(4))  #: see the module docstring
+    info: np.ndarray = field(default_factory=lambda: np.zeros(INFO_SIZE))  #: see the module docstring
     steps: int = 0  #: accepted steps so far
     rejected: int = 0  #: rejected steps so far
+    #: ROS34PW2's work so far: right-hand sides evaluated, W factorisations, Jacobian refreshes (zeros for the
+    #: other methods)
+    work: np.ndarray = field(default_factory=lambda: np.zeros(3, dtype=np.int64))
     #: the method's kernel specialised for ``fun`` (:func:`.specialised.engine_kernel`), or None: the generic one
     kernel: object = None
     #: ROS34PW2's dense output (:func:`.common.dense_arrays`): the calls stop at the first step at or past t_end
@@ -88,6 +95,9 @@ class Workspace:
         """Book the result of one kernel call (see the module docstring) and return its status."""
         self.steps += int(self.info[0])
         self.rejected += int(self.info[1])
+        if self.info.shape[0] >= INFO_SIZE:
+            self.work += self.info[4:7].astype(np.int64)
+            self.info[4:7] = 0.0
         self.t = t
         if status == OK:
             self.h = h

@@ -117,7 +117,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     (:func:`.base.ros34_workspace`) carries the Jacobian and the steps since its refresh from one call
     to the next; with ``rmass`` = (m, m, m, I_t, I_t) of the inner ring (the first 10 states) and
     ``bmass`` (m, J) per ball block, J also holds the ring's block and the ring–ball coupling.
-    4 right-hand sides per step.  Same other arguments and return values as :func:`.dopri5.integrate`.
+    4 right-hand sides per step.  Same other arguments and return values as :func:`.dopri5.integrate`; when
+    ``info`` has 7 entries, info[4:7] ← the right-hand sides evaluated, the W factorisations and the Jacobian
+    refreshes of the call (exact counts: the cost model of ``benchmarks/bench_dynamics.py --kernel``).
     ``stats`` (profiling: ``benchmarks/bench_dynamics.py --steps``): when it holds 2n floats, every attempted
     step adds each component's squared scaled error to stats[i] and 1 to stats[n + i] of its largest component
     (the results do not change).  ``threaded``: W's ball blocks formed on ``numba.get_num_threads()`` threads
@@ -165,6 +167,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     h_w = -1.0
     nacc = 0
     nrej = 0
+    nfun = 0  # right-hand sides evaluated, W factorisations, Jacobian refreshes (info[4:7])
+    nfac = 0
+    njac = 0
     status = OK
     have_f0 = False
     prev_rej = False
@@ -188,6 +193,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             hs, last = clip_step(t, h, t_end)
         if not have_f0:
             fun(t, y, f0, args)
+            nfun += 1
             have_f0 = True
         if need_jac or since >= jac_every:
             # the ring's columns first: their sweeps leave the balls where f0 put them, so the engine's right-hand
@@ -196,7 +202,10 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             if coupled:
                 ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1)
                 ring_rows(jbr, rmass, bmass, jrb)
+                nfun += NR
             block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
+            nfun += nbk
+            njac += 1
             need_jac = False
             since = 0
             h_w = -1.0
@@ -209,7 +218,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             else:
                 w_inverse(jac, hs, R34_G, winv, wm)
             h_w = hs
+            nfac += 1
         stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
+        nfun += 3
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
@@ -252,6 +263,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     if dense:
         if status == OK and not have_f0:
             fun(t, y, f0, args)  # (the next step's f0: computed once, carried in dns[2])
+            nfun += 1
             have_f0 = True
         if have_f0:
             for i in range(n):
@@ -261,6 +273,10 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         dst[3] = 1.0 if have_f0 else 0.0
     info[0] = nacc
     info[1] = nrej
+    if info.shape[0] >= 7:
+        info[4] = nfun
+        info[5] = nfac
+        info[6] = njac
     return status, t, h
 
 
