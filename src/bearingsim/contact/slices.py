@@ -260,7 +260,9 @@ def contact_traction(q, a, b, r_dev, centre, normal, major, ball_centre, v_ball,
     lub float[:] from :func:`pack_lubrication_parameters`; n_slices ≥ 1: that many equal strips;
     n_slices ≤ −1: Gauss–Legendre quadrature with −n_slices ≤ GAUSS_MAX nodes on each sub-interval between
     the zeros of the rolling slip (:func:`_gauss_quadrature`, the strip model's limit of infinitely many
-    strips); 0: nothing.
+    strips); n_slices = SPLIT_BASE + n: n equal strips, those that hold a zero of the rolling slip cut there, each
+    part a strip of its own width (seed eq. 1's strip formulae; its rolling resistance with its own length:
+    Zhou & Hoeprich 1991 eq. 17, or Martin); 0: nothing.
 
     out float[10] ← force on the ball (3) [N], moment on the ball about ball_centre (3)
     [N m], moment on the race about race_centre (3) [N m], power lost [W] (≥ 0); an out of TRACTION_OUT floats or
@@ -609,11 +611,12 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                 add_point_rolling(out, fr, uj, lw[LEX + i] * inv_u, lw[LEY + i] * inv_u, lw[LEZ + i] * inv_u, dbx, dby,
                                   dbz, drx, dry, drz, lw[LNX + i], lw[LNY + i], lw[LNZ + i], two_rx, lw[LA + i])
 
+
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _next_edge(ku, iz, n, nroot, z1, z2):
-    """The next edge along ξ of the n equal strips cut at the zeros z1 < z2 (nroot of them) of the rolling slip,
-    the uniform edges −1 + 2k/n and the zeros merged in order (a zero on a uniform edge comes after it: a part of no
-    width).  ku: the next uniform edge's index, iz: the next zero's.  Returns (ξ, code, ku, iz) with code the uniform
+    """The next edge along ξ = x/a [-] of the n equal strips cut at the zeros z1 < z2 (nroot of them) of the rolling
+    slip, the uniform edges −1 + 2k/n and the zeros merged in order (a zero on a uniform edge comes after it: a part of
+    no width).  ku: the next uniform edge's index, iz: the next zero's.  Returns (ξ, code, ku, iz) with code the uniform
     edge's index k, or −1 for z1 and −2 for z2."""
     xu = -1.0 + 2.0 * ku / n
     if iz < nroot:

@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .base import Workspace, ros34_workspace
+from .base import INFO_SIZE, Workspace, ros34_workspace
 from .common import (
     MAX_STEPS,
     NO_DENSE,
@@ -118,8 +118,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     to the next; with ``rmass`` = (m, m, m, I_t, I_t) of the inner ring (the first 10 states) and
     ``bmass`` (m, J) per ball block, J also holds the ring's block and the ring–ball coupling.
     4 right-hand sides per step.  Same other arguments and return values as :func:`.dopri5.integrate`; when
-    ``info`` has 7 entries, info[4:7] ← the right-hand sides evaluated, the W factorisations and the Jacobian
-    refreshes of the call (exact counts: the cost model of ``benchmarks/bench_dynamics.py --kernel``).
+    ``info`` has INFO_SIZE = 7 entries, info[4:7] ← the right-hand sides evaluated, the W factorisations and the
+    Jacobian refreshes of the call (exact counts: the cost model of ``benchmarks/bench_dynamics.py --kernel``).
     ``stats`` (profiling: ``benchmarks/bench_dynamics.py --steps``): when it holds 2n floats, every attempted
     step adds each component's squared scaled error to stats[i] and 1 to stats[n + i] of its largest component
     (the results do not change).  ``threaded``: W's ball blocks formed on ``numba.get_num_threads()`` threads
@@ -273,7 +273,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         dst[3] = 1.0 if have_f0 else 0.0
     info[0] = nacc
     info[1] = nrej
-    if info.shape[0] >= 7:
+    if info.shape[0] >= INFO_SIZE:
         info[4] = nfun
         info[5] = nfac
         info[6] = njac
