@@ -22,7 +22,9 @@ from hypothesis import strategies as st
 
 from bearingsim.contact import slices as S
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))  # bench_slices: the bench contact
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from test_slice_quadrature import _hub_accelerations  # noqa: E402 - the hub states of test_dyn_options
 
 
 @settings(max_examples=300, deadline=None)
@@ -85,9 +87,7 @@ def test_force_is_continuous_as_the_zeros_cross_the_strips():
 
 
 def _hub_error(n_slices, scale, ref):
-    sys.path.insert(0, str(Path(__file__).resolve().parent))
-    from test_slice_quadrature import _hub_accelerations
-
+    """(relative error of the ball accelerations, relative error of the power loss) against ref."""
     acc, p = _hub_accelerations(n_slices, scale)
     return np.linalg.norm(acc - ref[0]) / np.linalg.norm(ref[0]), p / ref[1] - 1.0
 
@@ -98,9 +98,6 @@ def test_hub_states_six_cut_strips_against_the_strip_limit(scale):
     (traction forces and moments of the 64 contacts) with 6 strips cut at the zeros against 1,024 equal strips, the
     strip model's limit (128 strips differ from it by 0.1–0.3 %).  Measured: 0.96 / 1.39 / 2.19 % (8 equal strips
     8.3 / 2.7 / 14.3 %; 4 Gauss nodes per stretch 0.25 / 2.4 / 0.52 % with 8–12 evaluations), power within 1.1 %."""
-    sys.path.insert(0, str(Path(__file__).resolve().parent))
-    from test_slice_quadrature import _hub_accelerations
-
     ref = _hub_accelerations(1024, scale)
     err, perr = _hub_error(S.SPLIT_BASE + 6, scale, ref)
     err8, _ = _hub_error(8, scale, ref)
@@ -111,9 +108,6 @@ def test_hub_states_six_cut_strips_against_the_strip_limit(scale):
 
 def test_cut_strips_converge_to_the_strip_limit():
     """More strips, cut at the zeros: closer to the limit (6 → 16 strips on the hardest hub state, 2.2 → 1.4 %)."""
-    sys.path.insert(0, str(Path(__file__).resolve().parent))
-    from test_slice_quadrature import _hub_accelerations
-
     ref = _hub_accelerations(1024, 1.01)
     errs = [_hub_error(S.SPLIT_BASE + n, 1.01, ref)[0] for n in (4, 6, 16)]
     assert errs[2] < errs[1] < errs[0], errs

@@ -482,9 +482,8 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     nroot = 0
     z1 = z2 = 0.0
     if split:
-        rdx, rdy, rdz = ny * mz - nz * my, nz * mx - nx * mz, nx * my - ny * mx
-        nroot, z1, z2 = rolling_slip_zeros(s0x * rdx + s0y * rdy + s0z * rdz, a * (asx * rdx + asy * rdy + asz * rdz),
-                                           bsx * rdx + bsy * rdy + bsz * rdz, a, curv)
+        nroot, z1, z2 = slip_zeros_on_major_axis(s0x, s0y, s0z, asx, asy, asz, bsx, bsy, bsz, nx, ny, nz, mx, my, mz,
+                                                 a, curv)
     n_parts = n_slices + nroot
     e_x, e_k, e_ku, e_iz = -1.0, 0, 1, 0  # the cut strips' last edge (ξ = −1, uniform edge 0) and the next ones
     hz1 = _area_primitive(z1) if nroot >= 1 and phys else 0.0
@@ -1104,6 +1103,19 @@ def rolling_slip_zeros(sig0, sig1, sig2, a, curv):
     return nr, z1, z2
 
 
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def slip_zeros_on_major_axis(s0x, s0y, s0z, asx, asy, asz, bsx, bsy, bsz, nx, ny, nz, mx, my, mz, a, curv):
+    """:func:`rolling_slip_zeros` from the contact's sliding field: the centre's sliding velocity s0 [m/s] and its
+    rates along e_major (as = ω_s × e_major) and the normal (bs = ω_s × n) [1/s] projected on the rolling direction
+    r = n × e_major (σ0 = s0·r, σ1 = a as·r, σ2 = bs·r).  Returns (count, ξ1, ξ2).  The one place both the Gauss rule
+    and the cut strips take their zeros from."""
+    rdx, rdy, rdz = ny * mz - nz * my, nz * mx - nx * mz, nx * my - ny * mx
+    sig0 = s0x * rdx + s0y * rdy + s0z * rdz
+    sig1 = a * (asx * rdx + asy * rdy + asz * rdz)
+    sig2 = bsx * rdx + bsy * rdy + bsz * rdz
+    return rolling_slip_zeros(sig0, sig1, sig2, a, curv)
+
+
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _gauss_node(m, ng, nroot, z1, z2):
     """Node m of :func:`_gauss_quadrature`'s rule: ng Gauss–Legendre nodes on each of the nroot + 1 sub-intervals of
@@ -1156,16 +1168,13 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
     The traction coefficient at a node is the strip loop's film law (seed eq. 2) for one point,
     :func:`_film_lanes` on eight nodes at a time (out[10:] their lanes; ln_eta0 = ln η0).  Writes out[0:10] like
     :func:`contact_traction`.  All SI."""
-    # rolling direction and the rates of the velocity fields along e_major and n
-    rdx, rdy, rdz = ny * mz - nz * my, nz * mx - nx * mz, nx * my - ny * mx
+    # the rates of the velocity fields along e_major and n
     asx, asy, asz = wsy * mz - wsz * my, wsz * mx - wsx * mz, wsx * my - wsy * mx
     bsx, bsy, bsz = wsy * nz - wsz * ny, wsz * nx - wsx * nz, wsx * ny - wsy * nx
     aex, aey, aez = wey * mz - wez * my, wez * mx - wex * mz, wex * my - wey * mx
     bex, bey, bez = wey * nz - wez * ny, wez * nx - wex * nz, wex * ny - wey * nx
-    sig0 = s0x * rdx + s0y * rdy + s0z * rdz
-    sig1 = a * (asx * rdx + asy * rdy + asz * rdz)
-    sig2 = bsx * rdx + bsy * rdy + bsz * rdz
-    nroot, z1, z2 = rolling_slip_zeros(sig0, sig1, sig2, a, curv)
+    nroot, z1, z2 = slip_zeros_on_major_axis(s0x, s0y, s0z, asx, asy, asz, bsx, bsy, bsz, nx, ny, nz, mx, my, mz, a,
+                                             curv)
     rx = lub[L_RX]
     alpha = lub[L_ALPHA]
     e_eff = lub[L_EEFF]
@@ -1514,17 +1523,22 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                                                                  load / (length * e_eff * rx), rx, alpha, length)
 
     H = lambda z: z * math.sqrt(max(0.0, 1 - z * z)) + math.asin(min(1.0, max(-1.0, z)))  # noqa: E731
+
+    def zeros():
+        """The zeros of the rolling slip along the major axis (rolling_slip_zeros on this contact's field)."""
+        rdir = np.cross(n, m)
+        ws = wb - wr
+        sc, _ = kin(p0, n)
+        sig = (float(sc @ rdir), a * float(np.cross(ws, m) @ rdir), float(np.cross(ws, n) @ rdir))
+        return rolling_slip_zeros.py_func(*sig, a, c)
+
     if n_slices > 0:
         # equal strips; with n_slices = SPLIT_BASE + n the strips that hold a zero of the rolling slip are cut there,
         # each part a strip of its own width
         nst = n_slices - SPLIT_BASE if n_slices > SPLIT_BASE else n_slices
         edges = [-1 + 2 * j / nst for j in range(nst + 1)]
         if n_slices > SPLIT_BASE:
-            rdir = np.cross(n, m)
-            ws = wb - wr
-            sc, _ = kin(p0, n)
-            sig = (float(sc @ rdir), a * float(np.cross(ws, m) @ rdir), float(np.cross(ws, n) @ rdir))
-            nroot, z1, z2 = rolling_slip_zeros.py_func(*sig, a, c)
+            nroot, z1, z2 = zeros()
             edges = sorted(edges + [z1, z2][:nroot])
         for xi0, xi1 in zip(edges, edges[1:]):
             width = a * (xi1 - xi0)
@@ -1540,11 +1554,7 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
         # Gauss nodes between the zeros of the rolling slip, graded towards the zeros (the kernel's rule,
         # _gauss_quadrature): densities per unit ξ — load (3Q/4)(1 − ξ²), p̄ = 3Q√(1 − ξ²)/(8ab), chord 2b√(1 − ξ²)
         ng = -n_slices
-        rdir = np.cross(n, m)
-        ws = wb - wr
-        sc, _ = kin(p0, n)
-        sig = (float(sc @ rdir), a * float(np.cross(ws, m) @ rdir), float(np.cross(ws, n) @ rdir))
-        nroot, z1, z2 = rolling_slip_zeros.py_func(*sig, a, c)
+        nroot, z1, z2 = zeros()
         edges = [-1.0] + [z1, z2][:nroot] + [1.0]
         xg, wg = np.polynomial.legendre.leggauss(ng)
         for k in range(nroot + 1):
