@@ -7,6 +7,7 @@ Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 2
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
          [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8] [--slice-rule strips|gauss]
          [--vehicle-speed KMH] [--profile] [--kernel] [--accuracy] [--threads N] [--steps]
+         [--timeline WINDOW [--jac-every N]]
 --slice-rule gauss integrates the traction with --n-slices Gauss nodes per stretch between the zeros of the rolling
 slip (the case key slice_rule); --vehicle-speed runs the hub case (b) at that vehicle speed (10 km/h: 83.55 rpm).
 --accuracy compares the ring displacement of the chosen settings with a DOPRI5 run at
@@ -173,13 +174,13 @@ def profile_steps(st, ls, duration: float, label: str) -> None:
 
     from bearingsim.dynamics import forces as fo
     from bearingsim.dynamics import model as md
-    from bearingsim.dynamics.integrate import ros34pw2
+    from bearingsim.dynamics.integrate import INFO_SIZE, ros34pw2
 
     m = st.model
     ws = st.workspace
     n = st.y.shape[0]
     stats = np.zeros(2 * n)
-    info = np.zeros(4)
+    info = np.zeros(INFO_SIZE)  # (the integrator writes its work counts past the first four)
     t0 = time.perf_counter()
     status, t, h = ros34pw2.integrate(ws.fun, ws.args, st.t, st.t + duration, st.y, st.h, st.atol, st.rtol,
                                       st.h_min, 10**8, info, ws.blk, ws.nbk, st.jac_every, st._ws, ws.rmass,
@@ -209,6 +210,59 @@ def profile_steps(st, ls, duration: float, label: str) -> None:
     qi = diag[:, fo.D_QI]
     print(f"  inner contact load range {qi.min():.0f}..{qi.max():.0f} N; balls below 20 % of the largest carry "
           f"{per_ball[qi < 0.2 * qi.max()].sum():.3f} of the error")
+
+
+def step_timeline(name: str, duration: float, window: float, vehicle_speed: float | None = None,
+                  slice_rule: str | None = None, n_slices: int | None = None, tolerance: float | None = None,
+                  jac_every: int = 20) -> dict:
+    """Where in time the steps go (issue 14, fifteenth pass): the case's integrator stepping from t = 0 over
+    ``duration`` [s], reported per ``window`` [s]: accepted and rejected steps, Jacobian refreshes and the inner
+    contacts' load range at the window's end; then the share of all steps taken in windows that step faster than
+    twice the median window, and the steps the run would take if every window stepped at the median rate.
+    Exact counts (the integrator's own; they do not depend on the machine).  Returns the per-window arrays."""
+    import numpy as np
+
+    from bearingsim.dynamics import forces as fo
+    from bearingsim.dynamics import run as R
+
+    case = load_bench_case(name, vehicle_speed, slice_rule)
+    if n_slices:
+        case = dataclasses.replace(case, n_slices=n_slices)
+    if tolerance:
+        case = dataclasses.replace(case, tolerance=tolerance)
+    m, ls, y, _ = R.build(case)
+    # dense output, as simulate() runs: the steps do not stop at the windows' ends, so the trajectory is the run's
+    st = R.Stepper(m, ls, y.copy(), tol=case.tolerance, method=case.method, threads=1, jac_every=jac_every,
+                   dense=True)
+    nw = max(1, int(round(duration / window)))
+    steps = np.zeros(nw, dtype=int)
+    rej = np.zeros(nw, dtype=int)
+    jacs = np.zeros(nw, dtype=int)
+    qlo = np.zeros(nw)
+    qhi = np.zeros(nw)
+    work = st.workspace.work if case.method == "ros34w" else None
+    for k in range(nw):
+        s0, r0 = st.steps, st.rejected
+        j0 = int(work[2]) if work is not None else 0
+        st.advance((k + 1) * window)
+        steps[k], rej[k] = st.steps - s0, st.rejected - r0
+        jacs[k] = (int(work[2]) - j0) if work is not None else 0
+        _, diag, _ = fo.evaluate(m, st.t, st.y, ls)
+        qlo[k], qhi[k] = diag[:, fo.D_QI].min(), diag[:, fo.D_QI].max()
+    print(f"case ({name}) {case.method} tol {case.tolerance:g} slice_rule={case.slice_rule} n_slices={case.n_slices}"
+          + (f" vehicle_speed={vehicle_speed:g} km/h" if vehicle_speed is not None else "")
+          + f": steps per {window * 1e6:.4g} us window")
+    print("   t_end [ms]  steps  rejected  mean step [us]  Jacobians  inner loads [N]")
+    for k in range(nw):
+        print(f"  {(k + 1) * window * 1e3:10.3f} {steps[k]:6d} {rej[k]:9d} {window / max(steps[k], 1) * 1e6:15.3g}"
+              f" {jacs[k]:10d}  {qlo[k]:6.0f}..{qhi[k]:.0f}")
+    med = float(np.median(steps))
+    fast = steps > 2.0 * med
+    total = int(steps.sum())
+    print(f"  {total} steps ({int(rej.sum())} rejected) in {nw} windows; median {med:g} per window; "
+          f"{fast.sum()} windows step faster than twice the median and hold {steps[fast].sum() / max(total, 1):.3f} "
+          f"of the steps; at the median rate throughout: {med * nw:.0f} steps")
+    return {"steps": steps, "rejected": rej, "jacobians": jacs, "q_min": qlo, "q_max": qhi}
 
 
 def _count_rhs(st):
@@ -249,7 +303,21 @@ def main(argv=None):
                     "report what limits the step (numba profiling)")
     ap.add_argument("--steps", action="store_true", help="profile what limits the ROS34PW2 step (error share per "
                     "state class, rejected steps) over --duration (default 1 ms)")
+    ap.add_argument("--timeline", default=None, metavar="WINDOW", help='where in time the steps go: steps, '
+                    'rejections, Jacobian refreshes and inner loads per WINDOW (e.g. "0.2 ms") over --duration '
+                    '(default 20 ms) from t = 0')
+    ap.add_argument("--jac-every", type=int, default=20, help="with --timeline: steps between Jacobian refreshes "
+                    "(default 20, the engine's)")
     a = ap.parse_args(argv)
+    if a.timeline:
+        from bearingsim.units import parse_quantity
+
+        dur = parse_quantity(a.duration, "time", "--duration") if a.duration else 20e-3
+        win = parse_quantity(a.timeline, "time", "--timeline")
+        for name in (["a", "b"] if a.case == "both" else [a.case]):
+            step_timeline(name, dur, win, a.vehicle_speed if name == "b" else None, a.slice_rule, a.n_slices,
+                          a.tolerance, a.jac_every)
+        return
     if a.steps:
         from bearingsim.units import parse_quantity
 
