@@ -81,6 +81,21 @@ def deep_groove(deep_groove_toml):
     return load_bearing(deep_groove_toml)
 
 
+@pytest.fixture(scope="session")
+def benchmark_module():
+    """Factory: import a script of benchmarks/ by its name (e.g. "bench_dynamics") as a module."""
+    import importlib.util
+
+    def _load(name: str):
+        path = Path(__file__).resolve().parents[1] / "benchmarks" / f"{name}.py"
+        spec = importlib.util.spec_from_file_location(name, path)
+        mod = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(mod)
+        return mod
+
+    return _load
+
+
 @pytest.fixture
 def write_toml(tmp_path):
     """Factory: write a TOML text to a fresh file in tmp_path and return its path."""

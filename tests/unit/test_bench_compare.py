@@ -3,23 +3,11 @@ depend on the machine)."""
 
 from __future__ import annotations
 
-import importlib.util
-from pathlib import Path
-
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
 
-
-def _module():
-    spec = importlib.util.spec_from_file_location("bench_compare", ROOT / "benchmarks" / "bench_compare.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-def test_first_figure_of_each_benchmark_line_kind():
-    bc = _module()
+def test_first_figure_of_each_benchmark_line_kind(benchmark_module):
+    bc = benchmark_module("bench_compare")
     dyn = ("case (b) traction=slices integrator=ros34w tol=1e-06 n_slices=8 threads=2: 100 ms simulated in 11 s "
            "-> 109.6 wall s per simulated s (217.9 CPU s); 35074 steps (2030 rejected); peak RSS 341 MB")
     assert bc.first_figure(dyn) == 109.6
@@ -29,7 +17,7 @@ def test_first_figure_of_each_benchmark_line_kind():
     assert bc.first_figure("no figure on this line") is None
 
 
-def test_command_needs_the_separator():
-    bc = _module()
+def test_command_needs_the_separator(benchmark_module):
+    bc = benchmark_module("bench_compare")
     with pytest.raises(SystemExit):
         bc.main(["HEAD", "bench_dynamics.py"])

@@ -4,7 +4,6 @@ windows stop it); the console path gives the table and the summary line."""
 
 from __future__ import annotations
 
-import importlib.util
 import subprocess
 import sys
 from pathlib import Path
@@ -12,17 +11,10 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _bench():
-    spec = importlib.util.spec_from_file_location("bench_dynamics", ROOT / "benchmarks" / "bench_dynamics.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-def test_timeline_windows_add_up_to_one_run():
+def test_timeline_windows_add_up_to_one_run(benchmark_module):
     from bearingsim.dynamics import run as R
 
-    bd = _bench()
+    bd = benchmark_module("bench_dynamics")
     tl = bd.step_timeline("a", 0.3e-3, 0.1e-3)
     case = bd.load_bench_case("a")
     m, ls, y, _ = R.build(case)
