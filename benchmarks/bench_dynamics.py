@@ -5,7 +5,7 @@ Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 2
 50 Hz moment, 0.1 s.  Targets (issue 14): (b) ≤ 60 s wall per simulated second on one core, ≤ 35 with 2 threads.
 
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
-         [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8] [--slice-rule strips|gauss]
+         [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8] [--slice-rule strips|split|gauss]
          [--vehicle-speed KMH] [--profile] [--kernel] [--accuracy] [--threads N] [--steps]
          [--timeline WINDOW [--jac-every N]]
 --slice-rule gauss integrates the traction with --n-slices Gauss nodes per stretch between the zeros of the rolling
