@@ -8,9 +8,9 @@ The hub case (b) (examples/hub-moment-50hz.toml; --vehicle-speed as bench_dynami
 t1 + age (dense output, as the runs).  At both states the engine's finite-difference Jacobian is made as the
 integrator makes it (`integrate.jacobian`: ball blocks, the ring's columns, its rows by symmetry) and assembled
 dense over the ring's and the balls' states (the cages have no rows in it).  With A the Jacobian at the later
-state, each step size h [µs] of --steps gives the amplification matrix R = I + Σ mᵢ Kᵢ of one ROS34PW2 step on
-y′ = A y (the stage formulas of `ros34pw2.stages`, W = I − γ h J) for J = A (fresh), the older Jacobian (old), and
-the two mixtures (ball blocks of one state, ring columns and block of the other), and prints its spectral radius
+state, each step size h [µs] of --steps gives the amplification matrix R of one ROS34PW2 step on y′ = A y — the
+integrator's own stages (`ros34pw2.stages`) and W solves (`linalg.coupled_w`, W = I − γ h J), one step per unit
+vector — for J = A (fresh), the older Jacobian (old), and the two mixtures (ball blocks of one state, ring columns and block of the other), and prints its spectral radius
 ρ(R) and the largest real part of J's eigenvalues.  With J = A, ρ(R) ≈ exp(h max Re λ(A)) (the method is
 L-stable); ρ ≫ 1 means the step is unstable with that J.  Dense linear algebra over ≈ 300 states: seconds.
 """
@@ -22,6 +22,7 @@ import sys
 from pathlib import Path
 
 import numpy as np
+from numba import njit
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -29,12 +30,13 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 def _jacobian_parts(ws, atol, t, y):
     """(ball blocks, J_rr, J_br, J_rb) at (t, y), made as ROS34PW2 makes them at a refresh."""
     from bearingsim.dynamics.integrate import jacobian as jj
+    from bearingsim.dynamics.integrate.linalg import NR
 
     n, nb, nbk = y.size, ws.blk.shape[0], ws.nbk
     f0 = np.zeros(n)
     ws.fun(t, y, f0, ws.args)
-    jac, jrr = np.zeros((nb, nbk, nbk)), np.zeros((10, 10))
-    jbr, jrb = np.zeros((nb, nbk, 10)), np.zeros((nb, 10, nbk))
+    jac, jrr = np.zeros((nb, nbk, nbk)), np.zeros((NR, NR))
+    jbr, jrb = np.zeros((nb, nbk, NR)), np.zeros((nb, NR, nbk))
     yt, f1, epsb = np.zeros(n), np.zeros(n), np.zeros(nb)
     jj.ring_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jrr, jbr, yt, f1)
     jj.ring_rows(jbr, ws.rmass, ws.bmass, jrb)
@@ -42,47 +44,68 @@ def _jacobian_parts(ws, atol, t, y):
     return jac, jrr, jbr, jrb
 
 
-def dense_jacobian(blk, balls, ring, idx):
-    """The Jacobian over the states ``idx`` (ring first, then each ball's block) with the ball blocks of ``balls``
-    and the ring block and coupling of ``ring`` (each a tuple of :func:`_jacobian_parts`)."""
-    n = int(idx.max()) + 1
+def dense_jacobian(n, blk, balls, ring):
+    """The n × n Jacobian the integrator's blocks stand for, with the ball blocks of ``balls`` and the ring block and
+    coupling of ``ring`` (each a tuple of :func:`_jacobian_parts`; ``ring`` None: no ring block nor coupling)."""
+    from bearingsim.dynamics.integrate.linalg import NR
+
     j = np.zeros((n, n))
-    jac = balls[0]
-    jrr, jbr, jrb = ring[1], ring[2], ring[3]
-    j[:10, :10] = jrr
+    nbk = balls[0].shape[1]
     for b, o in enumerate(blk):
-        j[o:o + 9, o:o + 9] = jac[b]
-        j[o:o + 9, :10] = jbr[b]
-        j[:10, o:o + 9] = jrb[b]
-    return j[np.ix_(idx, idx)]
+        j[o:o + nbk, o:o + nbk] = balls[0][b]
+        if ring is not None:
+            j[o:o + nbk, :NR] = ring[2][b]
+            j[:NR, o:o + nbk] = ring[3][b]
+    if ring is not None:
+        j[:NR, :NR] = ring[1]
+    return j
 
 
-def amplification(a, j, h):
-    """R = I + Σ mᵢ Kᵢ of one ROS34PW2 step of size h [s] on y′ = A y with W = I − γ h J (``ros34pw2.stages``)."""
+@njit
+def _linear(t, y, dy, args):
+    """y′ = A y, A = args[0] (the right-hand side the step is applied to)."""
+    a = args[0]
+    for i in range(y.shape[0]):
+        acc = 0.0
+        for k in range(y.shape[0]):
+            acc += a[i, k] * y[k]
+        dy[i] = acc
+
+
+def amplification(a, blk, balls, ring, h):
+    """R = ∂y₁/∂y₀ of one ROS34PW2 step of size h [s] on y′ = A y, with W = I − γ h J made of ``balls`` and ``ring``
+    (as :func:`dense_jacobian`) the way the integrator makes it (:func:`.linalg.coupled_w` or
+    :func:`.linalg.w_inverse`), the stages by :func:`.ros34pw2.stages` itself: column j is the step from y₀ = e_j."""
     from bearingsim.dynamics.integrate import ros34pw2 as rp
+    from bearingsim.dynamics.integrate.linalg import NR, coupled_w, no_coupling, w_inverse
 
-    g = rp.R34_G
-    alpha = {(2, 1): rp.R34_A21, (3, 1): rp.R34_A31, (3, 2): rp.R34_A32, (4, 1): rp.R34_A41, (4, 2): rp.R34_A42,
-             (4, 3): rp.R34_A43}
-    gam = {(2, 1): rp.R34_C21, (3, 1): rp.R34_C31, (3, 2): rp.R34_C32, (4, 1): rp.R34_C41, (4, 2): rp.R34_C42,
-           (4, 3): rp.R34_C43}
-    eye = np.eye(a.shape[0])
-    winv = np.linalg.inv(eye - g * h * j)
-    k = {}
-    for i in (1, 2, 3, 4):
-        y = eye.copy()
-        tv = np.zeros_like(eye)
-        for m in range(1, i):
-            y += alpha[(i, m)] * k[m]
-            tv += gam[(i, m)] / g * k[m]
-        k[i] = winv @ (h * a @ y + tv) - tv
-    return eye + sum(mi * k[i + 1] for i, mi in enumerate(rp.R34_M))
+    n = a.shape[0]
+    jac = balls[0]
+    nb, nbk = jac.shape[0], jac.shape[1]
+    winv = np.zeros((nb, nbk, nbk))
+    wm = np.zeros((nbk, nbk))
+    if ring is None:
+        w_inverse(jac, h, rp.R34_G, winv, wm)
+        cpl = no_coupling(nbk)
+    else:
+        qm, sinv, srr, sb = np.zeros((nb, nbk, NR)), np.zeros((NR, NR)), np.zeros((NR, NR)), np.zeros((nb, NR, NR))
+        coupled_w(jac, ring[1], ring[2], ring[3], h, rp.R34_G, winv, wm, qm, sinv, srr, sb)
+        cpl = (ring[1], ring[2], ring[3], qm, sinv, np.zeros((nb, nbk)), np.zeros(NR))
+    k1, k2, k3, k4, yt, ft, tv = (np.zeros(n) for _ in range(7))
+    out = np.zeros((n, n))
+    for j in range(n):
+        y = np.zeros(n)
+        y[j] = 1.0
+        rp.stages(_linear, (a,), 0.0, y, h, a[:, j].copy(), winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
+        out[:, j] = y + rp.R34_M[0] * k1 + rp.R34_M[1] * k2 + rp.R34_M[2] * k3 + rp.R34_M[3] * k4
+    return out
 
 
 def jacobian_age(vehicle_speed: float | None, t1: float, age: float, steps: list[float]) -> dict:
     """The report of the module docstring; returns {variant: (max Re λ(J), [ρ(R) per step])} and "drift", the
     relative change of the Jacobian over ``age`` (Frobenius)."""
     from bearingsim.dynamics import run as R
+    from bearingsim.dynamics.integrate.linalg import NR
     from bench_dynamics import load_bench_case
 
     case = load_bench_case("b", vehicle_speed)
@@ -93,20 +116,22 @@ def jacobian_age(vehicle_speed: float | None, t1: float, age: float, steps: list
     t_old, p_old = st.t, _jacobian_parts(ws, st.atol, st.t, st.y.copy())
     st.advance(t1 + age)
     t_new, p_new = st.t, _jacobian_parts(ws, st.atol, st.t, st.y.copy())
-    idx = np.r_[np.arange(10), np.concatenate([np.arange(o, o + 9) for o in ws.blk])]
-    a = dense_jacobian(ws.blk, p_new, p_new, idx)
-    variants = {"fresh": a, "old": dense_jacobian(ws.blk, p_old, p_old, idx),
-                "balls fresh, ring old": dense_jacobian(ws.blk, p_new, p_old, idx),
-                "balls old, ring fresh": dense_jacobian(ws.blk, p_old, p_new, idx)}
-    drift = float(np.linalg.norm(variants["old"] - a) / np.linalg.norm(a))
-    lam = np.linalg.eigvals(a)
+    n = st.y.size
+    # the ring's and the balls' states (the cages have no rows in J: W is the identity there)
+    idx = np.r_[np.arange(NR), np.concatenate([np.arange(o, o + ws.nbk) for o in ws.blk])]
+    variants = {"fresh": (p_new, p_new), "old": (p_old, p_old), "balls fresh, ring old": (p_new, p_old),
+                "balls old, ring fresh": (p_old, p_new)}
+    a = dense_jacobian(n, ws.blk, p_new, p_new)
+    drift = float(np.linalg.norm(dense_jacobian(n, ws.blk, p_old, p_old) - a) / np.linalg.norm(a))
+    lam = np.linalg.eigvals(a[np.ix_(idx, idx)])
     print(f"hub (b){f' at {vehicle_speed:g} km/h' if vehicle_speed is not None else ''}: Jacobians at t = "
           f"{t_old * 1e3:.4g} and {t_new * 1e3:.4g} ms; change {drift:.3f} (Frobenius, relative); fresh: largest "
           f"|λ| {np.abs(lam).max():.3g} 1/s")
     out = {"drift": drift}
-    for name, j in variants.items():
-        re = float(np.linalg.eigvals(j).real.max())
-        rho = [float(np.abs(np.linalg.eigvals(amplification(a, j, h))).max()) for h in steps]
+    for name, (balls, ring) in variants.items():
+        re = float(np.linalg.eigvals(dense_jacobian(n, ws.blk, balls, ring)[np.ix_(idx, idx)]).real.max())
+        rho = [float(np.abs(np.linalg.eigvals(amplification(a, ws.blk, balls, ring, h)[np.ix_(idx, idx)])).max())
+               for h in steps]
         out[name] = (re, rho)
         print(f"  {name:22s} max Re λ(J) {re:10.4g} 1/s; ρ(R) at "
               + ", ".join(f"{h * 1e6:g} µs {r:.4g}" for h, r in zip(steps, rho)))
