@@ -22,7 +22,6 @@ import sys
 from pathlib import Path
 
 import numpy as np
-from numba import njit
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
@@ -61,22 +60,12 @@ def dense_jacobian(n, blk, balls, ring):
     return j
 
 
-@njit
-def _linear(t, y, dy, args):
-    """y′ = A y, A = args[0] (the right-hand side the step is applied to)."""
-    a = args[0]
-    for i in range(y.shape[0]):
-        acc = 0.0
-        for k in range(y.shape[0]):
-            acc += a[i, k] * y[k]
-        dy[i] = acc
-
-
 def amplification(a, blk, balls, ring, h):
     """R = ∂y₁/∂y₀ of one ROS34PW2 step of size h [s] on y′ = A y, with W = I − γ h J made of ``balls`` and ``ring``
     (as :func:`dense_jacobian`) the way the integrator makes it (:func:`.linalg.coupled_w` or
     :func:`.linalg.w_inverse`), the stages by :func:`.ros34pw2.stages` itself: column j is the step from y₀ = e_j."""
     from bearingsim.dynamics.integrate import ros34pw2 as rp
+    from bearingsim.dynamics.integrate.common import linear_rhs
     from bearingsim.dynamics.integrate.linalg import NR, coupled_w, no_coupling, w_inverse
 
     n = a.shape[0]
@@ -96,7 +85,7 @@ def amplification(a, blk, balls, ring, h):
     for j in range(n):
         y = np.zeros(n)
         y[j] = 1.0
-        rp.stages(_linear, (a,), 0.0, y, h, a[:, j].copy(), winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
+        rp.stages(linear_rhs, (a,), 0.0, y, h, a[:, j].copy(), winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
         out[:, j] = y + rp.R34_M[0] * k1 + rp.R34_M[1] * k2 + rp.R34_M[2] * k3 + rp.R34_M[3] * k4
     return out
 

@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from numba import njit
 
 from bearingsim.dynamics import integrate as ig
+from bearingsim.dynamics.integrate.common import linear_rhs
 
 
 @njit(cache=True)
@@ -280,14 +281,7 @@ def _ros34_step_with_j_products(a_mat, jac, y, h):
     return y + sum(m * k for m, k in zip(ig.R34_M, ks))
 
 
-@njit(cache=True)
-def _linear(t, y, dy, args):
-    a = args[0]
-    for i in range(y.shape[0]):
-        acc = 0.0
-        for j in range(y.shape[0]):
-            acc += a[i, j] * y[j]
-        dy[i] = acc
+_linear = linear_rhs  # y′ = A y
 
 
 @settings(max_examples=30, deadline=None)

@@ -145,3 +145,15 @@ def pi_factor(err, err_prev, ki, kp, grow):
     fac = 0.9 * e_now ** (-ki) * (err_prev / e_now) ** kp
     fac = min(grow, max(0.2, fac))
     return fac, max(e_now, 1e-4)
+
+
+@njit(cache=True)
+def linear_rhs(t, y, dy, args):
+    """dy ← A y with A = args[0] (n × n): the linear right-hand side y′ = A y on which the methods' order and
+    stability are checked (tests/unit/test_dyn_integrator.py, benchmarks/bench_jacobian_age.py)."""
+    a = args[0]
+    for i in range(y.shape[0]):
+        acc = 0.0
+        for k in range(y.shape[0]):
+            acc += a[i, k] * y[k]
+        dy[i] = acc
