@@ -184,7 +184,7 @@ def profile_steps(st, ls, duration: float, label: str) -> None:
     t0 = time.perf_counter()
     status, t, h = ros34pw2.integrate(ws.fun, ws.args, st.t, st.t + duration, st.y, st.h, st.atol, st.rtol,
                                       st.h_min, 10**8, info, ws.blk, ws.nbk, st.jac_every, st._ws, ws.rmass,
-                                      ws.bmass, stats, False, st.vec)
+                                      ws.bmass, stats, False, st.vec, rec=ws.args[10])
     wall = time.perf_counter() - t0
     acc, rej = int(info[0]), int(info[1])
     e2, worst = stats[:n], stats[n:]

@@ -78,8 +78,10 @@ NCONTRIB = 15
 #: per-ball row of the outer-contact memo (:func:`outer_memo_hit`): [0] 1 when the row holds a result, [1:10] the
 #: ball's position [m], velocity [m/s] and angular velocity [rad/s] it was computed for, [10:22] the result: force
 #: [N] and moment [N m] on the ball, force and moment on the outer ring (3 each; the kept copy of the loop body
-#: in balls_on_raceways repeats the memo's use, as it repeats the rest of _one_ball: a call per ball cost 7 % here)
-MEMO_W = 22
+#: in balls_on_raceways repeats the memo's use, as it repeats the rest of _one_ball: a call per ball cost 7 % here),
+#: [22:28] the record of the inner contact's reaction (layout ``MEMO_*``, ``MR_*`` in :mod:`.layout`, with the
+#: ring's row after the balls')
+MEMO_W = ly.MEMO_W
 
 
 @njit(cache=True)
@@ -930,7 +932,10 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     contacts of row r for the sliced-ellipse kernel.
     diag (n_balls × NDB) and gdiag (NDG) receive output quantities when diag has rows.
     memo (n_balls × MEMO_W, or no rows: :func:`no_memo`): the outer-raceway contacts of the last evaluation, reused
-    for a ball whose state has not changed since (:func:`outer_memo_hit`; the same result bit for bit).
+    for a ball whose state has not changed since (:func:`outer_memo_hit`; the same result bit for bit); with a row
+    more (n_balls + 1 rows, :func:`args_of`) it also records each ball's inner-ring reaction and the ring's
+    gyroscopic coefficient of this evaluation (:func:`record_reactions`), from which ROS34PW2 derives the ring's
+    Jacobian columns.
     threads: the balls in parallel (:func:`balls_on_raceways`; same result bit for bit).
 
     One work array is allocated here; the equations are :func:`_rhs`, compiled without numba's reference counting
@@ -1046,8 +1051,31 @@ def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag
             dy[o + 5] -= at * ez
     # ---- inner ring
     ring_equations(y, dy, gp, fring, mring, loads, omega, sy, cy, g0, g1, g2)
+    if memo.shape[0] > nb:
+        record_reactions(memo, work[RHS_WORK + cm.shape[1]:], nb, gp, cp, omega, mring)
     if want:
         global_diagnostics(gdiag, loads, mring, ax, mout, acc, omega)
+
+
+@njit(cache=True, inline="always")
+def record_reactions(memo, bwork, nb, gp, cp, omega, mring):
+    """The memo's record of this evaluation (layout ``MEMO_INNER``, ``MR_*`` in :mod:`.layout`): each ball's
+    inner-ring reaction (the first six of its contributions in ``bwork``, :func:`balls_on_raceways`), and in the
+    ring's row I_p Ω / I_t, the ring's contact moment and whether the ring's Jacobian columns may be derived from
+    the balls' (:func:`bearingsim.dynamics.integrate.jacobian.ring_columns`: not with a cage guided on the inner
+    ring's land, whose force on the ring the balls' sweeps do not see, nor with the azimuths held, which projects the
+    balls' rows)."""
+    for k in range(nb):
+        for i in range(6):
+            memo[k, ly.MEMO_INNER + i] = bwork[k * NCONTRIB + i]
+    memo[nb, ly.MR_GYRO] = gp[ly.G_IPR] * omega / gp[ly.G_ITR]
+    for i in range(3):
+        memo[nb, ly.MR_MOMENT + i] = mring[i]
+    ok = gp[ly.G_ORBIT_HELD] == 0.0
+    for ci in range(cp.shape[0]):
+        if int(cp[ci, ly.C_GUIDE]) == ly.GUIDANCE_INNER_LAND:
+            ok = False
+    memo[nb, ly.MR_DERIVE] = 1.0 if ok else 0.0
 
 
 def evaluate(model, t, y, loadspec, want_diag=True, threads=False):
@@ -1075,13 +1103,13 @@ def rhs_args_threaded(t, y, dy, a):
 def args_of(model, loadspec, diag=None, gdiag=None, memo=True):
     """The argument tuple of :func:`rhs_args` (diagnostics off unless arrays are given; with ``memo`` an
     outer-contact memo of its own, :func:`outer_memo_hit`: it keys on the balls' states alone, so build a new tuple
-    when the model's arrays change between calls)."""
+    when the model's arrays change between calls; its ring row holds the record of :func:`record_reactions`)."""
     if diag is None:
         diag = np.zeros((0, ly.NDB))
     if gdiag is None:
         gdiag = np.zeros(ly.NDG)
     return (model.rows, model.rowx, model.ball_row, model.gp, model.cp, model.cage_modes, model.lub_array(), loadspec,
-            diag, gdiag, np.zeros((model.n_balls, MEMO_W)) if memo else no_memo())
+            diag, gdiag, np.zeros((model.n_balls + 1, MEMO_W)) if memo else no_memo())
 
 
 def __getattr__(name: str):

@@ -128,6 +128,20 @@ NCP = 20  #: length of a cp row
 POCKET_SHAPES = {"sphere": 0, "cylinder": 1}
 #: cage guidance name → code in cp[C_GUIDE]
 GUIDANCE = {"balls": 0, "outer-land": 1, "inner-land": 2}
+GUIDANCE_INNER_LAND = GUIDANCE["inner-land"]
+
+# ---- the right-hand side's per-ball memo and record (``memo`` of forces.rhs; one row per ball, then the ring's)
+#: columns per row: [0] 1 when the row holds an outer contact, [1:10] the ball's nine states it was computed for,
+#: [10:22] its result (force and moment on the ball, force and moment on the outer ring), then the record
+MEMO_W = 28
+#: columns MEMO_INNER : MEMO_INNER + 6 of a ball's row: its inner contact's reaction on the inner ring at the last
+#: evaluation, force [N] and moment about the ring centre [N·m] (the ring's Jacobian columns are derived from
+#: their differences in the balls' sweeps: integrate.jacobian.ring_columns)
+MEMO_INNER = 22
+#: the ring's row (index n_balls), columns: I_p Ω / I_t [1/s] (the tilts' gyroscopic coupling), the inner ring's
+#: contact moment about its centre (3) [N·m], and 1 when the ring's columns may be derived from the balls' (no
+#: inner-land cage, azimuths free), else 0 — all of the last evaluation
+MR_GYRO, MR_MOMENT, MR_DERIVE = 0, 1, 4
 
 # ---- elastic cage modes: Model.cage_modes[cage, mode, CM_*] --------------------------------
 CM_OMEGA = 0  #: natural angular frequency ω_k [rad/s]

@@ -1,5 +1,5 @@
-"""Finite-difference Jacobians of the W-methods: per-ball blocks, the inner ring's columns, and the
-ring's rows by the symmetry of the contact forces.
+"""Finite-difference Jacobians of the W-methods: per-ball blocks, the inner ring's columns (by differences, or
+derived from the balls' by the invariance of a contact), and the ring's rows by the symmetry of the contact forces.
 
 J ≈ ∂f/∂y is only an approximation in a W-method (the order does not depend on it), so it is
 estimated cheaply: forward differences with the step 1e-7 max(|y_j|, 1e4 atol_j), one component of
@@ -11,19 +11,32 @@ Each difference is divided by the step actually taken, (y + e) − y in floating
 *Numerical Recipes*, 3rd ed. 2007, §5.7): a derivative that is a state itself (a ball's ṙ = v, the ring's
 q̇ = q̇) then comes out exactly 1, so the kinematic rows of J are exact and :func:`.linalg.block_w_inverse`
 can eliminate them (issue 14); before, they were 1 ± 1e-9.
+
+The ring's columns cost 10 right-hand sides by differences (:func:`ring_jac`, ≈ 5.8 with the outer-contact memo).
+:func:`ring_columns` derives them from the balls' own sweeps instead (issue 14): a ball's inner contact depends
+on the ring's state only through the two bodies' relative position and motion, so moving the ring is moving the
+ball the other way, and tilting it is turning the pair about the ring's centre (the contact's forces turn with
+it).  The right-hand side records each ball's inner-ring reaction (``memo``, layout ``MEMO_INNER`` of
+:mod:`..layout`), :func:`block_jac` differences it in the same sweeps, and the ring's columns follow with no
+right-hand side of their own.
 """
 
 from __future__ import annotations
 
+import numpy as np
 from numba import njit
 
+from ..layout import MEMO_INNER, MEMO_W, MR_GYRO, MR_MOMENT
 from .linalg import NR
 
 
 @njit
-def block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb):
+def block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb, rec=np.zeros((0, MEMO_W)),
+              rbase=np.zeros((0, 6)), drec=np.zeros((0, 9, 6))):
     """Finite-difference blocks of ∂f/∂y: one component of every block perturbed at once
-    (the blocks' derivatives do not depend on each other's states directly)."""
+    (the blocks' derivatives do not depend on each other's states directly).  With ``rec`` (the right-hand
+    side's memo, its record filled by every call) also drec[b, j] ← ∂(ball b's inner-ring reaction)/∂y_j of its
+    own state from the same sweeps, rbase[b] being the reaction at y (:func:`ring_columns`)."""
     n = y.shape[0]
     nb = blk.shape[0]
     for j in range(nbk):
@@ -38,6 +51,8 @@ def block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb):
             o = blk[b]
             for i in range(nbk):
                 jac[b, i, j] = (f1[o + i] - f0[o + i]) / epsb[b]
+            for i in range(drec.shape[2] if drec.shape[0] > 0 else 0):
+                drec[b, j, i] = (rec[b, MEMO_INNER + i] - rbase[b, i]) / epsb[b]
 
 
 @njit
@@ -78,3 +93,144 @@ def ring_rows(jbr, rmass, bmass, jrb):
                 jrb[b, 5 + i, j] = mb / mr * jbr[b, 3 + j, i]  # positions ↔ ring positions
                 jrb[b, 5 + i, 3 + j] = mb / mr * jbr[b, 3 + j, 5 + i]  # velocities ↔ ring rates
                 jrb[b, 5 + i, 6 + j] = jb / mr * jbr[b, 6 + j, 5 + i]  # angular velocities ↔ ring rates
+
+
+@njit(cache=True, _nrt=False)
+def _cross_into(a, b, out, o):
+    """out[o:o + 3] = a × b."""
+    out[o] = a[1] * b[2] - a[2] * b[1]
+    out[o + 1] = a[2] * b[0] - a[0] * b[2]
+    out[o + 2] = a[0] * b[1] - a[1] * b[0]
+
+
+@njit(cache=True)
+def ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr):
+    """The ring's columns J_br (per ball nbk × 10) and J_rr (10 × 10) from the balls' own derivatives, with no
+    right-hand side of their own (module docstring; issue 14).  ``rbase`` (n_balls + 1 rows): each ball's
+    inner-ring reaction R = (force, moment about the ring centre) at y, then the record's ring row at y (I_p Ω / I_t
+    and the contact moment, layout ``MR_*``); ``drec``: R's derivatives by the ball's nine states (:func:`block_jac`
+    with a record); ``rmass``, ``bmass`` as :func:`ring_rows`.
+
+    For G either the ball's inner-contact force and moment about its centre, (−F_R, (r − c) × F_R − M_R) by the
+    balance of the pair, or R itself, a change dq of the ring's state acts as the ball motion −A dq plus a turn
+    φ dq of the pair about c: ∂G/∂q = −(∂G/∂y_b) A + φ × G, column by column —
+
+    * translations of the centre c and its rate ċ: A = the unit motion of the ball's position / velocity;
+    * tilt rates (angular velocity change w = e_y for γ̇y, a_z = R_y e_z for γ̇z): the rigid rotation of the
+      pair, ball velocity w × (r − c) and angular velocity w;
+    * tilts (φ = e_y for γy, a_z for γz: R_y R_z turns by them): the pair turned about c — ball position
+      φ × (r − c), velocity φ × (v − ċ) and angular velocity φ × ω — plus what the ring's angular velocity does
+      beyond turning with it (wtilt's own change with γy, ∂wtilt/∂γy = γ̇z (cos γy, 0, −sin γy), less φ × wtilt),
+      as a rigid rotation of the pair.
+
+    The contact's orbiting reference frame (about the fixed x axis) does not move with the pair, which enters the
+    film's entrainment speed only: the columns match the ring's finite differences (:func:`ring_jac`) to
+    ≈ 1e-3 of each column on the hub states (tests/unit/test_dyn_ring_columns.py).  The ring's rows: its
+    accelerations (ring_equations in :mod:`..forces`) with the sum of the balls' R, the gyroscopic
+    terms ∓ I_p Ω / I_t and the explicit ∂(M_x sin γy + M_z cos γy)/∂γy of the contact moment M."""
+    nb = blk.shape[0]
+    sy = np.sin(y[3])
+    cy = np.cos(y[3])
+    c = y[0:3]
+    cd = y[5:8]
+    wt = np.array([y[9] * sy, y[8], y[9] * cy])
+    ey = np.array([0.0, 1.0, 0.0])
+    az = np.array([sy, 0.0, cy])
+    dwt = np.array([y[9] * cy, 0.0, -y[9] * sy])  # ∂wtilt/∂γy
+    r = np.empty(3)
+    vr = np.empty(3)
+    w = np.empty(3)
+    tmp = np.empty(3)
+    amot = np.zeros((9, NR))  # the ball motion equivalent to each ring column
+    dg = np.empty((6, 9))  # ∂G/∂y_b
+    g0 = np.empty(6)
+    col = np.empty((6, NR))
+    mr = rmass[0]
+    it = rmass[3]
+    for i in range(NR):
+        for j in range(NR):
+            jrr[i, j] = 0.0
+    for i in range(5):
+        jrr[i, 5 + i] = 1.0  # q̇ = q̇
+    for b in range(nb):
+        o = blk[b]
+        for i in range(3):
+            r[i] = y[o + i] - c[i]
+            vr[i] = y[o + 3 + i] - cd[i]
+        # the equivalent ball motions A (columns: c, γy, γz, ċ, γ̇y, γ̇z)
+        for i in range(9):
+            for k in range(NR):
+                amot[i, k] = 0.0
+        for i in range(3):
+            amot[i, i] = 1.0
+            amot[3 + i, 5 + i] = 1.0
+        for k, phi in ((3, ey), (4, az)):
+            _cross_into(phi, r, amot[:, k], 0)
+            _cross_into(phi, vr, amot[:, k], 3)
+            _cross_into(phi, y[o + 6:o + 9], amot[:, k], 6)
+            _cross_into(phi, wt, tmp, 0)
+            for i in range(3):
+                w[i] = (dwt[i] if k == 3 else 0.0) - tmp[i]
+            _cross_into(w, r, tmp, 0)
+            for i in range(3):
+                amot[3 + i, k] += tmp[i]
+                amot[6 + i, k] += w[i]
+        for k, wk in ((8, ey), (9, az)):
+            _cross_into(wk, r, amot[:, k], 3)
+            for i in range(3):
+                amot[6 + i, k] = wk[i]
+        for side in range(2):
+            if side == 0:  # the ball: F = −F_R, M = (r − c) × F_R − M_R
+                fr = rbase[b, 0:3]
+                _cross_into(r, fr, g0, 3)
+                for i in range(3):
+                    g0[i] = -fr[i]
+                    g0[3 + i] -= rbase[b, 3 + i]
+                for j in range(9):
+                    d = drec[b, j]
+                    _cross_into(r, d[0:3], dg[:, j], 3)
+                    for i in range(3):
+                        dg[i, j] = -d[i]
+                        dg[3 + i, j] -= d[3 + i]
+                    if j < 3:  # the lever r − c itself moves with the ball's position: + e_j × F_R
+                        for i in range(3):
+                            w[i] = 1.0 if i == j else 0.0
+                        _cross_into(w, fr, tmp, 0)
+                        for i in range(3):
+                            dg[3 + i, j] += tmp[i]
+            else:  # the ring's reaction R
+                for i in range(6):
+                    g0[i] = rbase[b, i]
+                    for j in range(9):
+                        dg[i, j] = drec[b, j, i]
+            for i in range(6):
+                for k in range(NR):
+                    s = 0.0
+                    for j in range(9):
+                        s -= dg[i, j] * amot[j, k]
+                    col[i, k] = s
+            for k, phi in ((3, ey), (4, az)):  # the forces turn with the pair
+                _cross_into(phi, g0[0:3], tmp, 0)
+                for i in range(3):
+                    col[i, k] += tmp[i]
+                _cross_into(phi, g0[3:6], tmp, 0)
+                for i in range(3):
+                    col[3 + i, k] += tmp[i]
+            if side == 0:
+                mb = bmass[b, 0]
+                jb = bmass[b, 1]
+                for k in range(NR):
+                    for i in range(3):
+                        jbr[b, i, k] = 0.0
+                        jbr[b, 3 + i, k] = col[i, k] / mb
+                        jbr[b, 6 + i, k] = col[3 + i, k] / jb
+            else:
+                for k in range(NR):
+                    for i in range(3):
+                        jrr[5 + i, k] += col[i, k] / mr
+                    jrr[8, k] += col[4, k] / it
+                    jrr[9, k] += (col[3, k] * sy + col[5, k] * cy) / it
+    gyro = rbase[nb, MR_GYRO]
+    jrr[8, 9] -= gyro
+    jrr[9, 8] += gyro
+    jrr[9, 3] += (rbase[nb, MR_MOMENT] * cy - rbase[nb, MR_MOMENT + 2] * sy) / it

@@ -7,7 +7,8 @@ for the exact Jacobian.  Hairer form: (I − γhJ) k_i = h f(t + α_i h, y + Σ_
 solved without a product with J (:func:`stages`).
 J holds the per-ball blocks of ∂f/∂y (:func:`.jacobian.block_jac`) and — unless the inner ring is
 held fixed or the coupling is switched off — the inner ring's own block and the ring–ball coupling
-(:func:`.jacobian.ring_jac`, :func:`.jacobian.ring_rows`): the inner ring sliding against all its
+(:func:`.jacobian.ring_columns` from the balls' sweeps when the right-hand side records the balls' inner-ring
+reactions, else :func:`.jacobian.ring_jac`; :func:`.jacobian.ring_rows`): the inner ring sliding against all its
 balls is a stiff mode at low rolling speed (docs/dynamics.md).  W is then an arrowhead matrix solved
 through the ring's Schur complement (:mod:`.linalg`).  The Jacobian is kept from one call to the next
 (:func:`.base.ros34_workspace`, saved in checkpoints) and refreshed every ``jac_every`` steps and after
@@ -21,6 +22,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE
 from .base import INFO_SIZE, Workspace, ros34_workspace
 from .common import (
     MAX_STEPS,
@@ -37,7 +39,7 @@ from .common import (
     pi_factor,
     reject_factor,
 )
-from .jacobian import block_jac, ring_jac, ring_rows
+from .jacobian import block_jac, ring_columns, ring_jac, ring_rows
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, w_inverse, w_solve
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
@@ -110,7 +112,7 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
 @njit
 def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
               rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False, vec=NO_VECTORS,
-              dns=NO_DENSE, dst=NO_DENSE_STATE):
+              dns=NO_DENSE, dst=NO_DENSE_STATE, rec=np.zeros((0, MEMO_W))):
     """ROS34PW2 from t to t_end in place (module docstring).
 
     ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
@@ -133,6 +135,11 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     state reached are carried from one call to the next in ``dst``, so that the steps do not depend on where the
     calls stop: the trajectory is the same for any output interval (a checkpoint saves these arrays too).
     Without them (no columns): every call stops exactly at t_end and starts its controller afresh.
+
+    ``rec``: the memo that ``fun`` fills (``args``' own array, :func:`bearingsim.dynamics.forces.record_reactions`)
+    with n_balls + 1 rows: the ring's Jacobian columns are then derived from the balls' sweeps
+    (:func:`.jacobian.ring_columns`: a refresh costs 9 right-hand sides, 10 when the record must first be made at
+    y, instead of 9 + 10 with ≈ 0.58 each), unless the record's ring row says the model does not allow it.
     """
     n = y.shape[0]
     nb = blk.shape[0]
@@ -162,6 +169,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     rr = np.zeros(NR)
     # the coupling's arrays, or empty ones (then W and J are the per-ball blocks alone)
     cpl = (jrr, jbr, jrb, qm, sinv, zb, rr) if coupled else no_coupling(nbk)
+    rbase = np.zeros((nb + 1, 6))  # the record at y (:func:`.jacobian.ring_columns`)
+    drec = np.zeros((nb, nbk, 6))
+    rec_y = False  # rec holds the record of f(t, y)
     need_jac = jst[1] == 0
     since = jst[0]
     h_w = -1.0
@@ -195,16 +205,32 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             fun(t, y, f0, args)
             nfun += 1
             have_f0 = True
+            rec_y = True
         if need_jac or since >= jac_every:
-            # the ring's columns first: their sweeps leave the balls where f0 put them, so the engine's right-hand
-            # side takes every outer contact from its memo (forces.outer_memo_hit) — after the ball sweeps the memo
-            # would hold perturbed balls and the first ring sweep would miss
-            if coupled:
-                ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1)
+            derive = False
+            if coupled and rec.shape[0] > nb:
+                if not rec_y:  # f0 came from an earlier call (carried, or before a rejection): the record at y
+                    fun(t, y, f1, args)
+                    nfun += 1
+                derive = rec[nb, MR_DERIVE] == 1.0
+            if derive:
+                for b in range(nb + 1):
+                    for i in range(6):
+                        rbase[b, i] = rec[b, MEMO_INNER + i] if b < nb else rec[nb, i]
+                block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb, rec, rbase, drec)
+                ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr)
                 ring_rows(jbr, rmass, bmass, jrb)
-                nfun += NR
-            block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
+            else:
+                # the ring's columns first: their sweeps leave the balls where f0 put them, so the engine's
+                # right-hand side takes every outer contact from its memo (forces.outer_memo_hit) — after the ball
+                # sweeps the memo would hold perturbed balls and the first ring sweep would miss
+                if coupled:
+                    ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1)
+                    ring_rows(jbr, rmass, bmass, jrb)
+                    nfun += NR
+                block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
             nfun += nbk
+            rec_y = False
             njac += 1
             need_jac = False
             since = 0
@@ -220,6 +246,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             h_w = hs
             nfac += 1
         stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
+        rec_y = False
         nfun += 3
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]

@@ -138,7 +138,7 @@ def ros34_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, 
                  vec, dns, dst):
     """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
     return ros34pw2.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk,
-                              jac_every, ws, rmass, bmass, np.zeros(0), False, vec, dns, dst)
+                              jac_every, ws, rmass, bmass, np.zeros(0), False, vec, dns, dst, args[10])
 
 
 @_cached
@@ -146,7 +146,7 @@ def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                    bmass, vec, dns, dst):
     """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
     return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
-                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec, dns, dst)
+                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec, dns, dst, args[10])
 
 
 #: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel
