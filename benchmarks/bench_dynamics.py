@@ -262,7 +262,11 @@ def step_timeline(name: str, duration: float, window: float, vehicle_speed: floa
     print(f"  {total} steps ({int(rej.sum())} rejected) in {nw} windows; median {med:g} per window; "
           f"{fast.sum()} windows step faster than twice the median and hold {steps[fast].sum() / max(total, 1):.3f} "
           f"of the steps; at the median rate throughout: {med * nw:.0f} steps")
-    return {"steps": steps, "rejected": rej, "jacobians": jacs, "q_min": qlo, "q_max": qhi}
+    nfun = int(work[0]) if work is not None else 0
+    if work is not None:
+        print(f"  work: {nfun} right-hand sides ({nfun / max(total, 1):.3f} per step), {int(work[2])} Jacobian "
+              f"refreshes, {int(work[1])} W factorisations")
+    return {"steps": steps, "rejected": rej, "jacobians": jacs, "q_min": qlo, "q_max": qhi, "rhs": nfun}
 
 
 def _count_rhs(st):

@@ -6,11 +6,13 @@ Usage:  python benchmarks/bench_jacobian_age.py [--vehicle-speed KMH] [--t1 "4 m
 
 The hub case (b) (examples/hub-moment-50hz.toml; --vehicle-speed as bench_dynamics.py) runs to t1 and on to
 t1 + age (dense output, as the runs).  At both states the engine's finite-difference Jacobian is made as the
-integrator makes it (`integrate.jacobian`: ball blocks, the ring's columns, its rows by symmetry) and assembled
-dense over the ring's and the balls' states (the cages have no rows in it).  With A the Jacobian at the later
-state, each step size h [µs] of --steps gives the amplification matrix R of one ROS34PW2 step on y′ = A y — the
-integrator's own stages (`ros34pw2.stages`) and W solves (`linalg.coupled_w`, W = I − γ h J), one step per unit
-vector — for J = A (fresh), the older Jacobian (old), and the two mixtures (ball blocks of one state, ring columns and block of the other), and prints its spectral radius
+integrator makes it (`integrate.jacobian`: ball blocks, the ring's columns derived from them, its rows by
+symmetry) and assembled dense over the ring's and the balls' states (the cages have no rows in it).  With A the
+Jacobian at the later state with every column by finite differences (the ring's too), each step size h [µs] of
+--steps gives the amplification matrix R of one ROS34PW2 step on y′ = A y — the integrator's own stages
+(`ros34pw2.stages`) and W solves (`linalg.coupled_w`, W = I − γ h J), one step per unit vector — for J the
+engine's fresh Jacobian, A itself (the ring's columns by differences), the older Jacobian (old), and the two
+mixtures (ball blocks of one state, ring columns and block of the other), and prints its spectral radius
 ρ(R) and the largest real part of J's eigenvalues.  With J = A, ρ(R) ≈ exp(h max Re λ(A)) (the method is
 L-stable); ρ ≫ 1 means the step is unstable with that J.  Dense linear algebra over ≈ 300 states: seconds.
 """
@@ -26,8 +28,11 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 
-def _jacobian_parts(ws, atol, t, y):
-    """(ball blocks, J_rr, J_br, J_rb) at (t, y), made as ROS34PW2 makes them at a refresh."""
+def _jacobian_parts(ws, atol, t, y, derived=True):
+    """(ball blocks, J_rr, J_br, J_rb) at (t, y), made as ROS34PW2 makes them at a refresh: the ring's columns
+    derived from the balls' sweeps (`jacobian.ring_columns`, the engine's way since the sixteenth pass), or with
+    ``derived`` false by the ring's own finite differences (`jacobian.ring_jac`, before)."""
+    from bearingsim.dynamics import layout as ly
     from bearingsim.dynamics.integrate import jacobian as jj
     from bearingsim.dynamics.integrate.linalg import NR
 
@@ -37,9 +42,18 @@ def _jacobian_parts(ws, atol, t, y):
     jac, jrr = np.zeros((nb, nbk, nbk)), np.zeros((NR, NR))
     jbr, jrb = np.zeros((nb, nbk, NR)), np.zeros((nb, NR, nbk))
     yt, f1, epsb = np.zeros(n), np.zeros(n), np.zeros(nb)
-    jj.ring_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jrr, jbr, yt, f1)
+    rec = ws.args[10]
+    if derived:
+        rbase = np.zeros((nb + 1, 6))
+        rbase[:nb] = rec[:nb, ly.MEMO_INNER:ly.MEMO_INNER + 6]
+        rbase[nb] = rec[nb, :6]
+        drec = np.zeros((nb, nbk, 6))
+        jj.block_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jac, yt, f1, epsb, rec, rbase, drec)
+        jj.ring_columns(y, ws.blk, rbase, drec, ws.rmass, ws.bmass, jrr, jbr)
+    else:
+        jj.ring_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jrr, jbr, yt, f1)
+        jj.block_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jac, yt, f1, epsb)
     jj.ring_rows(jbr, ws.rmass, ws.bmass, jrb)
-    jj.block_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jac, yt, f1, epsb)
     return jac, jrr, jbr, jrb
 
 
@@ -105,12 +119,13 @@ def jacobian_age(vehicle_speed: float | None, t1: float, age: float, steps: list
     t_old, p_old = st.t, _jacobian_parts(ws, st.atol, st.t, st.y.copy())
     st.advance(t1 + age)
     t_new, p_new = st.t, _jacobian_parts(ws, st.atol, st.t, st.y.copy())
+    p_fd = _jacobian_parts(ws, st.atol, st.t, st.y.copy(), derived=False)
     n = st.y.size
     # the ring's and the balls' states (the cages have no rows in J: W is the identity there)
     idx = np.r_[np.arange(NR), np.concatenate([np.arange(o, o + ws.nbk) for o in ws.blk])]
-    variants = {"fresh": (p_new, p_new), "old": (p_old, p_old), "balls fresh, ring old": (p_new, p_old),
-                "balls old, ring fresh": (p_old, p_new)}
-    a = dense_jacobian(n, ws.blk, p_new, p_new)
+    variants = {"fresh": (p_new, p_new), "fresh, ring by differences": (p_fd, p_fd), "old": (p_old, p_old),
+                "balls fresh, ring old": (p_new, p_old), "balls old, ring fresh": (p_old, p_new)}
+    a = dense_jacobian(n, ws.blk, p_fd, p_fd)  # the linearisation: the finite differences of every column
     drift = float(np.linalg.norm(dense_jacobian(n, ws.blk, p_old, p_old) - a) / np.linalg.norm(a))
     lam = np.linalg.eigvals(a[np.ix_(idx, idx)])
     print(f"hub (b){f' at {vehicle_speed:g} km/h' if vehicle_speed is not None else ''}: Jacobians at t = "

@@ -24,6 +24,7 @@ def test_timeline_windows_add_up_to_one_run(benchmark_module):
     assert int(tl["steps"].sum()) == st.steps and int(tl["rejected"].sum()) == st.rejected
     assert tl["jacobians"][0] >= 1  # the first window refreshes the Jacobian at its first step
     assert int(tl["jacobians"].sum()) == int(st.workspace.work[2])
+    assert tl["rhs"] == int(st.workspace.work[0]) > 4 * st.steps  # ≥ 4 per step: f(t, y) and three stages
     assert (tl["q_max"] > 0).all() and (tl["q_min"] <= tl["q_max"]).all()
 
 
@@ -34,3 +35,4 @@ def test_timeline_from_the_command_line():
     lines = out.stdout.splitlines()
     assert any("steps per 100 us window" in ln for ln in lines), out.stdout
     assert any("windows step faster than twice the median" in ln for ln in lines), out.stdout
+    assert any(ln.strip().startswith("work: ") and "right-hand sides" in ln for ln in lines), out.stdout

@@ -1052,19 +1052,20 @@ def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag
     # ---- inner ring
     ring_equations(y, dy, gp, fring, mring, loads, omega, sy, cy, g0, g1, g2)
     if memo.shape[0] > nb:
-        record_reactions(memo, work[RHS_WORK + cm.shape[1]:], nb, gp, cp, omega, mring)
+        record_reactions(memo, work[RHS_WORK + cm.shape[1]:], nb, gp, cp, omega, mring, t, y)
     if want:
         global_diagnostics(gdiag, loads, mring, ax, mout, acc, omega)
 
 
 @njit(cache=True, inline="always")
-def record_reactions(memo, bwork, nb, gp, cp, omega, mring):
+def record_reactions(memo, bwork, nb, gp, cp, omega, mring, t, y):
     """The memo's record of this evaluation (layout ``MEMO_INNER``, ``MR_*`` in :mod:`.layout`): each ball's
     inner-ring reaction (the first six of its contributions in ``bwork``, :func:`balls_on_raceways`), and in the
     ring's row I_p Ω / I_t, the ring's contact moment and whether the ring's Jacobian columns may be derived from
     the balls' (:func:`bearingsim.dynamics.integrate.jacobian.ring_columns`: not with a cage guided on the inner
     ring's land, whose force on the ring the balls' sweeps do not see, nor with the azimuths held, which projects the
-    balls' rows)."""
+    balls' rows), with t and the ring's states it was made at (the balls' are in their memo rows:
+    :func:`bearingsim.dynamics.integrate.jacobian.record_at`)."""
     for k in range(nb):
         for i in range(6):
             memo[k, ly.MEMO_INNER + i] = bwork[k * NCONTRIB + i]
@@ -1076,6 +1077,9 @@ def record_reactions(memo, bwork, nb, gp, cp, omega, mring):
         if int(cp[ci, ly.C_GUIDE]) == ly.GUIDANCE_INNER_LAND:
             ok = False
     memo[nb, ly.MR_DERIVE] = 1.0 if ok else 0.0
+    memo[nb, ly.MR_T] = t
+    for i in range(ly.N_RING):
+        memo[nb, ly.MR_Y + i] = y[i]
 
 
 def evaluate(model, t, y, loadspec, want_diag=True, threads=False):

@@ -139,9 +139,10 @@ MEMO_W = 28
 #: their differences in the balls' sweeps: integrate.jacobian.ring_columns)
 MEMO_INNER = 22
 #: the ring's row (index n_balls), columns: I_p Ω / I_t [1/s] (the tilts' gyroscopic coupling), the inner ring's
-#: contact moment about its centre (3) [N·m], and 1 when the ring's columns may be derived from the balls' (no
-#: inner-land cage, azimuths free), else 0 — all of the last evaluation
-MR_GYRO, MR_MOMENT, MR_DERIVE = 0, 1, 4
+#: contact moment about its centre (3) [N·m], 1 when the ring's columns may be derived from the balls' (no
+#: inner-land cage, azimuths free) else 0, then the time [s] and the ring's ten states of the evaluation (with the
+#: balls' states in their rows' columns 1:10, what the record was made at) — all of the last evaluation
+MR_GYRO, MR_MOMENT, MR_DERIVE, MR_T, MR_Y = 0, 1, 4, 5, 6
 
 # ---- elastic cage modes: Model.cage_modes[cage, mode, CM_*] --------------------------------
 CM_OMEGA = 0  #: natural angular frequency ω_k [rad/s]

@@ -26,7 +26,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ..layout import MEMO_INNER, MEMO_W, MR_GYRO, MR_MOMENT
+from ..layout import MEMO_INNER, MEMO_W, MR_GYRO, MR_MOMENT, MR_T, MR_Y, N_RING
 from .linalg import NR
 
 
@@ -93,6 +93,26 @@ def ring_rows(jbr, rmass, bmass, jrb):
                 jrb[b, 5 + i, j] = mb / mr * jbr[b, 3 + j, i]  # positions ↔ ring positions
                 jrb[b, 5 + i, 3 + j] = mb / mr * jbr[b, 3 + j, 5 + i]  # velocities ↔ ring rates
                 jrb[b, 5 + i, 6 + j] = jb / mr * jbr[b, 6 + j, 5 + i]  # angular velocities ↔ ring rates
+
+
+@njit(cache=True, _nrt=False)
+def record_at(rec, blk, t, y):
+    """True when the right-hand side's record (``rec``, :func:`bearingsim.dynamics.forces.record_reactions`) was made
+    at exactly (t, y): the time and the ring's states in its ring row, every ball's nine states in its memo row
+    (written whenever its outer contact is computed, equal to them on a memo hit), bit for bit."""
+    nb = blk.shape[0]
+    if rec[nb, MR_T] != t:
+        return False
+    for i in range(N_RING):
+        if rec[nb, MR_Y + i] != y[i]:
+            return False
+    for b in range(nb):
+        if rec[b, 0] != 1.0:
+            return False
+        for i in range(9):
+            if rec[b, 1 + i] != y[blk[b] + i]:
+                return False
+    return True
 
 
 @njit(cache=True, _nrt=False)

@@ -39,7 +39,7 @@ from .common import (
     pi_factor,
     reject_factor,
 )
-from .jacobian import block_jac, ring_columns, ring_jac, ring_rows
+from .jacobian import block_jac, record_at, ring_columns, ring_jac, ring_rows
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, w_inverse, w_solve
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
@@ -138,8 +138,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
 
     ``rec``: the memo that ``fun`` fills (``args``' own array, :func:`bearingsim.dynamics.forces.record_reactions`)
     with n_balls + 1 rows: the ring's Jacobian columns are then derived from the balls' sweeps
-    (:func:`.jacobian.ring_columns`: a refresh costs 9 right-hand sides, 10 when the record must first be made at
-    y, instead of 9 + 10 with ≈ 0.58 each), unless the record's ring row says the model does not allow it.
+    (:func:`.jacobian.ring_columns`: a refresh costs 9 right-hand sides, 10 when the last evaluation was not at
+    (t, y) and the record must be made there first, :func:`.jacobian.record_at`; instead of 9 + 10 with ≈ 0.58
+    each), unless the record's ring row says the model does not allow it.
     """
     n = y.shape[0]
     nb = blk.shape[0]
@@ -171,7 +172,6 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     cpl = (jrr, jbr, jrb, qm, sinv, zb, rr) if coupled else no_coupling(nbk)
     rbase = np.zeros((nb + 1, 6))  # the record at y (:func:`.jacobian.ring_columns`)
     drec = np.zeros((nb, nbk, 6))
-    rec_y = False  # rec holds the record of f(t, y)
     need_jac = jst[1] == 0
     since = jst[0]
     h_w = -1.0
@@ -205,11 +205,10 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             fun(t, y, f0, args)
             nfun += 1
             have_f0 = True
-            rec_y = True
         if need_jac or since >= jac_every:
             derive = False
             if coupled and rec.shape[0] > nb:
-                if not rec_y:  # f0 came from an earlier call (carried, or before a rejection): the record at y
+                if not record_at(rec, blk, t, y):  # e.g. after a rejection (the stages evaluated since f(t, y))
                     fun(t, y, f1, args)
                     nfun += 1
                 derive = rec[nb, MR_DERIVE] == 1.0
@@ -230,7 +229,6 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                     nfun += NR
                 block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
             nfun += nbk
-            rec_y = False
             njac += 1
             need_jac = False
             since = 0
@@ -246,7 +244,6 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             h_w = hs
             nfac += 1
         stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
-        rec_y = False
         nfun += 3
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
