@@ -52,7 +52,7 @@ def _jacobian_parts(ws, atol, t, y, derived=True):
         jj.ring_columns(y, ws.blk, rbase, drec, ws.rmass, ws.bmass, jrr, jbr)
     else:
         jj.ring_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jrr, jbr, yt, f1)
-        jj.block_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jac, yt, f1, epsb)
+        jj.block_jac(ws.fun, ws.args, t, y.copy(), f0, atol, ws.blk, nbk, jac, yt, f1, epsb, *jj.no_record())
     jj.ring_rows(jbr, ws.rmass, ws.bmass, jrb)
     return jac, jrr, jbr, jrb
 

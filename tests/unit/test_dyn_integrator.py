@@ -14,6 +14,7 @@ from hypothesis import strategies as st
 from numba import njit
 
 from bearingsim.dynamics import integrate as ig
+from bearingsim.dynamics.integrate import jacobian as jc
 from bearingsim.dynamics.integrate.common import linear_rhs
 
 
@@ -301,7 +302,7 @@ def test_ros34w_stages_without_j_products_equal_the_written_out_method(seed, log
     f0 = np.zeros(9)
     _linear(0.0, y0, f0, (a_mat,))
     ig._block_jac(_linear, (a_mat,), 0.0, y0, f0, np.full(9, 1e-12), blk, 9, jac, np.zeros(9), np.zeros(9),
-                  np.zeros(1))  # the Jacobian fixed_steps_ros34 forms (same inputs, same numbers)
+                  np.zeros(1), *jc.no_record())  # the Jacobian fixed_steps_ros34 forms (same inputs, same numbers)
     assert ig._kinematic_rows(jac[0])
     ref = _ros34_step_with_j_products(a_mat, jac[0], y0, h)
     y = y0.copy()

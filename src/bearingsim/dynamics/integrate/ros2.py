@@ -17,7 +17,7 @@ from numba import njit
 
 from .base import Workspace
 from .common import MAX_STEPS, NO_VECTORS, NOT_FINITE, OK, STEP_TOO_SMALL, Status, clip_step, error_norm
-from .jacobian import block_jac
+from .jacobian import block_jac, no_record
 from .linalg import apply_w
 
 ROS2_GAMMA = 1.0 + 1.0 / np.sqrt(2.0)
@@ -54,7 +54,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         hs, last = clip_step(t, h, t_end)
         fun(t, y, f0, args)
         if need_jac or since >= jac_every:
-            block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
+            e1, e2, e3 = no_record()
+            block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb, e1, e2, e3)
             need_jac = False
             since = 0
             h_w = -1.0

@@ -39,7 +39,7 @@ from .common import (
     pi_factor,
     reject_factor,
 )
-from .jacobian import block_jac, record_at, ring_columns, ring_jac, ring_rows
+from .jacobian import block_jac, no_record, record_at, ring_columns, ring_jac, ring_rows
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, w_inverse, w_solve
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
@@ -227,7 +227,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                     ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1)
                     ring_rows(jbr, rmass, bmass, jrb)
                     nfun += NR
-                block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb)
+                e1, e2, e3 = no_record()
+                block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb, e1, e2, e3)
             nfun += nbk
             njac += 1
             need_jac = False
@@ -331,7 +332,8 @@ def fixed_steps(fun, args, t, y, h, nsteps, blk, nbk):
     for _ in range(nsteps):
         fun(t, y, f0, args)
         if nb > 0:
-            block_jac(fun, args, t, y, f0, atol, bl, nk, jac, yt, f1, epsb)
+            e1, e2, e3 = no_record()
+            block_jac(fun, args, t, y, f0, atol, bl, nk, jac, yt, f1, epsb, e1, e2, e3)
             w_inverse(jac, h, R34_G, winv, wm)
         stages(fun, args, t, y, h, f0, winv, bl, nk, k1, k2, k3, k4, yt, ft, tv, cpl)
         for i in range(n):
