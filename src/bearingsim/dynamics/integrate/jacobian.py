@@ -136,7 +136,9 @@ def ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr):
     right-hand side of their own (module docstring; issue 14).  ``rbase`` (n_balls + 1 rows): each ball's
     inner-ring reaction R = (force, moment about the ring centre) at y, then the record's ring row at y (I_p Ω / I_t
     and the contact moment, layout ``MR_*``); ``drec``: R's derivatives by the ball's nine states (:func:`block_jac`
-    with a record); ``rmass``, ``bmass`` as :func:`ring_rows`.
+    with a record); ``rmass``, ``bmass`` as :func:`ring_rows`.  Units (SI): R in [N] and [N·m], its derivatives per
+    unit of the ball's state ([m], [m/s], [rad/s]); J's entries are time derivatives of the states per unit of the
+    ring's states (e.g. [1/s²] for an acceleration per [m], [1/s] per [m/s]).
 
     For G either the ball's inner-contact force and moment about its centre, (−F_R, (r − c) × F_R − M_R) by the
     balance of the pair, or R itself, a change dq of the ring's state acts as the ball motion −A dq plus a turn
