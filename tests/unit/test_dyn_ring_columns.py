@@ -180,7 +180,8 @@ def test_derived_and_differenced_ring_columns_give_the_same_trajectory(states):
     dev = np.abs(out[True][0][0:5] - out[False][0][0:5]).max() / span
     print(f"ring: derived vs differenced columns {dev:.2e} of the ring's travel; steps, right-hand sides "
           f"{out[True][1:]} vs {out[False][1:]}")
-    assert dev < 1e-4, dev  # the accuracy bound on the ring (measured 1.8e-9)
+    # a W-method's solution does not depend on J beyond the error it controls: within the tolerance 1e-6 of the travel
+    assert dev < 1e-6, dev  # (measured 1.8e-9)
     assert out[True][2] / out[True][1] < out[False][2] / out[False][1], (out[True][1:], out[False][1:])
 
 

@@ -26,6 +26,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from ..contacts import cross
 from ..layout import MEMO_INNER, MEMO_W, MR_GYRO, MR_MOMENT, MR_T, MR_Y, N_RING
 from .linalg import NR
 
@@ -122,14 +123,6 @@ def record_at(rec, blk, t, y):
     return True
 
 
-@njit(cache=True, _nrt=False)
-def _cross_into(a, b, out, o):
-    """out[o:o + 3] = a × b."""
-    out[o] = a[1] * b[2] - a[2] * b[1]
-    out[o + 1] = a[2] * b[0] - a[0] * b[2]
-    out[o + 2] = a[0] * b[1] - a[1] * b[0]
-
-
 @njit(cache=True)
 def ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr):
     """The ring's columns J_br (per ball nbk × 10) and J_rr (10 × 10) from the balls' own derivatives, with no
@@ -194,37 +187,37 @@ def ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr):
             amot[i, i] = 1.0
             amot[3 + i, 5 + i] = 1.0
         for k, phi in ((3, ey), (4, az)):
-            _cross_into(phi, r, amot[:, k], 0)
-            _cross_into(phi, vr, amot[:, k], 3)
-            _cross_into(phi, y[o + 6:o + 9], amot[:, k], 6)
-            _cross_into(phi, wt, tmp, 0)
+            cross(phi, r, amot[0:3, k])
+            cross(phi, vr, amot[3:6, k])
+            cross(phi, y[o + 6:o + 9], amot[6:9, k])
+            cross(phi, wt, tmp)
             for i in range(3):
                 w[i] = (dwt[i] if k == 3 else 0.0) - tmp[i]
-            _cross_into(w, r, tmp, 0)
+            cross(w, r, tmp)
             for i in range(3):
                 amot[3 + i, k] += tmp[i]
                 amot[6 + i, k] += w[i]
         for k, wk in ((8, ey), (9, az)):
-            _cross_into(wk, r, amot[:, k], 3)
+            cross(wk, r, amot[3:6, k])
             for i in range(3):
                 amot[6 + i, k] = wk[i]
         for side in range(2):
             if side == 0:  # the ball: F = −F_R, M = (r − c) × F_R − M_R
                 fr = rbase[b, 0:3]
-                _cross_into(r, fr, g0, 3)
+                cross(r, fr, g0[3:6])
                 for i in range(3):
                     g0[i] = -fr[i]
                     g0[3 + i] -= rbase[b, 3 + i]
                 for j in range(9):
                     d = drec[b, j]
-                    _cross_into(r, d[0:3], dg[:, j], 3)
+                    cross(r, d[0:3], dg[3:6, j])
                     for i in range(3):
                         dg[i, j] = -d[i]
                         dg[3 + i, j] -= d[3 + i]
                     if j < 3:  # the lever r − c itself moves with the ball's position: + e_j × F_R
                         for i in range(3):
                             w[i] = 1.0 if i == j else 0.0
-                        _cross_into(w, fr, tmp, 0)
+                        cross(w, fr, tmp)
                         for i in range(3):
                             dg[3 + i, j] += tmp[i]
             else:  # the ring's reaction R
@@ -239,10 +232,10 @@ def ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr):
                         s -= dg[i, j] * amot[j, k]
                     col[i, k] = s
             for k, phi in ((3, ey), (4, az)):  # the forces turn with the pair
-                _cross_into(phi, g0[0:3], tmp, 0)
+                cross(phi, g0[0:3], tmp)
                 for i in range(3):
                     col[i, k] += tmp[i]
-                _cross_into(phi, g0[3:6], tmp, 0)
+                cross(phi, g0[3:6], tmp)
                 for i in range(3):
                     col[3 + i, k] += tmp[i]
             if side == 0:
