@@ -64,7 +64,12 @@ class Stepper:
     tol: float = 1e-6
     h_min: float = 1e-13
     method: str = "dopri5"  #: "dopri5" (explicit), "ros2w" or "ros34w" (linearly implicit, for stiff traction)
-    jac_every: int = 20  #: steps between Jacobian refreshes (also after two rejections in a row)
+    #: the most steps between Jacobian refreshes (also after two rejections in a row); with :attr:`jac_adaptive` the
+    #: interval is chosen up to it from the run's record (:func:`.integrate.jacobian.refresh_interval`)
+    jac_every: int = 20
+    #: ROS34PW2: the refresh interval from the run's own cost per simulated time by the Jacobian's age (False: every
+    #: :attr:`jac_every` steps).  7011 (a) and the hub at 10 km/h −13…−19 % right-hand sides, hub (b) unchanged
+    jac_adaptive: bool = True
     ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
     max_steps_per_interval: int = 10_000_000
     #: threads for the ball contacts of the right-hand side (None or 1: serial; up to NUMBA_NUM_THREADS; "auto":
@@ -102,7 +107,7 @@ class Stepper:
             self._rmass = np.array([m.gp[ly.G_MR]] * 3 + [m.gp[ly.G_ITR]] * 2)
             self._bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
         # the ROS34PW2 Jacobian lives from one call to the next (and in checkpoints)
-        self._ws = ig.ros34_workspace(m.n_balls, ly.N_BALL, self._rmass.shape[0] == 5)
+        self._ws = ig.ros34_workspace(m.n_balls, ly.N_BALL, self._rmass.shape[0] == 5, self.jac_adaptive)
         self.dense = bool(self.dense) and self.method == "ros34w"
         #: the dense output's arrays (:func:`.integrate.common.dense_arrays`; saved in checkpoints), or None
         self._dense = dense_arrays(self.y.shape[0]) if self.dense else None

@@ -41,15 +41,23 @@ from .common import NO_VECTORS, OK, Status
 INFO_SIZE = 7
 
 
-def ros34_workspace(nb: int, nbk: int, coupled: bool) -> tuple:
+#: ages (steps since the Jacobian's refresh) the refresh interval's controller keeps a record of
+#: (:func:`.jacobian.refresh_interval`); its memory: [interval in use, intervals seen, age of the last attempt,
+#: then per age: right-hand sides, simulated time advanced, intervals that reached it]
+JAC_AGES = 64
+JAC_MEMORY = 3 + 3 * JAC_AGES
+
+
+def ros34_workspace(nb: int, nbk: int, coupled: bool, adaptive: bool = True) -> tuple:
     """The Jacobian that ROS34PW2 keeps from one call to the next: (jac [nb, nbk, nbk],
     J_rr [10, 10], J_br [nc, nbk, 10], J_rb [nc, 10, nbk], state int64[2] = (steps since the refresh,
-    1 when the arrays hold a Jacobian)), nc = nb when the ring is coupled, else 0.  A run restarted
+    1 when the arrays hold a Jacobian), the refresh interval's memory float[JAC_MEMORY] — float[0] with
+    ``adaptive`` False: a fixed interval), nc = nb when the ring is coupled, else 0.  A run restarted
     from a checkpoint repeats the same steps when the checkpoint holds this workspace too."""
     nr = 10
     nc = nb if coupled else 0
     return (np.zeros((nb, nbk, nbk)), np.zeros((nr, nr)), np.zeros((nc, nbk, nr)), np.zeros((nc, nr, nbk)),
-            np.zeros(2, dtype=np.int64))
+            np.zeros(2, dtype=np.int64), np.zeros(JAC_MEMORY if adaptive else 0))
 
 
 @dataclass

@@ -19,6 +19,13 @@ ball the other way, and tilting it is turning the pair about the ring's centre (
 it).  The right-hand side records each ball's inner-ring reaction (``memo``, layout ``MEMO_INNER`` of
 :mod:`..layout`), :func:`block_jac` differences it in the same sweeps, and the ring's columns follow with no
 right-hand side of their own.
+
+How often to refresh (:func:`refresh_interval`, :func:`record_attempt`): a W-method keeps its order with any J, but
+the step a lagged J allows depends on the problem — on the 7011 spindle the mean step falls from 5.2 µs one step
+after a refresh to 2.8 µs eight steps later (a stability limit that the aging J sets), on the hub at 100 km/h it
+does not fall (its steps are set by accuracy).  So the interval is chosen from what the run measures: per age
+(steps since the refresh) the right-hand sides spent and the simulated time advanced; the next interval N
+minimises (Σ_{k<N} right-hand sides + a refresh's) / Σ_{k<N} time advanced, up to the caller's ``jac_every``.
 """
 
 from __future__ import annotations
@@ -28,7 +35,16 @@ from numba import njit
 
 from ..contacts import cross
 from ..layout import MEMO_INNER, MEMO_W, MR_GYRO, MR_MOMENT, MR_T, MR_Y, N_RING
+from .base import JAC_AGES
 from .linalg import NR
+
+#: the refresh interval's controller (:func:`refresh_interval`): the fraction of its record forgotten per interval
+#: (the record spans ≈ 32 intervals), the least number of intervals (forgetting-weighted) an age needs before its
+#: figures count, and every how many intervals the interval is lengthened (× 2, at least + 5, up to the cap) to
+#: measure the ages past the one in use
+JAC_FORGET = 1.0 / 32.0
+JAC_MIN_VISITS = 3.0
+JAC_EXPLORE = 5
 
 
 @njit(cache=True)
@@ -256,3 +272,47 @@ def ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr):
     jrr[8, 9] -= gyro
     jrr[9, 8] += gyro
     jrr[9, 3] += (rbase[nb, MR_MOMENT] * cy - rbase[nb, MR_MOMENT + 2] * sy) / it
+
+
+@njit(cache=True, _nrt=False)
+def record_attempt(mem, age, rhs, advanced):
+    """Add one step attempt to the refresh interval's record ``mem`` (:data:`.base.JAC_MEMORY` floats, layout in
+    :mod:`.base`): the Jacobian's ``age`` [steps since its refresh], the right-hand sides the attempt cost and the
+    simulated time it advanced [s] (0 when rejected).  An age's first attempt in an interval counts the interval."""
+    k = min(age, JAC_AGES - 1)
+    if mem[2] != k:
+        mem[3 + 2 * JAC_AGES + k] += 1.0
+        mem[2] = k
+    mem[3 + k] += rhs
+    mem[3 + JAC_AGES + k] += advanced
+
+
+@njit(cache=True, _nrt=False)
+def refresh_interval(mem, cap, refresh_cost):
+    """The number of steps the Jacobian made now serves (1 … ``cap``): the N that minimises the cost per simulated
+    time (Σ_{k<N} r_k + refresh_cost) / Σ_{k<N} τ_k, r_k and τ_k the mean right-hand sides and time advanced at age
+    k over the intervals that reached it (module docstring), over the ages with enough record; every
+    :data:`JAC_EXPLORE`-th interval longer, to measure the ages past N.  Forgets :data:`JAC_FORGET` of the record
+    first and starts the next interval's (ages from 0).  Without a record yet: ``cap``."""
+    for i in range(3, mem.shape[0]):
+        mem[i] *= 1.0 - JAC_FORGET
+    mem[1] += 1.0
+    mem[2] = -1.0
+    best = np.inf
+    n = int(mem[0]) if mem[0] > 0.0 else cap
+    rhs = refresh_cost
+    adv = 0.0
+    for k in range(min(cap, JAC_AGES)):
+        visits = mem[3 + 2 * JAC_AGES + k]
+        if visits < JAC_MIN_VISITS:
+            break
+        rhs += mem[3 + k] / visits
+        adv += mem[3 + JAC_AGES + k] / visits
+        if adv > 0.0 and rhs / adv < best:
+            best = rhs / adv
+            n = k + 1
+    if int(mem[1]) % JAC_EXPLORE == 0:
+        n = max(2 * n, n + 5)
+    n = max(1, min(n, cap))
+    mem[0] = float(n)
+    return n

@@ -40,7 +40,8 @@ from .common import (
     pi_factor,
     reject_factor,
 )
-from .jacobian import block_jac, no_record, record_at, ring_columns, ring_jac, ring_rows
+from .jacobian import (block_jac, no_record, record_at, record_attempt, refresh_interval, ring_columns, ring_jac,
+                       ring_rows)
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, w_inverse, w_solve
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
@@ -151,7 +152,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     """
     n = y.shape[0]
     nb = blk.shape[0]
-    jac, jrr, jbr, jrb, jst = ws
+    jac, jrr, jbr, jrb, jst, jmem = ws
     winv = np.zeros((nb, nbk, nbk))
     wm = np.zeros((nbk, nbk))
     f0 = np.empty(n)
@@ -181,6 +182,10 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     drec = np.zeros((nb, nbk, 6))
     need_jac = jst[1] == 0
     since = jst[0]
+    adaptive = jmem.shape[0] > 0  # the refresh interval from the run's record (:func:`.jacobian.refresh_interval`)
+    interval = jac_every
+    if adaptive and jmem[0] > 0.0:
+        interval = min(int(jmem[0]), jac_every)
     h_w = -1.0
     nacc = 0
     nrej = 0
@@ -212,7 +217,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             fun(t, y, f0, args)
             nfun += 1
             have_f0 = True
-        if need_jac or since >= jac_every:
+        if need_jac or since >= interval:
             derive = False
             if coupled and rec.shape[0] > nb:
                 if not record_at(rec, blk, t, y):  # e.g. after a rejection (the stages evaluated since f(t, y))
@@ -241,6 +246,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             need_jac = False
             since = 0
             h_w = -1.0
+            if adaptive:
+                interval = refresh_interval(jmem, jac_every, nbk if derive else nbk + NR)
         if hs != h_w:
             if coupled:
                 if threaded:
@@ -253,6 +260,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             nfac += 1
         stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
         nfun += 3
+        age = since
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
@@ -263,6 +271,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                 r = evec[i] / error_scale(i, y, ynew, atol, rtol, vec)
                 stats[i] += r * r
             stats[n + int(info[2])] += 1.0
+        if adaptive:  # (an accepted step also pays the next f(t, y))
+            record_attempt(jmem, age, 4.0 if err <= 1.0 else 3.0, hs if err <= 1.0 else 0.0)
         if err <= 1.0:
             if dense:
                 dst[0] = t  # the step's start for the interpolant
