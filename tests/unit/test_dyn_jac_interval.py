@@ -5,12 +5,11 @@ is measured by benchmarks/bench_dynamics.py, docs/dynamics.md)."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
-import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
-from pathlib import Path
 
 from bearingsim.dynamics import layout as ly
 from bearingsim.dynamics import run as R

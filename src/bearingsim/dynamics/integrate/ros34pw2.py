@@ -40,8 +40,16 @@ from .common import (
     pi_factor,
     reject_factor,
 )
-from .jacobian import (block_jac, no_record, record_at, record_attempt, refresh_interval, ring_columns, ring_jac,
-                       ring_rows)
+from .jacobian import (
+    block_jac,
+    no_record,
+    record_at,
+    record_attempt,
+    refresh_interval,
+    ring_columns,
+    ring_jac,
+    ring_rows,
+)
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, w_inverse, w_solve
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
