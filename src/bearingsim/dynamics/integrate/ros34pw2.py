@@ -11,11 +11,13 @@ held fixed or the coupling is switched off — the inner ring's own block and th
 reactions, else :func:`.jacobian.ring_jac`; :func:`.jacobian.ring_rows`): the inner ring sliding against all its
 balls is a stiff mode at low rolling speed (docs/dynamics.md).  W is then an arrowhead matrix solved
 through the ring's Schur complement (:mod:`.linalg`).  The Jacobian is kept from one call to the next
-(:func:`.base.ros34_workspace`, saved in checkpoints) and refreshed every ``jac_every`` steps and after
-two rejections in a row: a W-method keeps its order with a lagged Jacobian.  Step size: PI controller
-(Gustafsson 1991) with exponents 0.7/3 and 0.4/3 and growth ≤ 2 after an accepted step — a growth by at most
-1.2 keeps the step and W instead (RADAU5's rule, ``R34_HOLD``) — and h·max(0.2, 0.9 err^(−1/3)) after a rejected
-one.
+(:func:`.base.ros34_workspace`, saved in checkpoints) and refreshed after two rejections in a row and every
+``jac_every`` steps — or, with the workspace's record (the default), at the interval up to ``jac_every`` that the
+run's cost per simulated time by the Jacobian's age says is cheapest (:func:`.jacobian.refresh_interval`): a
+W-method keeps its order with a lagged Jacobian, but how far the step falls as J ages depends on the problem.
+Step size: PI controller (Gustafsson 1991) with exponents 0.7/3 and 0.4/3 and growth ≤ 2 after an accepted step —
+a growth by at most 1.2 keeps the step and W instead (RADAU5's rule, ``R34_HOLD``) — and h·max(0.2, 0.9 err^(−1/3))
+after a rejected one.
 """
 
 from __future__ import annotations
