@@ -7,7 +7,7 @@ Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 2
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
          [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8] [--slice-rule strips|split|gauss]
          [--vehicle-speed KMH] [--profile] [--kernel] [--accuracy] [--threads N] [--steps]
-         [--timeline WINDOW [--jac-every N] [--jac-fixed]]
+         [--timeline WINDOW [--jac-every N] [--jac-fixed] [--jac-unturned]]
 --slice-rule gauss integrates the traction with --n-slices Gauss nodes per stretch between the zeros of the rolling
 slip (the case key slice_rule); --vehicle-speed runs the hub case (b) at that vehicle speed (10 km/h: 83.55 rpm).
 --accuracy compares the ring displacement of the chosen settings with a DOPRI5 run at
@@ -214,7 +214,7 @@ def profile_steps(st, ls, duration: float, label: str) -> None:
 
 def step_timeline(name: str, duration: float, window: float, vehicle_speed: float | None = None,
                   slice_rule: str | None = None, n_slices: int | None = None, tolerance: float | None = None,
-                  jac_every: int = 20, jac_fixed: bool = False) -> dict:
+                  jac_every: int = 20, jac_fixed: bool = False, jac_unturned: bool = False) -> dict:
     """Where in time the steps go (issue 14, fifteenth pass): the case's integrator stepping from t = 0 over
     ``duration`` [s], reported per ``window`` [s]: accepted and rejected steps, Jacobian refreshes and the inner
     contacts' load range at the window's end; then the share of all steps taken in windows that step faster than
@@ -233,7 +233,7 @@ def step_timeline(name: str, duration: float, window: float, vehicle_speed: floa
     m, ls, y, _ = R.build(case)
     # dense output, as simulate() runs: the steps do not stop at the windows' ends, so the trajectory is the run's
     st = R.Stepper(m, ls, y.copy(), tol=case.tolerance, method=case.method, threads=1, jac_every=jac_every,
-                   jac_adaptive=not jac_fixed, dense=True)
+                   jac_adaptive=not jac_fixed, jac_orbit=not jac_unturned, dense=True)
     nw = max(1, int(round(duration / window)))
     steps = np.zeros(nw, dtype=int)
     rej = np.zeros(nw, dtype=int)
@@ -314,6 +314,8 @@ def main(argv=None):
                     "refreshes (default 20, the engine's)")
     ap.add_argument("--jac-fixed", action="store_true", help="with --timeline: refresh every --jac-every steps "
                     "(the engine before the adaptive interval; default: the interval from the run's record)")
+    ap.add_argument("--jac-unturned", action="store_true", help="with --timeline: the Jacobian used as made, not "
+                    "turned with the balls' orbit (the engine before the seventeenth pass)")
     a = ap.parse_args(argv)
     if a.timeline:
         from bearingsim.units import parse_quantity
@@ -322,7 +324,7 @@ def main(argv=None):
         win = parse_quantity(a.timeline, "time", "--timeline")
         for name in (["a", "b"] if a.case == "both" else [a.case]):
             step_timeline(name, dur, win, a.vehicle_speed if name == "b" else None, a.slice_rule, a.n_slices,
-                          a.tolerance, a.jac_every, a.jac_fixed)
+                          a.tolerance, a.jac_every, a.jac_fixed, a.jac_unturned)
         return
     if a.steps:
         from bearingsim.units import parse_quantity

@@ -70,6 +70,9 @@ class Stepper:
     #: ROS34PW2: the refresh interval from the run's own cost per simulated time by the Jacobian's age (False: every
     #: :attr:`jac_every` steps).  7011 (a) and the hub at 10 km/h −13…−19 % right-hand sides, hub (b) unchanged
     jac_adaptive: bool = True
+    #: ROS34PW2: the Jacobian used turned with each ball's azimuth change since its refresh (J' = P J Pᵀ,
+    #: :mod:`.integrate.linalg`; False: as made).  7011 (a) ≈ 3× fewer right-hand sides (its J aged by the orbit)
+    jac_orbit: bool = True
     ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
     max_steps_per_interval: int = 10_000_000
     #: threads for the ball contacts of the right-hand side (None or 1: serial; up to NUMBA_NUM_THREADS; "auto":
@@ -107,7 +110,8 @@ class Stepper:
             self._rmass = np.array([m.gp[ly.G_MR]] * 3 + [m.gp[ly.G_ITR]] * 2)
             self._bmass = np.array([[m.rows[r, kn.P_MASS], m.rows[r, kn.P_JB]] for r in m.ball_row])
         # the ROS34PW2 Jacobian lives from one call to the next (and in checkpoints)
-        self._ws = ig.ros34_workspace(m.n_balls, ly.N_BALL, self._rmass.shape[0] == 5, self.jac_adaptive)
+        self._ws = ig.ros34_workspace(m.n_balls, ly.N_BALL, self._rmass.shape[0] == 5, self.jac_adaptive,
+                                      self.jac_orbit)
         self.dense = bool(self.dense) and self.method == "ros34w"
         #: the dense output's arrays (:func:`.integrate.common.dense_arrays`; saved in checkpoints), or None
         self._dense = dense_arrays(self.y.shape[0]) if self.dense else None

@@ -52,7 +52,7 @@ from .jacobian import (
     ring_jac,
     ring_rows,
 )
-from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, w_inverse, w_solve
+from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, orbit_reference, orbit_turn, turned_solve, w_inverse
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
 R34_G = 0.435866521508459
@@ -80,10 +80,11 @@ R34_HOLD = 1.2
 
 
 @njit
-def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl):
+def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl, turn):
     """The four stages of ROS34PW2 (k_i include the factor h); f0 = f(t, y); ``cpl`` = (J_rr, J_br,
     J_rb, Q, S⁻¹, work, work) of the ring–ball coupling (:func:`.linalg.coupled_w`) or
-    :func:`.linalg.no_coupling`.
+    :func:`.linalg.no_coupling`; ``turn`` the balls' azimuth changes since the Jacobian's refresh
+    (:func:`.linalg.orbit_turn`; no rows: J as made), with which W is used turned (:func:`.linalg.turned_solve`).
 
     The stage equation W k_i = h f(Y_i) + hJ s_i, s_i = Σ_j c_ij k_j, is solved without the product J s_i:
     hJ = (I − W)/γ for the same J that W = I − γhJ is made of, so k_i = W⁻¹(h f(Y_i) + s_i/γ) − s_i/γ (the form
@@ -94,7 +95,7 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
     ig = 1.0 / R34_G
     for i in range(n):
         ft[i] = hs * f0[i]
-    w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k1)
+    turned_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k1, turn)
     # stage 2
     for i in range(n):
         yt[i] = y[i] + R34_A21 * k1[i]
@@ -102,7 +103,7 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
     fun(t + R34_ALPHA2 * hs, yt, ft, args)
     for i in range(n):
         ft[i] = hs * ft[i] + tv[i]
-    w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k2)
+    turned_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k2, turn)
     for i in range(n):
         k2[i] -= tv[i]
     # stage 3
@@ -112,7 +113,7 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
     fun(t + R34_ALPHA3 * hs, yt, ft, args)
     for i in range(n):
         ft[i] = hs * ft[i] + tv[i]
-    w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k3)
+    turned_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k3, turn)
     for i in range(n):
         k3[i] -= tv[i]
     # stage 4
@@ -122,7 +123,7 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
     fun(t + R34_ALPHA4 * hs, yt, ft, args)
     for i in range(n):
         ft[i] = hs * ft[i] + tv[i]
-    w_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k4)
+    turned_solve(winv, blk, nbk, hs, R34_G, cpl, ft, k4, turn)
     for i in range(n):
         k4[i] -= tv[i]
 
@@ -162,7 +163,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     """
     n = y.shape[0]
     nb = blk.shape[0]
-    jac, jrr, jbr, jrb, jst, jmem = ws
+    jac, jrr, jbr, jrb, jst, jmem, jaz = ws
     winv = np.zeros((nb, nbk, nbk))
     wm = np.zeros((nbk, nbk))
     f0 = np.empty(n)
@@ -188,6 +189,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     rr = np.zeros(NR)
     # the coupling's arrays, or empty ones (then W and J are the per-ball blocks alone)
     cpl = (jrr, jbr, jrb, qm, sinv, zb, rr) if coupled else no_coupling(nbk)
+    turn = np.zeros((jaz.shape[0], 2))
     rbase = np.zeros((nb + 1, 6))  # the record at y (:func:`.jacobian.ring_columns`)
     drec = np.zeros((nb, nbk, 6))
     need_jac = jst[1] == 0
@@ -258,6 +260,10 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             h_w = -1.0
             if adaptive:
                 interval = refresh_interval(jmem, jac_every, nbk if derive else nbk + NR)
+            if jaz.shape[0] > 0:
+                orbit_reference(y, blk, jaz)
+        if jaz.shape[0] > 0:
+            orbit_turn(y, blk, jaz, turn)
         if hs != h_w:
             if coupled:
                 if threaded:
@@ -268,7 +274,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                 w_inverse(jac, hs, R34_G, winv, wm)
             h_w = hs
             nfac += 1
-        stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
+        stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl, turn)
         nfun += 3
         age = since
         for i in range(n):
@@ -364,7 +370,7 @@ def fixed_steps(fun, args, t, y, h, nsteps, blk, nbk):
             e1, e2, e3 = no_record()
             block_jac(fun, args, t, y, f0, atol, bl, nk, jac, yt, f1, epsb, e1, e2, e3)
             w_inverse(jac, h, R34_G, winv, wm)
-        stages(fun, args, t, y, h, f0, winv, bl, nk, k1, k2, k3, k4, yt, ft, tv, cpl)
+        stages(fun, args, t, y, h, f0, winv, bl, nk, k1, k2, k3, k4, yt, ft, tv, cpl, np.zeros((0, 2)))
         for i in range(n):
             y[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
         t += h
