@@ -99,7 +99,8 @@ def amplification(a, blk, balls, ring, h):
     for j in range(n):
         y = np.zeros(n)
         y[j] = 1.0
-        rp.stages(linear_rhs, (a,), 0.0, y, h, a[:, j].copy(), winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl)
+        rp.stages(linear_rhs, (a,), 0.0, y, h, a[:, j].copy(), winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl,
+                  np.zeros((0, 2)))
         out[:, j] = y + rp.R34_M[0] * k1 + rp.R34_M[1] * k2 + rp.R34_M[2] * k3 + rp.R34_M[3] * k4
     return out
 
