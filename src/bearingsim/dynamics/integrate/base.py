@@ -35,6 +35,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..layout import N_BALL
 from .common import NO_VECTORS, OK, Status
 
 #: entries of a workspace's ``info`` (module docstring)
@@ -53,13 +54,14 @@ def ros34_workspace(nb: int, nbk: int, coupled: bool, adaptive: bool = True, orb
     J_rr [10, 10], J_br [nc, nbk, 10], J_rb [nc, 10, nbk], state int64[2] = (steps since the refresh,
     1 when the arrays hold a Jacobian), the refresh interval's memory float[JAC_MEMORY] — float[0] with
     ``adaptive`` False: a fixed interval —, the balls' azimuth directions at the refresh float[nb, 2] — float[0, 2]
-    with ``orbit`` False: J used as made, not turned with the balls' orbit, :mod:`.linalg`), nc = nb when the ring
-    is coupled, else 0.  A run restarted from a checkpoint repeats the same steps when the checkpoint holds this
-    workspace too."""
+    with ``orbit`` False or blocks that are not the balls' (nbk ≠ N_BALL): J used as made, not turned with the
+    balls' orbit, :mod:`.linalg`), nc = nb when the ring is coupled, else 0.  A run restarted from a checkpoint
+    repeats the same steps when the checkpoint holds this workspace too."""
     nr = 10
     nc = nb if coupled else 0
     return (np.zeros((nb, nbk, nbk)), np.zeros((nr, nr)), np.zeros((nc, nbk, nr)), np.zeros((nc, nr, nbk)),
-            np.zeros(2, dtype=np.int64), np.zeros(JAC_MEMORY if adaptive else 0), np.zeros((nb if orbit else 0, 2)))
+            np.zeros(2, dtype=np.int64), np.zeros(JAC_MEMORY if adaptive else 0),
+            np.zeros((nb if orbit and nbk == N_BALL else 0, 2)))
 
 
 @dataclass

@@ -25,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE
+from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE, N_BALL
 from .base import INFO_SIZE, Workspace, ros34_workspace
 from .common import (
     MAX_STEPS,
@@ -189,7 +189,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     rr = np.zeros(NR)
     # the coupling's arrays, or empty ones (then W and J are the per-ball blocks alone)
     cpl = (jrr, jbr, jrb, qm, sinv, zb, rr) if coupled else no_coupling(nbk)
-    turn = np.zeros((jaz.shape[0], 2))
+    # the turn needs the balls' layout (r, v, ω from blk[b]): other blocks use J as made
+    turn = np.zeros((jaz.shape[0] if jaz.shape[0] == nb and nbk == N_BALL else 0, 2))
     rbase = np.zeros((nb + 1, 6))  # the record at y (:func:`.jacobian.ring_columns`)
     drec = np.zeros((nb, nbk, 6))
     need_jac = jst[1] == 0
@@ -260,9 +261,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             h_w = -1.0
             if adaptive:
                 interval = refresh_interval(jmem, jac_every, nbk if derive else nbk + NR)
-            if jaz.shape[0] > 0:
+            if turn.shape[0] > 0:
                 orbit_reference(y, blk, jaz)
-        if jaz.shape[0] > 0:
+        if turn.shape[0] > 0:
             orbit_turn(y, blk, jaz, turn)
         if hs != h_w:
             if coupled:
