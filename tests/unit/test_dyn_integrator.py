@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 import pytest
+from _blocks import arrowhead_system, ball_like_block  # tests/unit/_blocks.py
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from numba import njit
@@ -207,24 +208,11 @@ def test_arrowhead_w_solve_equals_the_dense_one(kinematic):
     rng = np.random.default_rng(3)
     nb, nbk, extra = 3, 9, 5
     n = ig.NR + nb * nbk + extra
-    blk = np.array([ig.NR + nbk * b for b in range(nb)], dtype=np.int64)
     jac = rng.normal(size=(nb, nbk, nbk)) * 50
     if kinematic:
-        jac = np.array([_ball_like_block(rng, 50.0) for _ in range(nb)])
+        jac = np.array([ball_like_block(rng, 50.0) for _ in range(nb)])
         assert all(ig._kinematic_rows(jb) for jb in jac)
-    jrr = rng.normal(size=(ig.NR, ig.NR)) * 50
-    jbr = rng.normal(size=(nb, nbk, ig.NR)) * 50
-    jbr[:, 0:3, :] = 0.0  # a ball's ṙ = v does not depend on the ring (the structure coupled_w relies on)
-    rmass = np.array([3.0, 3.0, 3.0, 0.01, 0.01])
-    bmass = np.tile([5.6e-3, 6.9e-8], (nb, 1))
-    jrb = np.zeros((nb, ig.NR, nbk))
-    ig._ring_rows(jbr, rmass, bmass, jrb)
-    dense = np.zeros((n, n))
-    dense[:ig.NR, :ig.NR] = jrr
-    for b, o in enumerate(blk):
-        dense[o:o + nbk, o:o + nbk] = jac[b]
-        dense[o:o + nbk, :ig.NR] = jbr[b]
-        dense[:ig.NR, o:o + nbk] = jrb[b]
+    blk, jrr, jbr, jrb, dense = arrowhead_system(rng, jac, extra)
     hs, g = 1e-3, ig.R34_G
     winv = np.zeros((nb, nbk, nbk))
     q = np.zeros((nb, nbk, ig.NR))
@@ -237,14 +225,6 @@ def test_arrowhead_w_solve_equals_the_dense_one(kinematic):
     np.testing.assert_allclose(out, np.linalg.solve(np.eye(n) - g * hs * dense, v), rtol=1e-10, atol=1e-12)
 
 
-def _ball_like_block(rng, scale):
-    """A 9 × 9 block with a ball's kinematic rows (ṙ = v: rows 0–2 = [0 I 0]) and random dynamics below."""
-    jb = rng.normal(size=(9, 9)) * scale
-    jb[0:3, :] = 0.0
-    jb[0, 3] = jb[1, 4] = jb[2, 5] = 1.0
-    return jb
-
-
 @settings(max_examples=60, deadline=None)
 @given(seed=st.integers(0, 2**31 - 1), log_scale=st.floats(0.0, 8.0), log_c=st.floats(-9.0, -3.0),
        kinematic=st.booleans())
@@ -253,7 +233,7 @@ def test_block_w_inverse_equals_the_dense_inverse(seed, log_scale, log_c, kinema
     Van Loan 2013 §3.2.11) equals the dense inverse, over J scales 1…1e8 and c = −γh from −1e-9 to −1e-3; a block
     without those rows takes the general Gauss–Jordan path and must agree as well."""
     rng = np.random.default_rng(seed)
-    jb = _ball_like_block(rng, 10.0**log_scale)
+    jb = ball_like_block(rng, 10.0**log_scale)
     if not kinematic:
         jb[1, 4] = 1.0 + 1e-9  # no longer exactly the kinematic rows: the general path
     c = -(10.0**log_c)
@@ -292,7 +272,7 @@ def test_ros34w_stages_without_j_products_equal_the_written_out_method(seed, log
     linear ball-like system (stiff: |hλ| up to ≈ 10⁴) equals the method with the products J s_i written out (a
     dense reference with the same finite-difference Jacobian), to rounding."""
     rng = np.random.default_rng(seed)
-    a_mat = _ball_like_block(rng, 1.0)
+    a_mat = ball_like_block(rng, 1.0)
     a_mat[3:, :] = -np.abs(rng.normal(size=(6, 9))) * 1e3 + rng.normal(size=(6, 9)) * 1e2
     a_mat[3:, 3:] -= np.eye(6) * 1e6  # stiff velocity rows (the balls' creep damping)
     y0 = rng.normal(size=9)

@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from _blocks import arrowhead_system, ball_like_block  # tests/unit/_blocks.py
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
@@ -19,7 +20,7 @@ from bearingsim.dynamics import layout as ly
 from bearingsim.dynamics import run as R
 from bearingsim.dynamics.case import load_case
 from bearingsim.dynamics.integrate import linalg as la
-from bearingsim.dynamics.integrate.jacobian import block_jac, no_record, ring_rows
+from bearingsim.dynamics.integrate.jacobian import block_jac, no_record
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -36,13 +37,6 @@ def _turn_matrix(blk, nbk, n, turn):
     return p
 
 
-def _ball_like_block(rng, scale):
-    jb = rng.normal(size=(9, 9)) * scale
-    jb[0:3, :] = 0.0
-    jb[0, 3] = jb[1, 4] = jb[2, 5] = 1.0
-    return jb
-
-
 @settings(max_examples=30, deadline=None)
 @given(seed=st.integers(0, 2**31 - 1), angles=st.lists(st.floats(-3.2, 3.2), min_size=3, max_size=3))
 def test_turned_solve_equals_the_dense_solve_of_the_turned_jacobian(seed, angles):
@@ -50,19 +44,8 @@ def test_turned_solve_equals_the_dense_solve_of_the_turned_jacobian(seed, angles
     rng = np.random.default_rng(seed)
     nb, nbk, extra = 3, 9, 5
     n = la.NR + nb * nbk + extra
-    blk = np.array([la.NR + nbk * b for b in range(nb)], dtype=np.int64)
-    jac = np.array([_ball_like_block(rng, 50.0) for _ in range(nb)])
-    jrr = rng.normal(size=(la.NR, la.NR)) * 50
-    jbr = rng.normal(size=(nb, nbk, la.NR)) * 50
-    jbr[:, 0:3, :] = 0.0
-    jrb = np.zeros((nb, la.NR, nbk))
-    ring_rows(jbr, np.array([3.0, 3.0, 3.0, 0.01, 0.01]), np.tile([5.6e-3, 6.9e-8], (nb, 1)), jrb)
-    dense = np.zeros((n, n))
-    dense[:la.NR, :la.NR] = jrr
-    for b, o in enumerate(blk):
-        dense[o:o + nbk, o:o + nbk] = jac[b]
-        dense[o:o + nbk, :la.NR] = jbr[b]
-        dense[:la.NR, o:o + nbk] = jrb[b]
+    jac = np.array([ball_like_block(rng, 50.0) for _ in range(nb)])
+    blk, jrr, jbr, jrb, dense = arrowhead_system(rng, jac, extra)
     hs, g = 1e-3, 0.435866521508459
     winv = np.zeros((nb, nbk, nbk))
     q = np.zeros((nb, nbk, la.NR))

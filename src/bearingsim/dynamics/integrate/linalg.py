@@ -290,38 +290,32 @@ def coupled_apply_w(winv, q, sinv, jrb, hs, g, blk, nbk, v, out, z, r):
             out[o + i] = acc
 
 
+@njit(cache=True, _nrt=False, inline="always")
+def _azimuth(y, o):
+    """(cos ψ, sin ψ) = (y, z)/√(y² + z²) of the ball centre at y[o:o + 3] ((1, 0) on the axis)."""
+    py = y[o + 1]
+    pz = y[o + 2]
+    r2 = py * py + pz * pz
+    if r2 > 0.0:
+        rr = 1.0 / np.sqrt(r2)
+        return py * rr, pz * rr
+    return 1.0, 0.0
+
+
 @njit(cache=True, _nrt=False)
 def orbit_reference(y, blk, jaz):
-    """jaz[b] ← ball b's azimuth direction (cos ψ, sin ψ) = (y, z)/√(y² + z²) of its centre (at the Jacobian's
-    refresh; (1, 0) on the axis)."""
+    """jaz[b] ← ball b's azimuth direction (cos ψ, sin ψ) (at the Jacobian's refresh)."""
     for b in range(blk.shape[0]):
-        py = y[blk[b] + 1]
-        pz = y[blk[b] + 2]
-        r2 = py * py + pz * pz
-        if r2 > 0.0:
-            rr = 1.0 / np.sqrt(r2)
-            jaz[b, 0] = py * rr
-            jaz[b, 1] = pz * rr
-        else:
-            jaz[b, 0] = 1.0
-            jaz[b, 1] = 0.0
+        jaz[b, 0], jaz[b, 1] = _azimuth(y, blk[b])
 
 
 @njit(cache=True, _nrt=False)
 def orbit_turn(y, blk, jaz, turn):
     """turn[b] ← (cos Δψ, sin Δψ) of ball b's azimuth change since :func:`orbit_reference` stored ``jaz``."""
     for b in range(blk.shape[0]):
-        py = y[blk[b] + 1]
-        pz = y[blk[b] + 2]
-        r2 = py * py + pz * pz
-        if r2 > 0.0:
-            rr = 1.0 / np.sqrt(r2)
-            py *= rr
-            pz *= rr
-        else:
-            py, pz = 1.0, 0.0
-        turn[b, 0] = jaz[b, 0] * py + jaz[b, 1] * pz
-        turn[b, 1] = jaz[b, 0] * pz - jaz[b, 1] * py
+        c, s = _azimuth(y, blk[b])
+        turn[b, 0] = jaz[b, 0] * c + jaz[b, 1] * s
+        turn[b, 1] = jaz[b, 0] * s - jaz[b, 1] * c
 
 
 @njit(cache=True, _nrt=False, inline="always")
