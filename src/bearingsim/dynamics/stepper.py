@@ -68,7 +68,7 @@ class Stepper:
     #: interval is chosen up to it from the run's record (:func:`.integrate.jacobian.refresh_interval`)
     jac_every: int = 20
     #: ROS34PW2: the refresh interval from the run's own cost per simulated time by the Jacobian's age (False: every
-    #: :attr:`jac_every` steps).  7011 (a) and the hub at 10 km/h −13…−19 % right-hand sides, hub (b) unchanged
+    #: :attr:`jac_every` steps).  Alone: 7011 (a) −13.5 %, hub at 10 km/h −13.9 %, hub (b) −1.0 % right-hand sides
     jac_adaptive: bool = True
     #: ROS34PW2: the Jacobian used turned with each ball's azimuth change since its refresh (J' = P J Pᵀ,
     #: :mod:`.integrate.linalg`; False: as made).  7011 (a) ≈ 3× fewer right-hand sides (its J aged by the orbit)
