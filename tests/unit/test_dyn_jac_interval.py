@@ -11,9 +11,8 @@ import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from bearingsim.dynamics import layout as ly
 from bearingsim.dynamics import run as R
-from bearingsim.dynamics.integrate import base, jacobian
+from bearingsim.dynamics.integrate import base
 from bearingsim.dynamics.integrate.jacobian import JAC_EXPLORE, JAC_FORGET, record_attempt, refresh_interval
 
 A = base.JAC_AGES
@@ -117,9 +116,3 @@ def test_fixed_interval_has_no_record():
     assert st_._ws[5].shape == (0,)
     nfun, _, njac = (int(v) for v in st_.workspace.work)
     assert njac <= st_.steps // st_.jac_every + 1 + st_.rejected
-
-
-def test_layout_names():
-    assert base.JAC_MEMORY == 3 + 3 * base.JAC_AGES
-    assert jacobian.JAC_AGES == base.JAC_AGES
-    assert ly.N_BALL == 9  # the refresh cost the engine passes (9 ball sweeps)
