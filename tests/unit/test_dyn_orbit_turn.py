@@ -111,8 +111,8 @@ def _ball_blocks(m, ls, st_, y, t):
 
 def test_a_balls_jacobian_block_turns_with_its_orbit(spindle):
     """The premise, on the 7011 under its axial load: ball b's finite-difference block 40 µs later (≈ 1° of orbit)
-    is T J_b Tᵀ of the earlier one within 1 % (relative Frobenius norm), while the block as made is off by several
-    per cent — the Jacobian's aging that the turn removes."""
+    is T J_b Tᵀ of the earlier one within 0.3 % (relative Frobenius norm; measured ≤ 0.11 %, the finite differences'
+    own scatter), while the block as made is off by ≥ 1.4 % — the Jacobian's aging that the turn removes."""
     case, m, ls, st_ = spindle
     y1, t1 = st_.y.copy(), st_.t
     j1 = _ball_blocks(m, ls, st_, y1, t1)
@@ -132,14 +132,15 @@ def test_a_balls_jacobian_block_turns_with_its_orbit(spindle):
         nrm = np.linalg.norm(j2[b])
         turned.append(np.linalg.norm(j2[b] - rot @ j1[b] @ rot.T) / nrm)
         plain.append(np.linalg.norm(j2[b] - j1[b]) / nrm)
-    assert max(turned) < 0.01, max(turned)
-    assert min(plain) > 3 * max(turned), (min(plain), max(turned))
+    assert max(turned) < 3e-3, max(turned)
+    assert min(plain) > 5 * max(turned), (min(plain), max(turned))
 
 
 def test_engine_steps_with_the_turned_jacobian(spindle):
     """The path the user takes (Stepper, the cached kernel), 7011 (a) over 1 ms from its state at 2 ms: the turned
     Jacobian takes fewer steps than the Jacobian as made, and both runs end within 1e-8 m of a run at tolerance
-    1e-8 (the ring's displacement; the position tolerance is 1e-9 m per step at 1e-6; measured 2–4e-9)."""
+    1e-8 (the ring's displacement; the position tolerance is 1e-9 m per step at 1e-6; measured 1.3e-9 turned in 114
+    steps, 5.2e-9 as made in 299)."""
     case, m, ls, st_ = spindle
     out = {}
     for orbit, tol in ((True, case.tolerance), (False, case.tolerance), (True, 1e-8)):

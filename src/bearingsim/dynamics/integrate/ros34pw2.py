@@ -277,7 +277,6 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             nfac += 1
         stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, cpl, turn)
         nfun += 3
-        age = since
         for i in range(n):
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
@@ -289,7 +288,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                 stats[i] += r * r
             stats[n + int(info[2])] += 1.0
         if adaptive:  # (an accepted step also pays the next f(t, y))
-            record_attempt(jmem, age, 4.0 if err <= 1.0 else 3.0, hs if err <= 1.0 else 0.0)
+            record_attempt(jmem, since, 4.0 if err <= 1.0 else 3.0, hs if err <= 1.0 else 0.0)
         if err <= 1.0:
             if dense:
                 dst[0] = t  # the step's start for the interpolant
