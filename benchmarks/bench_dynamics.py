@@ -39,6 +39,11 @@ ROOT = Path(__file__).resolve().parents[1]
 CASES = {"a": ROOT / "examples" / "spindle-7011.toml", "b": ROOT / "examples" / "hub-moment-50hz.toml"}
 
 
+#: --multirate: the most balls a ROS34PW2 step refines (:mod:`bearingsim.dynamics.integrate.multirate`), or None for
+#: the case file's (its default)
+MULTIRATE: int | None = None
+
+
 def load_bench_case(name: str, vehicle_speed: float | None = None, slice_rule: str | None = None):
     """The case file of ``name``, with the hub's shaft speed for a vehicle speed [km/h] (the study's tyre,
     :func:`bearingsim.studies.hub_static.shaft_speed_entry`) and the traction quadrature rule replaced."""
@@ -47,6 +52,8 @@ def load_bench_case(name: str, vehicle_speed: float | None = None, slice_rule: s
     from bearingsim.studies.hub_static import shaft_speed_entry
 
     data = read_toml(CASES[name], "case")
+    if MULTIRATE is not None:
+        data["multirate"] = MULTIRATE
     if vehicle_speed is not None:
         data["speed"] = shaft_speed_entry(vehicle_speed)
     if slice_rule is not None:
@@ -233,7 +240,7 @@ def step_timeline(name: str, duration: float, window: float, vehicle_speed: floa
     m, ls, y, _ = R.build(case)
     # dense output, as simulate() runs: the steps do not stop at the windows' ends, so the trajectory is the run's
     st = R.Stepper(m, ls, y.copy(), tol=case.tolerance, method=case.method, threads=1, jac_every=jac_every,
-                   jac_adaptive=not jac_fixed, jac_orbit=not jac_unturned, dense=True)
+                   jac_adaptive=not jac_fixed, jac_orbit=not jac_unturned, dense=True, multirate=case.multirate)
     nw = max(1, int(round(duration / window)))
     steps = np.zeros(nw, dtype=int)
     rej = np.zeros(nw, dtype=int)
@@ -265,7 +272,9 @@ def step_timeline(name: str, duration: float, window: float, vehicle_speed: floa
     nfun = int(work[0]) if work is not None else 0
     if work is not None:
         print(f"  work: {nfun} right-hand sides ({nfun / max(total, 1):.3f} per step), {int(work[2])} Jacobian "
-              f"refreshes, {int(work[1])} W factorisations")
+              f"refreshes, {int(work[1])} W factorisations"
+              + (f"; multirate: {int(work[5])} steps refined, {int(work[4])} balls in all, {int(work[3])} right-hand "
+                 f"sides of the refined balls alone" if len(work) > 5 else ""))
     return {"steps": steps, "rejected": rej, "jacobians": jacs, "q_min": qlo, "q_max": qhi, "rhs": nfun}
 
 
@@ -316,7 +325,11 @@ def main(argv=None):
                     "(the engine before the adaptive interval; default: the interval from the run's record)")
     ap.add_argument("--jac-unturned", action="store_true", help="with --timeline: the Jacobian used as made, not "
                     "turned with the balls' orbit (the engine before the seventeenth pass)")
+    ap.add_argument("--multirate", type=int, default=None, help="the most balls a ROS34PW2 step refines with micro "
+                    "steps of their own (0: none, the engine before the eighteenth pass; default: the case's, 8)")
     a = ap.parse_args(argv)
+    global MULTIRATE
+    MULTIRATE = a.multirate
     if a.timeline:
         from bearingsim.units import parse_quantity
 

@@ -11,6 +11,7 @@ curve lies below the other (fewer steps at equal error), not if it moves along i
 
 Usage:  python benchmarks/bench_precision.py [--case a|b] [--duration "5 ms"] [--tolerances 5e-7,1e-6,2e-6,4e-6]
             [--reference 1e-8] [--samples 20] [--slice-rule strips|gauss] [--n-slices N] [--vehicle-speed KMH]
+            [--multirate N]
 Not a test: the figures depend on the machine (the step counts and errors do not).
 """
 
@@ -41,6 +42,8 @@ def main(argv=None):
     ap.add_argument("--slice-rule", default=None, choices=["strips", "gauss"])
     ap.add_argument("--n-slices", type=int, default=None)
     ap.add_argument("--vehicle-speed", type=float, default=None, help="hub case (b) at this vehicle speed [km/h]")
+    ap.add_argument("--multirate", type=int, default=None,
+                    help="most balls a step refines (0: none; default: the engine's); the reference never refines")
     a = ap.parse_args(argv)
     case = load_bench_case(a.case, a.vehicle_speed if a.case == "b" else None, a.slice_rule)
     if a.n_slices:
@@ -52,8 +55,10 @@ def main(argv=None):
     times = np.linspace(0.0, duration, a.samples + 1)[1:]
     balls = np.array([ly.N_RING + ly.N_BALL * k for k in range(m.n_balls)])[:, None] + np.arange(6, 9)
 
-    def run(tol):
+    def run(tol, multirate=a.multirate):
         st = R.Stepper(m, ls, y0.copy(), tol=tol, method=case.method)
+        if multirate is not None and hasattr(st, "multirate"):  # (a tree before the refinement has none)
+            st.multirate = multirate
         ys = []
         c0 = time.process_time()
         for t in times:
@@ -61,7 +66,7 @@ def main(argv=None):
             ys.append(st.y.copy())
         return np.array(ys), st.steps, st.rejected, time.process_time() - c0
 
-    ref = run(a.reference)[0]
+    ref = run(a.reference, 0)[0]
     span = np.ptp(ref[:, 0:5], axis=0)
     loaded = np.zeros(5, bool)
     for kind in (slice(0, 3), slice(3, 5)):  # displacements, tilts

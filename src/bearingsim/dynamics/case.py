@@ -18,6 +18,8 @@ Example (``examples/spindle-7011.toml``)::
     tolerance = 1e-6                    # integrator tolerance (relative; lengths scaled by 1 mm)
     integrator = "auto"                 # ros34w (W-method, implicit per ball) for traction = "slices", else dopri5;
                                         # or "dopri5", "ros2w", "ros34w"
+    multirate = 8                       # ros34w: the most balls a step refines with micro steps of their own
+                                        # (the balls that hold the error; 0: none; integrate/multirate.py)
     contact_damping = 0.05              # Hunt–Crossley alpha [s/m], or "ehl": the alpha that gives the loaded
                                         # contacts the lubricant's squeeze-film damping (contact/damping.py)
     gravity = ["0 m/s^2", "0 m/s^2", "-9.81 m/s^2"]   # optional
@@ -98,6 +100,8 @@ START_MODES = ("consistent", "rest")
 TRACTION_COMPLIANCES = ("film", "film+solids")
 #: the balls' orbital (azimuthal) motion (Case.ball_orbit)
 BALL_ORBITS = ("free", "held")
+#: the most balls a ROS34PW2 step refines with micro steps of their own (:mod:`.integrate.multirate`)
+MULTIRATE_DEFAULT = 8
 #: most output samples of one run (duration / output_interval): 10⁷ samples of a 21-ball bearing are
 #: tens of GB of netCDF; more is a unit slip ("1e300 s"), not a simulation
 MAX_SAMPLES = 10**7
@@ -142,6 +146,8 @@ class Case:
     traction_compliance: str = "film"
     #: "free"; "held": the balls' azimuth held fixed by a frictionless constraint (:func:`.model.build_model`)
     ball_orbit: str = "free"
+    #: ROS34PW2: the most balls one step refines with micro steps of their own (0: none; :mod:`.integrate.multirate`)
+    multirate: int = MULTIRATE_DEFAULT
     source: dict = field(default_factory=dict, compare=False)
 
     def __post_init__(self):
@@ -199,6 +205,9 @@ class Case:
         if self.traction_compliance not in TRACTION_COMPLIANCES:
             raise InputError("traction_compliance", f"unknown option {self.traction_compliance!r}"[:160],
                              'use "film" or "film+solids"')
+        if isinstance(self.multirate, bool) or not isinstance(self.multirate, int) or not 0 <= self.multirate <= 1000:
+            raise InputError("multirate", f"must be a whole number of balls from 0 to 1000, got {self.multirate!r}"[:160],
+                             "e.g. 8 (0: no refinement)")
         if self.ball_orbit not in BALL_ORBITS:
             raise InputError("ball_orbit", f"unknown option {self.ball_orbit!r}"[:160], 'use "free" or "held"')
 

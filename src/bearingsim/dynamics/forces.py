@@ -320,7 +320,7 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
 
 @njit(cache=True, _nrt=False)
 def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc, memo, threads, work):
+                      diag, acc, memo, threads, work, active):
     """Every ball on its two raceways, and Newton–Euler for every ball.
 
     Inner raceway: the groove-curvature centre g in the ball's meridian plane of the tilted, displaced
@@ -381,6 +381,10 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
         for k in range(nb):
             for i in range(NCONTRIB):
                 ck[i] = 0.0
+            if active.shape[0] > 0 and active[k] == 0:
+                for i in range(NCONTRIB):
+                    contrib[k, i] = 0.0
+                continue
             # ---- BEGIN copy of the body of _one_ball (kept identical: bitwise the same as the threaded path)
             r = ball_row[k]
             o = ly.N_RING + ly.N_BALL * k
@@ -572,7 +576,8 @@ def cage_kinematics(y, o, cpar, rm, rcm, occ, wc):
 
 
 @njit(cache=True, inline="always")
-def cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, wc, fc, mc, fm, diag, want, acc, work):
+def cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, wc, fc, mc, fm, diag, want, acc, work,
+                 active):
     """The ball–pocket contacts of cage ci ([S1] §3.2, eqs. 6–7; module docstring).
 
     Per pocket j at azimuth φ_j = ψ₀ + 2πj/Z: the ball centre in the pocket frame (elastic cage: in the
@@ -606,6 +611,8 @@ def cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, w
         if j > 0:
             cph, sph = cph * cdp - sph * sdp, sph * cdp + cph * sdp
         k = b0 + j
+        if active.shape[0] > 0 and active[k] == 0:
+            continue
         ob = ly.N_RING + ly.N_BALL * k
         half_d = 0.5 * rows[ball_row[k], kn.P_D]
         for i in range(3):
@@ -943,11 +950,12 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     """
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
     nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, threads)
-    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, np.empty(nw))
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, np.empty(nw),
+         np.zeros(0, np.int8))
 
 
 @njit(cache=True, _nrt=False)
-def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, work):
+def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, work, active):
     """The body of :func:`rhs`; work: float[RHS_WORK + cm.shape[1] + ball_work_size(...)] (every small array of the
     equations is a view of it)."""
     nb = ball_row.shape[0]
@@ -986,7 +994,7 @@ def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag
     loads_at(t, loadspec, loads)
     # ---- balls on the raceways
     balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc, memo, threads, work[RHS_WORK + cm.shape[1]:])
+                      diag, acc, memo, threads, work[RHS_WORK + cm.shape[1]:], active)
     # ---- cages: pockets (with elastic modes), land guidance, equations
     oc0 = ly.N_RING + ly.N_BALL * nb
     rmc = work[41:50].reshape((3, 3))
@@ -1032,7 +1040,7 @@ def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag
             fc[i] = 0.0
             mc[i] = 0.0
         cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, wc, fc, mc, fm, diag, want, acc,
-                     cwork)
+                     cwork, active)
         land_guidance(cpar, occ, vc, wc, c, ax, wring, cd, fc, mc, fring, mring, gp[ly.G_VREF], want, acc, cwork)
         cage_equations(ci, o, y, dy, cpar, cm, rmc, syb, cyb, fc, mc, fm, g0, g1, g2, acc)
     if gp[ly.G_ORBIT_HELD] > 0.0:
@@ -1096,6 +1104,17 @@ def evaluate(model, t, y, loadspec, want_diag=True, threads=False):
 def rhs_args(t, y, dy, a):
     """:func:`rhs` with its arrays in one tuple (the integrator's calling convention)."""
     rhs(t, y, dy, a[0], a[1], a[2], a[3], a[4], a[5], a[6], a[7], a[8], a[9], a[10])
+
+
+@njit(cache=True)
+def rhs_masked(t, y, dy, a, active):
+    """:func:`rhs_args` for the balls with active[k] ≠ 0 only (their raceway and pocket contacts; serial): the other
+    balls' derivatives are not computed, and those of the rings and cages are not complete."""
+    rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
+    nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
+    nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, False)
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), False, np.empty(nw),
+         active)
 
 
 @njit(cache=True)

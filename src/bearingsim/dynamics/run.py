@@ -137,11 +137,11 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     model, loadspec, y0, static = build(case)
     fp = case.fingerprint()
     stepper = Stepper(model, loadspec, y0, tol=case.tolerance, h=min(1e-7, case.output_interval),
-                      method=case.method, threads=threads, dense=dense)
+                      method=case.method, threads=threads, dense=dense, multirate=case.multirate)
     attrs = {"title": "bearingsim dynamic simulation", "bearing": model.names.get("bearing", ""),
              "traction": case.traction, "tolerance": case.tolerance, "case_fingerprint": fp,
              "conventions": "x bearing axis, outer ring fixed, psi = 0 on +y, SI units",
-             "integrator": integrator_text(case.method, model, stepper.ring_coupling)}
+             "integrator": integrator_text(case.method, model, stepper.ring_coupling, stepper.multirate)}
     attrs["output_sampling"] = ("dense output: each sample from the cubic Hermite interpolant of the integrator's step "
                                 "that holds its time (the steps do not stop at the output times)" if stepper.dense
                                 else "every output time ends an integrator step")

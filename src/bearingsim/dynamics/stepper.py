@@ -27,7 +27,7 @@ from . import forces as fo
 from . import integrate as ig
 from . import layout as ly
 from . import model as md
-from .integrate.common import dense_arrays, hermite
+from .integrate.common import dense_arrays, dense_state
 from .integrate.specialised import engine_kernel
 
 
@@ -43,13 +43,19 @@ INTEGRATOR_TEXT = {
 }
 
 
-def integrator_text(method: str, model: md.Model | None = None, ring_coupling: bool = True) -> str:
+def integrator_text(method: str, model: md.Model | None = None, ring_coupling: bool = True, multirate: int = 0) -> str:
     """What the ``integrator`` attribute of an output file says about ``method``.  ROS34PW2 couples the
     inner ring's block with the balls unless the ring is held fixed (``G_RING_FIXED``) or
-    ``ring_coupling`` is off; then its Jacobian is block-diagonal per ball."""
+    ``ring_coupling`` is off; then its Jacobian is block-diagonal per ball.  With ``multirate`` > 0 its steps refine
+    up to that many balls with micro steps of their own (:mod:`.integrate.multirate`)."""
     if method == "ros34w" and (not ring_coupling or (model is not None and model.gp[ly.G_RING_FIXED] > 0.0)):
-        return "ROS34PW2 W-method (Rang & Angermann 2005), block-diagonal per ball"
-    return INTEGRATOR_TEXT[method]
+        text = "ROS34PW2 W-method (Rang & Angermann 2005), block-diagonal per ball"
+    else:
+        text = INTEGRATOR_TEXT[method]
+    if method == "ros34w" and multirate > 0:
+        text += (f"; the balls that hold the error (up to {multirate} per step) stepped again on their own "
+                 "(multirate refinement, Savcenco, Hundsdorfer & Verwer 2007)")
+    return text
 
 
 @dataclass
@@ -74,6 +80,9 @@ class Stepper:
     #: :mod:`.integrate.linalg`; False: as made).  7011 (a) ≈ 3× fewer right-hand sides (its J aged by the orbit)
     jac_orbit: bool = True
     ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
+    #: ROS34PW2: the most balls a step refines with micro steps of their own (:mod:`.integrate.multirate`; 0: none).
+    #: Hub (b), 20 ms: −37 % CPU, 10 km/h −36 %; the 7011 never refines (docs/dynamics.md, eighteenth pass)
+    multirate: int = 8
     max_steps_per_interval: int = 10_000_000
     #: threads for the ball contacts of the right-hand side (None or 1: serial; up to NUMBA_NUM_THREADS; "auto":
     #: :func:`idle_cores`, the CLI's default).  The result is the same bit for bit
@@ -120,7 +129,8 @@ class Stepper:
         kernel = engine_kernel(ig.METHODS[self.method].__name__.rsplit(".", 1)[1], fun)
         self.workspace = ig.Workspace(fun, self._args, self.y, self.atol, self.rtol, vec=self.vec, blk=self._blk,
                                       kernel=kernel, nbk=ly.N_BALL, rmass=self._rmass, bmass=self._bmass,
-                                      jacobian=self._ws, info=self._info, dense=self._dense)
+                                      jacobian=self._ws, info=self._info, dense=self._dense,
+                                      multirate=int(self.multirate) if self.method == "ros34w" else 0)
 
     def advance(self, t_end: float) -> None:
         """Integrate to t_end [s] with ``METHODS[method].advance(workspace, t_end)`` (with :attr:`dense`: to the
@@ -131,6 +141,7 @@ class Stepper:
         ws.dense = self._dense
         ws.t, ws.h, ws.h_min = self.t, self.h, self.h_min
         ws.max_steps, ws.jac_every = self.max_steps_per_interval, self.jac_every
+        ws.multirate = int(self.multirate) if self.method == "ros34w" else 0
         ws.steps, ws.rejected = self.steps, self.rejected
         if self.threads > 1:
             numba.set_num_threads(self.threads)
@@ -145,7 +156,7 @@ class Stepper:
 
     def state_at(self, t: float) -> np.ndarray:
         """The state at time t [s] (a new array): integrated to t; with :attr:`dense` to the first step at or past
-        t and interpolated in that step (:func:`.integrate.common.hermite`).  Times must not go back past the
+        t and interpolated in that step (:func:`.integrate.common.dense_state`).  Times must not go back past the
         start of the last step."""
         if t > self.t:
             self.advance(t)
@@ -156,7 +167,7 @@ class Stepper:
         dns, dst = self._dense
         if dst[3] == 0.0 or t < dst[0]:
             raise ValueError(f"t = {t!r} s is before the last step [{dst[0]!r}, {self.t!r}] s of the dense output")
-        return hermite(float(dst[0]), dns[0], dns[1], self.t, self.y, dns[2], float(t))
+        return dense_state(dns, dst, self.t, self.y, float(t))
 
     def sample(self, t: float | None = None, y: np.ndarray | None = None) -> dict:
         """Output quantities at the current state, or at (t [s], y) (:meth:`state_at`) (SI)."""

@@ -10,7 +10,7 @@ import math
 from dataclasses import replace
 from pathlib import Path
 
-from ..dynamics.case import Case
+from ..dynamics.case import MULTIRATE_DEFAULT, Case
 from ..dynamics.loads import parse_loads, parse_speed
 from ..errors import InputError
 from ..units import file_input, parse_quantity
@@ -20,7 +20,7 @@ from .files import read_toml
 _KEYS = {"bearing", "lubricant", "temperature", "speed", "duration", "output_interval", "traction", "n_slices",
          "tolerance", "contact_damping", "gravity", "load_point", "chunk", "control", "loads", "inner_ring", "cage",
          "lubrication", "name", "description", "checkpoint_every", "integrator", "start", "ramp_in",
-         "traction_compliance", "ball_orbit", "slice_rule"}
+         "traction_compliance", "ball_orbit", "slice_rule", "multirate"}
 
 #: elastic-cage ring data in [cage] (bearingsim.cage_modes.CageRing fields) and their dimensions
 _CAGE_RING = {"axial_width": "length", "radial_thickness": "length", "pocket_diameter": "length",
@@ -158,7 +158,8 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
                 chunk=data.get("chunk", 200), control=data.get("control", "outer"),
                 checkpoint_every=every, checkpoint_interval=interval, integrator=data.get("integrator", "auto"),
                 start=start, traction_compliance=data.get("traction_compliance", "film"),
-                ball_orbit=data.get("ball_orbit", "free"), source=data)
+                ball_orbit=data.get("ball_orbit", "free"), multirate=data.get("multirate", MULTIRATE_DEFAULT),
+                source=data)
 
 
 def load_case(path) -> Case:

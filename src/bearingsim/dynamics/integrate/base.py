@@ -11,7 +11,8 @@ checkpoint saves).  Each method module (:mod:`.dopri5`, :mod:`.ros2`, :mod:`.ros
   kernel: integrates y in place from t to exactly t_end with error control and returns
   (status, t reached, proposed next step); info[0:4] ← steps accepted, steps rejected, index of the
   component with the largest error at the last step, that scaled error; ROS34PW2 also info[4:7] ← the
-  right-hand sides evaluated, the W factorisations and the Jacobian refreshes (:attr:`Workspace.work`);
+  right-hand sides evaluated, the W factorisations and the Jacobian refreshes, info[7:10] ← the refined balls'
+  right-hand sides, the balls refined and the steps refined (:mod:`.multirate`) (:attr:`Workspace.work`);
 * ``advance(ws, t_end) -> Status`` — the same on a :class:`Workspace`: on success ws.t = t_end and
   ws.h the proposed step; on failure ws.t is the time reached and ws.h unchanged; ws.steps and
   ws.rejected count the steps.  With ``ws.dense`` (ROS34PW2's dense output) the call instead stops at the
@@ -39,7 +40,7 @@ from ..layout import N_BALL
 from .common import NO_VECTORS, OK, Status
 
 #: entries of a workspace's ``info`` (module docstring)
-INFO_SIZE = 7
+INFO_SIZE = 10
 
 
 #: ages (steps since the Jacobian's refresh) the refresh interval's controller keeps a record of
@@ -94,9 +95,12 @@ class Workspace:
     info: np.ndarray = field(default_factory=lambda: np.zeros(INFO_SIZE))  #: see the module docstring
     steps: int = 0  #: accepted steps so far
     rejected: int = 0  #: rejected steps so far
-    #: ROS34PW2's work so far: right-hand sides evaluated, W factorisations, Jacobian refreshes (zeros for the
-    #: other methods)
-    work: np.ndarray = field(default_factory=lambda: np.zeros(3, dtype=np.int64))
+    #: ROS34PW2's work so far: right-hand sides evaluated, W factorisations, Jacobian refreshes, and of the multirate
+    #: refinement (:mod:`.multirate`) the right-hand sides of the refined balls alone, the balls refined (summed over
+    #: the steps) and the steps refined (zeros for the other methods)
+    work: np.ndarray = field(default_factory=lambda: np.zeros(6, dtype=np.int64))
+    #: ROS34PW2 on the engine's right-hand side: the most balls one step refines (:mod:`.multirate`; 0: none)
+    multirate: int = 0
     #: the method's kernel specialised for ``fun`` (:func:`.specialised.engine_kernel`), or None: the generic one
     kernel: object = None
     #: ROS34PW2's dense output (:func:`.common.dense_arrays`): the calls stop at the first step at or past t_end
@@ -108,8 +112,8 @@ class Workspace:
         self.steps += int(self.info[0])
         self.rejected += int(self.info[1])
         if self.info.shape[0] >= INFO_SIZE:
-            self.work += self.info[4:7].astype(np.int64)
-            self.info[4:7] = 0.0
+            self.work += self.info[4:10].astype(np.int64)
+            self.info[4:10] = 0.0
         self.t = t
         if status == OK:
             self.h = h

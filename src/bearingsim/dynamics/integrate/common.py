@@ -38,12 +38,48 @@ STATUS_TEXT = {OK: "ok", STEP_TOO_SMALL: "step size fell below the minimum (dive
 NO_VECTORS = np.zeros((0, 2), dtype=np.int64)
 
 
+#: the most micro steps of one multirate refinement (:mod:`.multirate`): the dense output keeps their nodes
+MICRO_MAX = 48
+#: the dense output's state (:func:`dense_arrays`): where the number of micro nodes, their times, and the multirate
+#: refinement's memory (its next micro step [s], the large steps left without refinement) are
+DST_NODES = 4
+DST_TIMES = 5
+DST_MR = DST_TIMES + MICRO_MAX + 1
+
+
 def dense_arrays(n: int) -> tuple[np.ndarray, np.ndarray]:
-    """The arrays of a dense-output run of ROS34PW2 (:func:`.ros34pw2.integrate`) for n states: float[3, n]
-    (y₀ and f(t₀, y₀) at the start of the last step, f at its end) and float[4] (t₀ [s], the step controller's
-    previous error (1 at the start, as in a call without dense output), 1 after a rejected step, 1 when row 2
-    holds f at the current state).  With n = 0: no dense output (:data:`NO_DENSE`)."""
-    return np.zeros((3, n)), np.array([0.0, 1.0, 0.0, 0.0])
+    """The arrays of a dense-output run of ROS34PW2 (:func:`.ros34pw2.integrate`) for n states: float[4 + 2 (M + 1),
+    n] (y₀ and f(t₀, y₀) at the start of the last step, f at its end, then — when the last step refined some balls
+    (:mod:`.multirate`) — 1 on their states, and per node j of their micro steps the states and f there) and
+    float[5 + M + 1] (t₀ [s], the step controller's previous error (1 at the start, as in a call without dense
+    output), 1 after a rejected step, 1 when row 2 holds f at the current state, the number of micro nodes of the last
+    step (0: not refined), the nodes' times [s], the refinement's next micro step [s] and cool-down count, carried
+    from one call to the next); M = :data:`MICRO_MAX`.  With n = 0: no dense output
+    (:data:`NO_DENSE`)."""
+    dst = np.zeros(DST_MR + 2)
+    dst[1] = 1.0
+    return np.zeros((4 + 2 * (MICRO_MAX + 1) if n else 3, n)), dst
+
+
+def dense_state(dns: np.ndarray, dst: np.ndarray, t1: float, y1: np.ndarray, t: float) -> np.ndarray:
+    """The state at t [s] in the last step [dst[0], t1] of a dense-output run (ending at y1): :func:`hermite` on the
+    step's ends, and on the refined balls' states (:mod:`.multirate`) the same interpolant on the micro step that
+    holds t."""
+    y = hermite(float(dst[0]), dns[0], dns[1], t1, y1, dns[2], t)
+    nodes = int(dst[DST_NODES]) if dst.shape[0] > DST_NODES else 0
+    if nodes >= 2:
+        act = dns[3] != 0.0
+        times = dst[DST_TIMES:DST_TIMES + nodes]
+        j = min(max(int(np.searchsorted(times, t, side="right")) - 1, 0), nodes - 2)
+        y[act] = hermite(float(times[j]), dns[4 + 2 * j][act], dns[5 + 2 * j][act], float(times[j + 1]),
+                         dns[4 + 2 * (j + 1)][act], dns[5 + 2 * (j + 1)][act], t)
+    return y
+
+
+@njit(cache=True)
+def no_masked(t, y, dy, args, active):
+    """The masked right-hand side of a problem without one (:mod:`.multirate` is off there): nothing."""
+    return
 
 
 #: no dense output (:func:`dense_arrays` for no states): the calls stop exactly at t_end

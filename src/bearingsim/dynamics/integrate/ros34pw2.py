@@ -28,6 +28,9 @@ from numba import njit
 from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE, N_BALL
 from .base import INFO_SIZE, Workspace, ros34_workspace
 from .common import (
+    DST_MR,
+    DST_NODES,
+    DST_TIMES,
     MAX_STEPS,
     NO_DENSE,
     NO_DENSE_STATE,
@@ -39,6 +42,7 @@ from .common import (
     clip_step,
     error_norm,
     error_scale,
+    no_masked,
     pi_factor,
     reject_factor,
 )
@@ -52,6 +56,7 @@ from .jacobian import (
     ring_jac,
     ring_rows,
 )
+from .multirate import COOL, refine, refine_work, select
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, orbit_reference, orbit_turn, turned_solve, w_inverse
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
@@ -131,7 +136,7 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
 @njit
 def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
               rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False, vec=NO_VECTORS,
-              dns=NO_DENSE, dst=NO_DENSE_STATE, rec=np.zeros((0, MEMO_W))):
+              dns=NO_DENSE, dst=NO_DENSE_STATE, rec=np.zeros((0, MEMO_W)), funm=no_masked, mr=0):
     """ROS34PW2 from t to t_end in place (module docstring).
 
     ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
@@ -160,6 +165,13 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     (:func:`.jacobian.ring_columns`: a refresh costs 9 right-hand sides, 10 when the last evaluation was not at
     (t, y) and the record must be made there first, :func:`.jacobian.record_at`; instead of 9 + 10 with ≈ 0.58
     each), unless the record's ring row says the model does not allow it.
+
+    ``funm``, ``mr``: the multirate refinement (:mod:`.multirate`; issue 14): with mr > 0 and the balls' layout
+    (nbk = 9) each step refines up to mr balls whose own errors are too large with micro steps of their own, ``funm``
+    being the right-hand side of those balls alone (:func:`bearingsim.dynamics.forces.rhs_masked`, signature
+    (t, y, dy, args, active)); the step's error for the controller is then that of the other states.  info[7:10] ←
+    the masked right-hand sides, the balls refined and the steps refined.  mr = 0 (the default, and
+    :func:`.common.no_masked`): the plain method.
     """
     n = y.shape[0]
     nb = blk.shape[0]
@@ -193,6 +205,25 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     turn = np.zeros((jaz.shape[0] if jaz.shape[0] == nb and nbk == N_BALL else 0, 2))
     rbase = np.zeros((nb + 1, 6))  # the record at y (:func:`.jacobian.ring_columns`)
     drec = np.zeros((nb, nbk, 6))
+    # the multirate refinement (:mod:`.multirate`): up to mr balls per step, on the balls' layout
+    mr_on = mr > 0 and nbk == N_BALL
+    nmr = mr if mr_on else 0
+    mrw = refine_work(n if mr_on else 0, nmr)
+    r2 = np.empty(n if mr_on else 0)
+    sbl = np.empty(nb if mr_on else 0)
+    mask = np.zeros(nb if mr_on else 0, np.int8)
+    count = np.zeros(3)
+    tab = np.array([R34_A21, R34_A31, R34_A32, R34_A41, R34_A42, R34_A43, R34_ALPHA2, R34_ALPHA3, R34_ALPHA4,
+                    R34_C21, R34_C31, R34_C32, R34_C41, R34_C42, R34_C43, R34_M[0], R34_M[1], R34_M[2], R34_M[3],
+                    R34_E[0], R34_E[1], R34_E[2], R34_E[3], R34_G])
+    no_nodes = np.zeros((0, n))
+    hm = h
+    cool = 0
+    nref = 0
+    nball = 0
+    if dns.shape[1] == n and dst.shape[0] > DST_MR + 1 and dst[DST_MR] > 0.0:
+        hm = dst[DST_MR]
+        cool = int(dst[DST_MR + 1])
     need_jac = jst[1] == 0
     since = jst[0]
     adaptive = jmem.shape[0] > 0  # the refresh interval from the run's record (:func:`.jacobian.refresh_interval`)
@@ -282,13 +313,48 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
                        + (R34_M[2] - R34_E[2]) * k3[i] + (R34_M[3] - R34_E[3]) * k4[i])
         err, finite = error_norm(evec, y, ynew, atol, rtol, info, vec)
+        masked0 = count[0]
+        nact = 0
+        if dense and dst.shape[0] > DST_NODES:
+            dst[DST_NODES] = 0.0
+        if mr_on and finite:
+            if cool > 0:
+                cool -= 1
+            else:
+                for i in range(n):
+                    r = evec[i] / error_scale(i, y, ynew, atol, rtol, vec)
+                    r2[i] = r * r
+                nact, rem = select(r2, blk, nbk, nmr, sbl, mask)
+                err_l = np.sqrt(rem / n)
+                if nact > 0 and err_l <= 1.0:
+                    act = np.empty(nact, np.int64)
+                    a = 0
+                    for b in range(nb):
+                        if mask[b] == 1:
+                            act[a] = b
+                            a += 1
+                    keep = dense and t + hs >= t_end
+                    done, hm = refine(funm, args, mask, act, t, hs, y, f0, ynew, blk, jac, turn, atol, rtol, vec,
+                                      min(hm, hs), h_min, tab, mrw, count, dns if keep else no_nodes, dst)
+                    if done:
+                        err = err_l
+                        nref += 1
+                        nball += nact
+                    else:  # given up: the large step as it is (accepted if its own error allows), no refinement
+                        cool = COOL
+                        nact = 0
+                        if dense and dst.shape[0] > DST_NODES:
+                            dst[DST_NODES] = 0.0
+                elif nact > 0:
+                    err = err_l  # rejected: the next step is sized for the other states
         if stats.shape[0] == 2 * n:
             for i in range(n):
                 r = evec[i] / error_scale(i, y, ynew, atol, rtol, vec)
                 stats[i] += r * r
             stats[n + int(info[2])] += 1.0
         if adaptive:  # (an accepted step also pays the next f(t, y))
-            record_attempt(jmem, since, 4.0 if err <= 1.0 else 3.0, hs if err <= 1.0 else 0.0)
+            record_attempt(jmem, since, (4.0 if err <= 1.0 else 3.0) + (count[0] - masked0) * (nact + 1.0) / nb,
+                           hs if err <= 1.0 else 0.0)
         if err <= 1.0:
             if dense:
                 dst[0] = t  # the step's start for the interpolant
@@ -328,6 +394,16 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         if have_f0:
             for i in range(n):
                 dns[2, i] = f0[i]
+        if dst.shape[0] > DST_MR + 1:
+            nodes = int(dst[DST_NODES])
+            if nodes > 0 and have_f0 and nacc > 0:  # the refined balls' end node: the state reached and f there
+                dst[DST_TIMES + nodes] = t
+                for i in range(n):
+                    dns[4 + 2 * nodes, i] = y[i]
+                    dns[5 + 2 * nodes, i] = f0[i]
+                dst[DST_NODES] = nodes + 1.0
+            dst[DST_MR] = hm
+            dst[DST_MR + 1] = float(cool)
         dst[1] = err_prev
         dst[2] = 1.0 if prev_rej else 0.0
         dst[3] = 1.0 if have_f0 else 0.0
@@ -337,6 +413,9 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         info[4] = nfun
         info[5] = nfac
         info[6] = njac
+        info[7] = count[0]
+        info[8] = nball
+        info[9] = nref
     return status, t, h
 
 
@@ -388,7 +467,8 @@ def advance(ws: Workspace, t_end: float) -> Status:
     kernel = ws.kernel
     if kernel is not None:
         status, t, h = kernel(ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min, ws.max_steps,
-                              ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass, ws.vec, dns, dst)
+                              ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass, ws.bmass, ws.vec, dns, dst,
+                              ws.multirate)
     else:
         status, t, h = integrate(ws.fun, ws.args, ws.t, float(t_end), ws.y, ws.h, ws.atol, ws.rtol, ws.h_min,
                                  ws.max_steps, ws.info, ws.blk, ws.nbk, ws.jac_every, ws.jacobian, ws.rmass,

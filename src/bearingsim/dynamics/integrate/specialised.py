@@ -135,18 +135,22 @@ def ros2_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk,
 # ---- ROS34PW2 (without the profiling statistics of bench_dynamics --steps, which calls the generic kernel) ---
 @_cached
 def ros34_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass, bmass,
-                 vec, dns, dst):
-    """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args`."""
+                 vec, dns, dst, mr):
+    """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args` (and the masked
+    right-hand side of the multirate refinement, :func:`~bearingsim.dynamics.forces.rhs_masked`)."""
     return ros34pw2.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk,
-                              jac_every, ws, rmass, bmass, np.zeros(0), False, vec, dns, dst, args[10])
+                              jac_every, ws, rmass, bmass, np.zeros(0), False, vec, dns, dst, args[10],
+                              forces.rhs_masked, mr)
 
 
 @_cached
 def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass,
-                   bmass, vec, dns, dst):
-    """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded`."""
+                   bmass, vec, dns, dst, mr):
+    """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded` (the
+    refinement's masked right-hand side serial)."""
     return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
-                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec, dns, dst, args[10])
+                              blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec, dns, dst, args[10],
+                              forces.rhs_masked, mr)
 
 
 #: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel

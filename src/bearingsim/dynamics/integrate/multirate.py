@@ -1,0 +1,336 @@
+"""Multirate refinement of ROS34PW2 steps: the balls that hold the error stepped again on their own (issue 14).
+
+Why.  On the hub (b) the step is set by a few balls: near the moment's zero crossing the balls of the row being
+unloaded rattle between their raceways (inner loads jumping between 0 and ≈ 140 N from one 20 µs sample to the
+next) and, resolved at the case's tolerance, hold the whole system at 1.15 µs steps — four of 32 balls carry 99 %
+of the error there (docs/dynamics.md, eighteenth pass; ``python benchmarks/bench_dynamics.py --steps``).  With
+those balls' errors left out, the same 0.8 ms takes 71 steps instead of 695.  Stepping every state at the rate of
+the fastest is what multirate methods avoid.
+
+Method (Savcenco, Hundsdorfer & Verwer, "A multirate time stepping strategy for stiff ordinary differential
+equations", BIT Numer. Math. 47 (2007) 137–155, their §2: a step of the whole system, then the components whose
+local error is too large computed again over the same interval with smaller steps, the others — latent — taken
+from an interpolant of the large step):
+
+1. A ROS34PW2 step of size H of the whole system (:func:`.ros34pw2.integrate`), with its error estimate e.
+2. Per ball b the sum of its nine scaled squared errors s_b = Σ (e_i / sc_i)²; the balls with s_b > 9 θ
+   (the RMS of their own errors above √θ, θ = :data:`HOT`), largest first, up to ``mr`` of them, are *active*.
+   The step's error for the controller is that of the others, √((Σ s − Σ_active s_b) / n); above 1 it is rejected
+   as before.
+3. The active balls are integrated again over [t, t + H] (:func:`refine`) by ROS34PW2 steps of their own on their
+   nine states each, with the rings and cages on the quadratic through y(t), f(t, y) and the large step's y(t + H)
+   (:func:`latent`); their right-hand side is the engine's with the other balls skipped
+   (:func:`bearingsim.dynamics.forces.rhs_masked`: 4 active balls cost 10.5 µs against 56 µs for all 32).
+   Error control on the active balls' states alone: √(Σ_active (e_i / sc_i)² / (9 n_active)) ≤ 1, which holds each
+   of them at least as tightly as the whole system's RMS norm does.  Their W uses the large step's Jacobian blocks
+   (turned with the orbit, :mod:`.linalg`), made again by differences of the masked right-hand side after two
+   rejections in a row (:func:`micro_jac`).  After :data:`~.common.MICRO_MAX` micro attempts the refinement gives
+   up: the large step is rejected and the next :data:`COOL` steps are not refined.
+4. The active balls' states at t + H are replaced by the refined ones.
+
+What it leaves out: the rings and cages feel the active balls' forces of the large step, not of the refined
+trajectories (the coupling error of the method).  Measured (docs/dynamics.md): the ring displacement's deviation
+from a tol-1e-8 run over the first 5 ms 1.32e-5 / 9.9e-6 / 5.4e-6 of the ranges against 8.7e-6 / 6.6e-6 /
+3.65e-6 without (bound of issue 14: 1e-4).
+
+Dense output: the refined balls do not follow the large step's Hermite interpolant between its ends, so the last
+step of a dense call keeps the micro steps' nodes (states and f) and :func:`.common.dense_state` interpolates the
+refined balls on them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from .common import DST_NODES, DST_TIMES, MICRO_MAX, error_scale
+from .linalg import block_w_inverse
+
+#: a ball is refined when the RMS of its own nine scaled errors exceeds √HOT (hub (b), 20 ms from the start, CPU
+#: against the plain step: θ = 1 / 4 / 16: −26 % / −37 % / −20 %)
+HOT = 4.0
+#: large steps without refinement after a refinement gave up (:data:`~.common.MICRO_MAX` micro attempts)
+COOL = 16
+
+
+@njit(cache=True, _nrt=False)
+def turned_block(jb, c, s, out):
+    """out = T J_b Tᵀ for one ball's 9 × 9 block, T turning each of its three vectors (r, v, ω) about x by the angle
+    whose (cos, sin) is (c, s) (:mod:`.linalg`: the Jacobian turned with the balls' orbit)."""
+    for i in range(9):
+        for j in range(9):
+            out[i, j] = jb[i, j]
+    for k in range(3):
+        i = 3 * k + 1
+        for j in range(9):
+            a1 = out[i, j]
+            a2 = out[i + 1, j]
+            out[i, j] = c * a1 - s * a2
+            out[i + 1, j] = s * a1 + c * a2
+    for k in range(3):
+        j = 3 * k + 1
+        for i in range(9):
+            a1 = out[i, j]
+            a2 = out[i, j + 1]
+            out[i, j] = c * a1 - s * a2
+            out[i, j + 1] = s * a1 + c * a2
+
+
+@njit(cache=True, _nrt=False)
+def latent(t0, hh, y0, f0, y1, tau, out):
+    """out ← the quadratic through y0 and its slope f0 at t0 and y1 at t0 + hh, at tau [s] (every state; the active
+    balls' are overwritten by the caller)."""
+    th = (tau - t0) / hh
+    for i in range(y0.shape[0]):
+        out[i] = y0[i] + th * hh * f0[i] + th * th * (y1[i] - y0[i] - hh * f0[i])
+
+
+@njit(cache=True, _nrt=False)
+def _solve(act, blk, winvb, v, out):
+    """out = W_b⁻¹ v on each active ball's nine states."""
+    for a in range(act.shape[0]):
+        o = blk[act[a]]
+        for i in range(9):
+            s = 0.0
+            for j in range(9):
+                s += winvb[a, i, j] * v[o + j]
+            out[o + i] = s
+
+
+@njit
+def micro_jac(funm, args, mask, act, blk, tau, ybase, fbase, atol, jt, yt, ft):
+    """The active balls' 9 × 9 blocks by forward differences of the masked right-hand side at (tau, ybase), fbase
+    being f there: one component of every active ball perturbed at once, the step of
+    :func:`.jacobian.block_jac`."""
+    na = act.shape[0]
+    for j in range(9):
+        for i in range(ybase.shape[0]):
+            yt[i] = ybase[i]
+        for a in range(na):
+            o = blk[act[a]] + j
+            yt[o] = ybase[o] + 1e-7 * max(abs(ybase[o]), 1e4 * atol[o])
+        funm(tau, yt, ft, args, mask)
+        for a in range(na):
+            o = blk[act[a]]
+            e = yt[o + j] - ybase[o + j]
+            for i in range(9):
+                jt[a, i, j] = (ft[o + i] - fbase[o + i]) / e
+
+
+@njit(cache=True)
+def refine_work(n, nmax):
+    """The work arrays of :func:`refine` for n states and up to ``nmax`` active balls."""
+    return (np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n),
+            np.empty(n), np.zeros((nmax, 9, 9)), np.zeros((nmax, 9, 9)), np.zeros((9, 9)), np.empty(n), np.empty(n),
+            np.empty(n), np.empty(n))
+
+
+@njit
+def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hm0, h_min, tab, work, count,
+           dns, dst):
+    """The active balls ``act`` (``mask`` 1 on them) again over [t, t + hh] [s] with ROS34PW2 steps of their own
+    (module docstring, step 3), starting with the step hm0; y1's active states ← the result.  ``tab``: ROS34PW2's
+    constants (a21, a31, a32, a41, a42, a43, α2, α3, α4, c21, c31, c32, c41, c42, c43, m1…m4, e1…e4, γ); ``count``
+    (float[3]) += masked right-hand sides, micro steps, micro rejections.  With ``dns`` rows for the nodes
+    (:func:`.common.dense_arrays`; no rows: none kept) the micro steps' nodes are kept for the dense output.
+    Returns (done, the next micro step proposed)."""
+    yf, ff, ya, k1, k2, k3, k4, tv, yn, jt, winvb, wm, ybase, yt2, ft2, fa = work
+    a21, a31, a32, a41, a42, a43 = tab[0], tab[1], tab[2], tab[3], tab[4], tab[5]
+    al2, al3, al4 = tab[6], tab[7], tab[8]
+    c21, c31, c32, c41, c42, c43 = tab[9], tab[10], tab[11], tab[12], tab[13], tab[14]
+    m1, m2, m3, m4 = tab[15], tab[16], tab[17], tab[18]
+    d1, d2, d3, d4 = tab[15] - tab[19], tab[16] - tab[20], tab[17] - tab[21], tab[18] - tab[22]
+    gam = tab[23]
+    na = act.shape[0]
+    n = y0.shape[0]
+    keep = dns.shape[0] > 4 and dns.shape[1] == n
+    if keep:
+        for i in range(n):
+            dns[3, i] = 0.0
+        for a in range(na):
+            o = blk[act[a]]
+            for i in range(9):
+                dns[3, o + i] = 1.0
+    for a in range(na):
+        b = act[a]
+        if turn.shape[0] > 0:
+            turned_block(jac[b], turn[b, 0], turn[b, 1], jt[a])
+        else:
+            for i in range(9):
+                for j in range(9):
+                    jt[a, i, j] = jac[b, i, j]
+    for i in range(n):
+        ya[i] = y0[i]
+    tau = t
+    te = t + hh
+    hm = min(hm0, hh)
+    hw = -1.0
+    ig = 1.0 / gam
+    have_f = False
+    prev_rej = False
+    attempts = 0
+    nodes = 0
+    while tau < te:
+        if attempts >= MICRO_MAX or hm < h_min:
+            return False, hm
+        last = tau + hm >= te
+        hs = te - tau if last else hm
+        if hs != hw:
+            for a in range(na):
+                block_w_inverse(jt[a], -gam * hs, wm, winvb[a])
+            hw = hs
+        if not have_f:
+            latent(t, hh, y0, f0, y1, tau, yf)
+            for a in range(na):
+                o = blk[act[a]]
+                for i in range(9):
+                    yf[o + i] = ya[o + i]
+            funm(tau, yf, ff, args, mask)
+            count[0] += 1.0
+            for a in range(na):
+                o = blk[act[a]]
+                for i in range(9):
+                    fa[o + i] = ff[o + i]
+            if prev_rej:  # two rejections in a row: the active blocks made again here
+                for i in range(n):
+                    ybase[i] = yf[i]
+                micro_jac(funm, args, mask, act, blk, tau, ybase, fa, atol, jt, yt2, ft2)
+                count[0] += 9.0
+                for a in range(na):
+                    block_w_inverse(jt[a], -gam * hs, wm, winvb[a])
+                prev_rej = False
+            have_f = True
+            if keep and nodes < MICRO_MAX + 1 and (nodes == 0 or dst[DST_TIMES + nodes - 1] < tau):
+                dst[DST_TIMES + nodes] = tau
+                for a in range(na):
+                    o = blk[act[a]]
+                    for i in range(9):
+                        dns[4 + 2 * nodes, o + i] = ya[o + i]
+                        dns[5 + 2 * nodes, o + i] = fa[o + i]
+                nodes += 1
+        # stage 1
+        for a in range(na):
+            o = blk[act[a]]
+            for i in range(9):
+                tv[o + i] = hs * fa[o + i]
+        _solve(act, blk, winvb, tv, k1)
+        # stages 2–4 (the form of .ros34pw2.stages on the active states)
+        for st in range(3):
+            if st == 0:
+                tau_s = tau + al2 * hs
+            elif st == 1:
+                tau_s = tau + al3 * hs
+            else:
+                tau_s = tau + al4 * hs
+            latent(t, hh, y0, f0, y1, tau_s, yf)
+            for a in range(na):
+                o = blk[act[a]]
+                for i in range(9):
+                    j = o + i
+                    if st == 0:
+                        yf[j] = ya[j] + a21 * k1[j]
+                    elif st == 1:
+                        yf[j] = ya[j] + a31 * k1[j] + a32 * k2[j]
+                    else:
+                        yf[j] = ya[j] + a41 * k1[j] + a42 * k2[j] + a43 * k3[j]
+            funm(tau_s, yf, ff, args, mask)
+            for a in range(na):
+                o = blk[act[a]]
+                for i in range(9):
+                    j = o + i
+                    if st == 0:
+                        c = ig * (c21 * k1[j])
+                    elif st == 1:
+                        c = ig * (c31 * k1[j] + c32 * k2[j])
+                    else:
+                        c = ig * (c41 * k1[j] + c42 * k2[j] + c43 * k3[j])
+                    tv[j] = hs * ff[j] + c
+                    yn[j] = c
+            if st == 0:
+                _solve(act, blk, winvb, tv, k2)
+            elif st == 1:
+                _solve(act, blk, winvb, tv, k3)
+            else:
+                _solve(act, blk, winvb, tv, k4)
+            for a in range(na):
+                o = blk[act[a]]
+                for i in range(9):
+                    j = o + i
+                    if st == 0:
+                        k2[j] -= yn[j]
+                    elif st == 1:
+                        k3[j] -= yn[j]
+                    else:
+                        k4[j] -= yn[j]
+        count[0] += 3.0
+        # the new state of the active balls and their error
+        for a in range(na):
+            o = blk[act[a]]
+            for i in range(9):
+                j = o + i
+                yf[j] = ya[j] + m1 * k1[j] + m2 * k2[j] + m3 * k3[j] + m4 * k4[j]
+        e2 = 0.0
+        for a in range(na):
+            o = blk[act[a]]
+            for i in range(9):
+                j = o + i
+                r = (d1 * k1[j] + d2 * k2[j] + d3 * k3[j] + d4 * k4[j]) / error_scale(j, ya, yf, atol, rtol, vec)
+                e2 += r * r
+        err = np.sqrt(e2 / (9.0 * na))
+        attempts += 1
+        if err <= 1.0:
+            count[1] += 1.0
+            for a in range(na):
+                o = blk[act[a]]
+                for i in range(9):
+                    ya[o + i] = yf[o + i]
+            tau = te if last else tau + hs
+            have_f = False
+            prev_rej = False
+            fac = 2.0 if err == 0.0 else min(2.0, max(0.2, 0.9 * err ** (-1.0 / 3.0)))
+            hm = max(hm, hs * fac) if last else hs * fac
+        else:
+            count[2] += 1.0
+            if prev_rej:
+                have_f = False  # f and the blocks made again at tau
+            prev_rej = True
+            hm = hs * max(0.2, 0.9 * err ** (-1.0 / 3.0))
+    for a in range(na):
+        o = blk[act[a]]
+        for i in range(9):
+            y1[o + i] = ya[o + i]
+    if keep:
+        dst[DST_NODES] = float(nodes)  # (the end node, f at t + hh, is the caller's: .ros34pw2.integrate)
+    return True, hm
+
+
+@njit(cache=True, _nrt=False)
+def select(r2, blk, nbk, nmax, sb, mask):
+    """The active balls of a step (module docstring, step 2) from the scaled squared errors ``r2`` of its states:
+    mask[b] ← 1 on them, sb[b] ← each ball's sum; returns (their number, the sum over the other states)."""
+    nb = blk.shape[0]
+    tot = 0.0
+    for i in range(r2.shape[0]):
+        tot += r2[i]
+    for b in range(nb):
+        s = 0.0
+        o = blk[b]
+        for i in range(nbk):
+            s += r2[o + i]
+        sb[b] = s
+        mask[b] = 0
+    nact = 0
+    rem = tot
+    while nact < nmax:
+        bb = -1
+        best = HOT * nbk
+        for b in range(nb):
+            if mask[b] == 0 and sb[b] > best:
+                best = sb[b]
+                bb = b
+        if bb < 0:
+            break
+        mask[bb] = 1
+        rem -= sb[bb]
+        nact += 1
+    return nact, max(rem, 0.0)
