@@ -122,7 +122,7 @@ def error_scale(i, y, ynew, atol, rtol, vec):
     return atol[i] + rtol[i] * np.sqrt(max(a, b))
 
 
-@njit(cache=True, _nrt=False)
+@njit(cache=True)
 def error_norm(e, y, ynew, atol, rtol, info, vec=NO_VECTORS):
     """Scaled RMS norm of the local error estimate e (Hairer, Nørsett & Wanner, *Solving ODEs I*,
     1993, eq. II.4.11): √(Σ (e_i / s_i)² / n), s_i = :func:`error_scale` (``vec``: its vector groups).
@@ -130,6 +130,14 @@ def error_norm(e, y, ynew, atol, rtol, info, vec=NO_VECTORS):
     info[2], info[3] ← index and scaled error of the worst component.  Returns (err, finite);
     a non-finite component gives err = 1e10 and finite = False.
     """
+    return error_norm_parts(e, y, ynew, atol, rtol, info, vec, np.empty(0))
+
+
+@njit(cache=True, _nrt=False)
+def error_norm_parts(e, y, ynew, atol, rtol, info, vec, r2):
+    """:func:`error_norm`, and when ``r2`` has n entries each component's (e_i / s_i)² in it (the multirate
+    refinement's choice of balls, :mod:`.multirate`)."""
+    keep = r2.shape[0] == y.shape[0]
     n = y.shape[0]
     err = 0.0
     imax = 0
@@ -137,15 +145,17 @@ def error_norm(e, y, ynew, atol, rtol, info, vec=NO_VECTORS):
     finite = True
     for i in range(n):
         r = e[i] / error_scale(i, y, ynew, atol, rtol, vec)
-        r2 = r * r
-        if not np.isfinite(r2):
+        ri2 = r * r
+        if keep:
+            r2[i] = ri2
+        if not np.isfinite(ri2):
             finite = False
             imax = i
             break
-        if r2 > emax:
-            emax = r2
+        if ri2 > emax:
+            emax = ri2
             imax = i
-        err += r2
+        err += ri2
     info[2] = imax
     info[3] = np.sqrt(emax) if finite else np.inf
     return (np.sqrt(err / n) if finite else 1e10), finite

@@ -40,7 +40,7 @@ from .common import (
     STEP_TOO_SMALL,
     Status,
     clip_step,
-    error_norm,
+    error_norm_parts,
     error_scale,
     no_masked,
     pi_factor,
@@ -312,7 +312,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             ynew[i] = y[i] + R34_M[0] * k1[i] + R34_M[1] * k2[i] + R34_M[2] * k3[i] + R34_M[3] * k4[i]
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
                        + (R34_M[2] - R34_E[2]) * k3[i] + (R34_M[3] - R34_E[3]) * k4[i])
-        err, finite = error_norm(evec, y, ynew, atol, rtol, info, vec)
+        err, finite = error_norm_parts(evec, y, ynew, atol, rtol, info, vec, r2)
         masked0 = count[0]
         nact = 0
         if dense and dst.shape[0] > DST_NODES:
@@ -321,9 +321,6 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             if cool > 0:
                 cool -= 1
             else:
-                for i in range(n):
-                    r = evec[i] / error_scale(i, y, ynew, atol, rtol, vec)
-                    r2[i] = r * r
                 nact, rem = select(r2, blk, nbk, nmr, sbl, mask)
                 err_l = np.sqrt(rem / n)
                 if nact > 0 and err_l <= 1.0:
