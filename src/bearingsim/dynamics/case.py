@@ -206,7 +206,7 @@ class Case:
             raise InputError("traction_compliance", f"unknown option {self.traction_compliance!r}"[:160],
                              'use "film" or "film+solids"')
         if isinstance(self.multirate, bool) or not isinstance(self.multirate, int) or not 0 <= self.multirate <= 1000:
-            raise InputError("multirate", f"must be a whole number of balls from 0 to 1000, got {self.multirate!r}"[:160],
+            raise InputError("multirate", f"must be a whole number of balls, 0 to 1000, got {self.multirate!r}"[:160],
                              "e.g. 8 (0: no refinement)")
         if self.ball_orbit not in BALL_ORBITS:
             raise InputError("ball_orbit", f"unknown option {self.ball_orbit!r}"[:160], 'use "free" or "held"')

@@ -120,9 +120,8 @@ def micro_jac(funm, args, mask, act, blk, tau, ybase, fbase, atol, jt, yt, ft):
 @njit(cache=True)
 def refine_work(n, nmax):
     """The work arrays of :func:`refine` for n states and up to ``nmax`` active balls."""
-    return (np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n), np.empty(n),
-            np.empty(n), np.zeros((nmax, 9, 9)), np.zeros((nmax, 9, 9)), np.zeros((9, 9)), np.empty(n), np.empty(n),
-            np.empty(n), np.empty(n))
+    return (np.empty(n), np.empty(n), np.empty(n), np.empty((4, n)), np.empty(n), np.empty(n), np.zeros((nmax, 9, 9)),
+            np.zeros((nmax, 9, 9)), np.zeros((9, 9)), np.empty(n), np.empty(n), np.empty(n), np.empty(n))
 
 
 @njit
@@ -134,10 +133,14 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
     (float[3]) += masked right-hand sides, micro steps, micro rejections.  With ``dns`` rows for the nodes
     (:func:`.common.dense_arrays`; no rows: none kept) the micro steps' nodes are kept for the dense output.
     Returns (done, the next micro step proposed)."""
-    yf, ff, ya, k1, k2, k3, k4, tv, yn, jt, winvb, wm, ybase, yt2, ft2, fa = work
-    a21, a31, a32, a41, a42, a43 = tab[0], tab[1], tab[2], tab[3], tab[4], tab[5]
-    al2, al3, al4 = tab[6], tab[7], tab[8]
-    c21, c31, c32, c41, c42, c43 = tab[9], tab[10], tab[11], tab[12], tab[13], tab[14]
+    yf, ff, ya, ks, tv, yn, jt, winvb, wm, ybase, yt2, ft2, fa = work
+    amat = np.zeros((4, 3))  # a_sq (stage s from the earlier k_q), c_sq, α_s
+    cmat = np.zeros((4, 3))
+    alpha = np.zeros(4)
+    for q, (s_, r_) in enumerate(((1, 0), (2, 0), (2, 1), (3, 0), (3, 1), (3, 2))):
+        amat[s_, r_] = tab[q]
+        cmat[s_, r_] = tab[9 + q]
+    alpha[1], alpha[2], alpha[3] = tab[6], tab[7], tab[8]
     m1, m2, m3, m4 = tab[15], tab[16], tab[17], tab[18]
     d1, d2, d3, d4 = tab[15] - tab[19], tab[16] - tab[20], tab[17] - tab[21], tab[18] - tab[22]
     gam = tab[23]
@@ -213,68 +216,49 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
             o = blk[act[a]]
             for i in range(9):
                 tv[o + i] = hs * fa[o + i]
-        _solve(act, blk, winvb, tv, k1)
-        # stages 2–4 (the form of .ros34pw2.stages on the active states)
-        for st in range(3):
-            if st == 0:
-                tau_s = tau + al2 * hs
-            elif st == 1:
-                tau_s = tau + al3 * hs
-            else:
-                tau_s = tau + al4 * hs
-            latent(t, hh, y0, f0, y1, tau_s, yf)
+        _solve(act, blk, winvb, tv, ks[0])
+        # stages 2–4 (the form of .ros34pw2.stages on the active states): Y_s = y + Σ a_sq k_q,
+        # W k_s = h f(Y_s) + Σ c_sq k_q / γ, then k_s −= Σ c_sq k_q / γ
+        for st in range(1, 4):
+            latent(t, hh, y0, f0, y1, tau + alpha[st] * hs, yf)
             for a in range(na):
                 o = blk[act[a]]
                 for i in range(9):
                     j = o + i
-                    if st == 0:
-                        yf[j] = ya[j] + a21 * k1[j]
-                    elif st == 1:
-                        yf[j] = ya[j] + a31 * k1[j] + a32 * k2[j]
-                    else:
-                        yf[j] = ya[j] + a41 * k1[j] + a42 * k2[j] + a43 * k3[j]
-            funm(tau_s, yf, ff, args, mask)
+                    v = ya[j]
+                    for q in range(st):
+                        v += amat[st, q] * ks[q, j]
+                    yf[j] = v
+            funm(tau + alpha[st] * hs, yf, ff, args, mask)
             for a in range(na):
                 o = blk[act[a]]
                 for i in range(9):
                     j = o + i
-                    if st == 0:
-                        c = ig * (c21 * k1[j])
-                    elif st == 1:
-                        c = ig * (c31 * k1[j] + c32 * k2[j])
-                    else:
-                        c = ig * (c41 * k1[j] + c42 * k2[j] + c43 * k3[j])
+                    c = cmat[st, 0] * ks[0, j]
+                    for q in range(1, st):
+                        c += cmat[st, q] * ks[q, j]
+                    c *= ig
                     tv[j] = hs * ff[j] + c
                     yn[j] = c
-            if st == 0:
-                _solve(act, blk, winvb, tv, k2)
-            elif st == 1:
-                _solve(act, blk, winvb, tv, k3)
-            else:
-                _solve(act, blk, winvb, tv, k4)
+            _solve(act, blk, winvb, tv, ks[st])
             for a in range(na):
                 o = blk[act[a]]
                 for i in range(9):
-                    j = o + i
-                    if st == 0:
-                        k2[j] -= yn[j]
-                    elif st == 1:
-                        k3[j] -= yn[j]
-                    else:
-                        k4[j] -= yn[j]
+                    ks[st, o + i] -= yn[o + i]
         count[0] += 3.0
         # the new state of the active balls and their error
         for a in range(na):
             o = blk[act[a]]
             for i in range(9):
                 j = o + i
-                yf[j] = ya[j] + m1 * k1[j] + m2 * k2[j] + m3 * k3[j] + m4 * k4[j]
+                yf[j] = ya[j] + m1 * ks[0, j] + m2 * ks[1, j] + m3 * ks[2, j] + m4 * ks[3, j]
         e2 = 0.0
         for a in range(na):
             o = blk[act[a]]
             for i in range(9):
                 j = o + i
-                r = (d1 * k1[j] + d2 * k2[j] + d3 * k3[j] + d4 * k4[j]) / error_scale(j, ya, yf, atol, rtol, vec)
+                r = (d1 * ks[0, j] + d2 * ks[1, j] + d3 * ks[2, j] + d4 * ks[3, j]) / error_scale(j, ya, yf, atol, rtol,
+                                                                                        vec)
                 e2 += r * r
         err = np.sqrt(e2 / (9.0 * na))
         attempts += 1

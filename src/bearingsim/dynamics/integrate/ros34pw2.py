@@ -56,8 +56,8 @@ from .jacobian import (
     ring_jac,
     ring_rows,
 )
-from .multirate import COOL, refine, refine_work, select
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, orbit_reference, orbit_turn, turned_solve, w_inverse
+from .multirate import COOL, refine, refine_work, select
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
 R34_G = 0.435866521508459
