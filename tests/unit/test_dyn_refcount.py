@@ -32,6 +32,7 @@ HOT = (ct.race_contact_at, S.traction_at, S._gauss_quadrature, S.add_point_tract
        # NRT_decref by caller put 14 % of a hub step in these: error_scale per component, the ball loop's and
        # the cage loop's views, the W blocks)
        fo._rhs, fo.balls_on_raceways, fo._rot_yz, ct.cross, ct.slice_table, cm.error_scale, cm.error_norm,
+       cm.error_norm_parts,
        la.apply_w, la.w_solve, la.invert_small, la._invert6, la.kinematic_rows, la.block_w_inverse, la.w_inverse,
        la._coupled_w_ball, la.coupled_w, la._schur_inverse, la.coupled_apply_w)
 

@@ -298,7 +298,7 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
 
 @njit(cache=True, parallel=True)
 def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work,
-                    contrib):
+                    contrib, active):
     """:func:`_one_ball` for every ball in a numba ``prange`` (threads: ``numba.set_num_threads``), each with
     its own work row; contrib[k] ← its reactions and diagnostics (layout of :func:`balls_on_raceways`).
 
@@ -309,11 +309,17 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
     carries its load zone while the other is half unloaded (an unloaded contact returns at once): hub (b), 2
     threads, right-hand side at three states 22.3–24.0 → 21.6–22.6 µs (issue 14, docs/dynamics.md twelfth pass;
     the van der Corput order, which would spread the balls for any power-of-two thread count, measured 0.5 µs
-    slower on 2).  Which thread computes a ball does not change its numbers."""
+    slower on 2).  Which thread computes a ball does not change its numbers.  ``active`` (no entries: every ball):
+    the balls with active[k] = 0 are skipped, their contributions zero (:func:`rhs_masked`; the balls a multirate
+    step refines are mostly neighbours, which the even/odd dealing splits between two threads)."""
     nb = ball_row.shape[0]
     half = (nb + 1) // 2
     for i in prange(nb):
         k = 2 * i if i < half else 2 * (i - half) + 1
+        if active.shape[0] > 0 and active[k] == 0:
+            for j in range(contrib.shape[1]):
+                contrib[k, j] = 0.0
+            continue
         _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work[k],
                   contrib[k])
 
@@ -359,7 +365,7 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
             for i in range(2 * nsl):
                 work[k, BALL_WORK + 44 + i] = work[0, BALL_WORK + 44 + i]
         _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work,
-                        contrib)
+                        contrib, active)
     else:
         # one thread: the body of _one_ball written out in the loop (one set of work arrays, no parallel region,
         # no call per ball: the call cost 13 % of a hub right-hand side, measured in one process, 40 paired
@@ -1108,12 +1114,25 @@ def rhs_args(t, y, dy, a):
 
 @njit(cache=True)
 def rhs_masked(t, y, dy, a, active):
-    """:func:`rhs_args` for the balls with active[k] ≠ 0 only (their raceway and pocket contacts; serial): the other
-    balls' derivatives are not computed, and those of the rings and cages are not complete."""
+    """:func:`rhs_args` for the balls with active[k] ≠ 0 only (their raceway and pocket contacts): the other
+    balls' derivatives are not computed, and those of the rings and cages are not complete (the multirate
+    refinement's right-hand side, :mod:`.integrate.multirate`)."""
+    _rhs_masked(t, y, dy, a, active, False)
+
+
+@njit(cache=True)
+def rhs_masked_threaded(t, y, dy, a, active):
+    """:func:`rhs_masked` with the active balls on ``numba.get_num_threads()`` threads (the same result, bit for
+    bit)."""
+    _rhs_masked(t, y, dy, a, active, True)
+
+
+@njit(cache=True)
+def _rhs_masked(t, y, dy, a, active, threads):
     rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
-    nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, False)
-    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), False, np.empty(nw),
+    nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, threads)
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), threads, np.empty(nw),
          active)
 
 

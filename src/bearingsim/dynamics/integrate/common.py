@@ -122,7 +122,7 @@ def error_scale(i, y, ynew, atol, rtol, vec):
     return atol[i] + rtol[i] * np.sqrt(max(a, b))
 
 
-@njit(cache=True)
+@njit(cache=True, _nrt=False)
 def error_norm(e, y, ynew, atol, rtol, info, vec=NO_VECTORS):
     """Scaled RMS norm of the local error estimate e (Hairer, Nørsett & Wanner, *Solving ODEs I*,
     1993, eq. II.4.11): √(Σ (e_i / s_i)² / n), s_i = :func:`error_scale` (``vec``: its vector groups).
@@ -130,7 +130,7 @@ def error_norm(e, y, ynew, atol, rtol, info, vec=NO_VECTORS):
     info[2], info[3] ← index and scaled error of the worst component.  Returns (err, finite);
     a non-finite component gives err = 1e10 and finite = False.
     """
-    return error_norm_parts(e, y, ynew, atol, rtol, info, vec, np.empty(0))
+    return error_norm_parts(e, y, ynew, atol, rtol, info, vec, e[:0])  # (an empty view: no parts kept)
 
 
 @njit(cache=True, _nrt=False)
