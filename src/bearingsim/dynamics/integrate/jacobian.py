@@ -47,6 +47,12 @@ JAC_MIN_VISITS = 3.0
 JAC_EXPLORE = 5
 
 
+@njit(cache=True, _nrt=False, inline="always")
+def perturbed(yi, atol_i):
+    """y_i moved by the forward-difference step 1e-7 max(|y_i|, 1e4 atol_i) (module docstring)."""
+    return yi + 1e-7 * max(abs(yi), 1e4 * atol_i)
+
+
 @njit(cache=True)
 def no_record():
     """The (rec, rbase, drec) arguments of :func:`block_jac` without a record."""
@@ -68,7 +74,7 @@ def block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb, rec, rbase
             yt[i] = y[i]
         for b in range(nb):
             o = blk[b] + j
-            yt[o] = y[o] + 1e-7 * max(abs(y[o]), 1e4 * atol[o])
+            yt[o] = perturbed(y[o], atol[o])
             epsb[b] = yt[o] - y[o]  # the step actually taken (see the module docstring)
         fun(t, yt, f1, args)
         for b in range(nb):
@@ -86,7 +92,7 @@ def ring_jac(fun, args, t, y, f0, atol, blk, nbk, jrr, jbr, yt, f1):
     for j in range(NR):
         for i in range(y.shape[0]):
             yt[i] = y[i]
-        yt[j] = y[j] + 1e-7 * max(abs(y[j]), 1e4 * atol[j])
+        yt[j] = perturbed(y[j], atol[j])
         e = yt[j] - y[j]  # the step actually taken (see the module docstring)
         fun(t, yt, f1, args)
         for i in range(NR):

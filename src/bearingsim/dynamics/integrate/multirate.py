@@ -44,6 +44,7 @@ import numpy as np
 from numba import njit
 
 from .common import DST_NODES, DST_TIMES, MICRO_MAX, error_scale
+from .jacobian import perturbed
 from .linalg import block_w_inverse
 
 #: a ball is refined when the RMS of its own nine scaled errors exceeds √HOT (hub (b), 20 ms from the start, CPU
@@ -108,7 +109,7 @@ def micro_jac(funm, args, mask, act, blk, tau, ybase, fbase, atol, jt, yt, ft):
             yt[i] = ybase[i]
         for a in range(na):
             o = blk[act[a]] + j
-            yt[o] = ybase[o] + 1e-7 * max(abs(ybase[o]), 1e4 * atol[o])
+            yt[o] = perturbed(ybase[o], atol[o])
         funm(tau, yt, ft, args, mask)
         for a in range(na):
             o = blk[act[a]]
