@@ -43,7 +43,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from .common import DST_NODES, DST_TIMES, MICRO_MAX, error_scale
+from .common import DST_NODES, DST_TIMES, MICRO_MAX, accept_factor, error_scale, reject_factor
 from .jacobian import perturbed
 from .linalg import block_w_inverse
 
@@ -131,7 +131,7 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
     """The active balls ``act`` (``mask`` 1 on them) again over [t, t + hh] [s] with ROS34PW2 steps of their own
     (module docstring, step 3), starting with the step hm0; y1's active states ← the result.  ``tab``: ROS34PW2's
     constants (a21, a31, a32, a41, a42, a43, α2, α3, α4, c21, c31, c32, c41, c42, c43, m1…m4, e1…e4, γ); ``count``
-    (float[3]) += masked right-hand sides, micro steps, micro rejections.  With ``dns`` rows for the nodes
+    (float[1]) += the masked right-hand sides evaluated.  With ``dns`` rows for the nodes
     (:func:`.common.dense_arrays`; no rows: none kept) the micro steps' nodes are kept for the dense output.
     Returns (done, the next micro step proposed)."""
     yf, ff, ya, ks, tv, yn, jt, winvb, wm, ybase, yt2, ft2, fa = work
@@ -264,7 +264,6 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
         err = np.sqrt(e2 / (9.0 * na))
         attempts += 1
         if err <= 1.0:
-            count[1] += 1.0
             for a in range(na):
                 o = blk[act[a]]
                 for i in range(9):
@@ -272,14 +271,13 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
             tau = te if last else tau + hs
             have_f = False
             prev_rej = False
-            fac = 2.0 if err == 0.0 else min(2.0, max(0.2, 0.9 * err ** (-1.0 / 3.0)))
+            fac = accept_factor(err, 1.0 / 3.0, 2.0)
             hm = max(hm, hs * fac) if last else hs * fac
         else:
-            count[2] += 1.0
             if prev_rej:
                 have_f = False  # f and the blocks made again at tau
             prev_rej = True
-            hm = hs * max(0.2, 0.9 * err ** (-1.0 / 3.0))
+            hm = hs * reject_factor(err, 1.0 / 3.0)
     for a in range(na):
         o = blk[act[a]]
         for i in range(9):

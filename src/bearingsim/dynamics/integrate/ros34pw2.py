@@ -212,7 +212,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     r2 = np.empty(n if mr_on else 0)
     sbl = np.empty(nb if mr_on else 0)
     mask = np.zeros(nb if mr_on else 0, np.int8)
-    count = np.zeros(3)
+    count = np.zeros(1)  # masked right-hand sides (:func:`.multirate.refine`)
     tab = np.array([R34_A21, R34_A31, R34_A32, R34_A41, R34_A42, R34_A43, R34_ALPHA2, R34_ALPHA3, R34_ALPHA4,
                     R34_C21, R34_C31, R34_C32, R34_C41, R34_C42, R34_C43, R34_M[0], R34_M[1], R34_M[2], R34_M[3],
                     R34_E[0], R34_E[1], R34_E[2], R34_E[3], R34_G])
