@@ -40,49 +40,44 @@ NO_VECTORS = np.zeros((0, 2), dtype=np.int64)
 
 #: the most micro steps of one multirate refinement (:mod:`.multirate`): the dense output keeps their nodes
 MICRO_MAX = 48
-#: the dense output's state (:func:`dense_arrays`): whether the last step refined balls (their micro nodes kept)
+#: the dense output's state (:func:`dense_arrays`): where the number of micro nodes, their times, and the multirate
+#: refinement's memory (its next micro step [s], the large steps left without refinement) are
 DST_NODES = 4
-#: rows of the dense output's states (:func:`dense_arrays`) from the multirate refinement on, per state: the number
-#: of micro nodes its ball keeps of the last step, the ball's next micro step [s], its large steps left without
-#: refinement; then per node j the rows DNS_NODE0 + 3 j (state), + 1 (f there), + 2 (the node's time [s])
-DNS_COUNT = 3
-DNS_HM = 4
-DNS_COOL = 5
-DNS_NODE0 = 6
+DST_TIMES = 5
+DST_MR = DST_TIMES + MICRO_MAX + 1
 
 
 def dense_arrays(n: int) -> tuple[np.ndarray, np.ndarray]:
-    """The arrays of a dense-output run of ROS34PW2 (:func:`.ros34pw2.integrate`) for n states: float[6 + 3 (M + 1),
-    n] (y₀ and f(t₀, y₀) at the start of the last step, f at its end, then per state the multirate refinement's
-    (:mod:`.multirate`) memory of its ball — the number of micro nodes kept of the last step (0: not refined), the
-    next micro step [s], the large steps left without refinement — and per node j of the balls' own micro steps the
-    states, f and the time [s] there) and float[5] (t₀ [s], the step controller's previous error (1 at the start, as
-    in a call without dense output), 1 after a rejected step, 1 when row 2 holds f at the current state, 1 when the
-    last step refined balls); M = :data:`MICRO_MAX`.  With n = 0: no dense output (:data:`NO_DENSE`)."""
-    dst = np.zeros(DST_NODES + 1)
+    """The arrays of a dense-output run of ROS34PW2 (:func:`.ros34pw2.integrate`) for n states: float[4 + 2 (M + 1),
+    n] (y₀ and f(t₀, y₀) at the start of the last step, f at its end, then — when the last step refined some balls
+    (:mod:`.multirate`) — 1 on their states, and per node j of their micro steps the states and f there) and
+    float[5 + M + 1] (t₀ [s], the step controller's previous error (1 at the start, as in a call without dense
+    output), 1 after a rejected step, 1 when row 2 holds f at the current state, the number of micro nodes of the last
+    step (0: not refined), the nodes' times [s], the refinement's next micro step [s] and cool-down count, carried
+    from one call to the next); M = :data:`MICRO_MAX`.  With n = 0: no dense output
+    (:data:`NO_DENSE`)."""
+    dst = np.zeros(DST_MR + 2)
     dst[1] = 1.0
-    return np.zeros((DNS_NODE0 + 3 * (MICRO_MAX + 1) if n else 3, n)), dst
+    return np.zeros((4 + 2 * (MICRO_MAX + 1) if n else 3, n)), dst
 
 
+@njit(cache=True)
 def dense_state(dns: np.ndarray, dst: np.ndarray, t1: float, y1: np.ndarray, t: float) -> np.ndarray:
-    """The state at t [s] in the last step [dst[0], t1] of a dense-output run (ending at y1): :func:`hermite` on the
-    step's ends, and on the states of the balls it refined (:mod:`.multirate`) the same interpolant on their own micro
-    step that holds t."""
-    y = hermite(float(dst[0]), dns[0], dns[1], t1, y1, dns[2], t)
-    if dst.shape[0] <= DST_NODES or dst[DST_NODES] == 0.0:
-        return y
-    idx = np.flatnonzero(dns[DNS_COUNT] >= 2.0)
-    if idx.size == 0:
-        return y
-    cnt = dns[DNS_COUNT, idx].astype(np.int64)
-    rows = np.arange(MICRO_MAX + 1)[:, None]
-    times = dns[DNS_NODE0 + 2::3, :][:, idx]
-    # per state the node j ≤ cnt − 2 that starts its micro step holding t
-    j = np.clip(((rows < cnt[None, :]) & (times <= t)).sum(axis=0) - 1, 0, cnt - 2)
-    col = np.arange(idx.size)
-    t0, ta = times[j, col], times[j + 1, col]
-    r0, r1 = DNS_NODE0 + 3 * j, DNS_NODE0 + 3 * (j + 1)
-    y[idx] = hermite(t0, dns[r0, idx], dns[r0 + 1, idx], ta, dns[r1, idx], dns[r1 + 1, idx], t)
+    """The state at t [s] in the last step [dst[0], t1] of a dense-output run (ending at y1): :func:`hermite_one` on
+    the step's ends, and on the refined balls' states (:mod:`.multirate`) the same interpolant on the micro step that
+    holds t.  (Compiled: 1.8 µs a sample on the hub case, against 16.5 µs in numpy.)"""
+    n = y1.shape[0]
+    y = np.empty(n)
+    nodes = int(dst[DST_NODES]) if dst.shape[0] > DST_NODES else 0
+    j = 0  # the last node at or before t (the first one before them all)
+    while j < nodes - 2 and dst[DST_TIMES + j + 1] <= t:
+        j += 1
+    for i in range(n):
+        if nodes >= 2 and dns[3, i] != 0.0:
+            y[i] = hermite_one(dst[DST_TIMES + j], dns[4 + 2 * j, i], dns[5 + 2 * j, i], dst[DST_TIMES + j + 1],
+                               dns[6 + 2 * j, i], dns[7 + 2 * j, i], t)
+        else:
+            y[i] = hermite_one(dst[0], dns[0, i], dns[1, i], t1, y1[i], dns[2, i], t)
     return y
 
 
@@ -96,20 +91,28 @@ def no_masked(t, y, dy, args, active):
 NO_DENSE, NO_DENSE_STATE = dense_arrays(0)
 
 
-def hermite(t0: float, y0: np.ndarray, f0: np.ndarray, t1: float, y1: np.ndarray, f1: np.ndarray,
-            t: float) -> np.ndarray:
+@njit(cache=True, inline="always")
+def hermite_one(t0, y0, f0, t1, y1, f1, t):
     """The cubic Hermite interpolant of one step at t ∈ [t0, t1] [s] from the values y and derivatives f at both
-    ends (Hairer, Nørsett & Wanner, *Solving ODEs I*, 2nd ed. 1993, §II.6, eq. 6.7): with h = t1 − t0 and
-    θ = (t − t0)/h, u(θ) = (1 − θ) y0 + θ y1 + θ(θ − 1)[(1 − 2θ)(y1 − y0) + (θ − 1) h f0 + θ h f1].  Exact for
-    cubics; its error is O(h⁴), the order of ROS34PW2's local error (order 3), and it is continuous with a
-    continuous derivative from one step to the next.  θ = 1 returns y1 bit for bit.  t0 and t1 may be arrays, one
-    step per state (the refined balls' micro steps, :func:`dense_state`)."""
-    h = np.subtract(t1, t0)
-    ends = (t >= t1) | (h <= 0.0)
-    th = (t - t0) / np.where(ends, 1.0, h)
-    dy = y1 - y0
-    u = (1.0 - th) * y0 + th * y1 + th * (th - 1.0) * ((1.0 - 2.0 * th) * dy + (th - 1.0) * h * f0 + th * h * f1)
-    return np.where(ends, y1, u)
+    ends, for one component (Hairer, Nørsett & Wanner, *Solving ODEs I*, 2nd ed. 1993, §II.6, eq. 6.7): with
+    h = t1 − t0 and θ = (t − t0)/h, u(θ) = (1 − θ) y0 + θ y1 + θ(θ − 1)[(1 − 2θ)(y1 − y0) + (θ − 1) h f0 + θ h f1].
+    Exact for cubics; its error is O(h⁴), the order of ROS34PW2's local error (order 3), and it is continuous with
+    a continuous derivative from one step to the next.  t ≥ t1 (or no step) returns y1 bit for bit."""
+    h = t1 - t0
+    if t >= t1 or h <= 0.0:
+        return y1
+    th = (t - t0) / h
+    return (1.0 - th) * y0 + th * y1 + th * (th - 1.0) * ((1.0 - 2.0 * th) * (y1 - y0) + (th - 1.0) * h * f0
+                                                          + th * h * f1)
+
+
+@njit(cache=True)
+def hermite(t0, y0, f0, t1, y1, f1, t):
+    """:func:`hermite_one` on every component of one step [t0, t1] [s] (arrays y0, f0, y1, f1)."""
+    out = np.empty(y0.shape[0])
+    for i in range(y0.shape[0]):
+        out[i] = hermite_one(t0, y0[i], f0[i], t1, y1[i], f1[i], t)
+    return out
 
 
 @njit(cache=True, _nrt=False)

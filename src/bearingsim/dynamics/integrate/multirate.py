@@ -41,10 +41,9 @@ refined balls on them.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
-from .. import threads as _threads  # noqa: F401 - numba's threading layer, chosen and started
-from .common import DNS_COUNT, DNS_NODE0, MICRO_MAX, accept_factor, error_scale, reject_factor
+from .common import DST_NODES, DST_TIMES, MICRO_MAX, accept_factor, error_scale, reject_factor
 from .jacobian import perturbed
 from .linalg import block_w_inverse
 
@@ -81,7 +80,8 @@ def turned_block(jb, c, s, out):
 @njit(cache=True, _nrt=False)
 def latent(t0, hh, y0, f0, y1, tau, lo, hi, out):
     """out ← the quadratic through y0 and its slope f0 at t0 and y1 at t0 + hh, at tau [s], on the states before lo
-    and from hi on (the rings' and the cages': the balls' states lo … hi − 1 are the caller's)."""
+    and from hi on (the rings' and the cages'; the balls' states lo … hi − 1 are the caller's: the active balls' it
+    sets, the others' the masked right-hand side does not read)."""
     th = (tau - t0) / hh
     for part in range(2):
         for i in range(0 if part == 0 else hi, lo if part == 0 else y0.shape[0]):
@@ -122,23 +122,20 @@ def micro_jac(funm, args, mask, act, blk, tau, ybase, fbase, atol, jt, yt, ft):
 
 @njit(cache=True)
 def refine_work(n, nmax):
-    """The work arrays of :func:`refine` for n states, one set per ball refined at once (up to ``nmax``;
-    :func:`refine_balls` hands set a to the a-th): each array's first index is the set's."""
-    return (np.zeros((nmax, n)), np.zeros((nmax, n)), np.zeros((nmax, n)), np.zeros((nmax, 4, n)), np.zeros((nmax, n)),
-            np.zeros((nmax, n)), np.zeros((nmax, 1, 9, 9)), np.zeros((nmax, 1, 9, 9)), np.zeros((nmax, 9, 9)),
-            np.zeros((nmax, n)), np.zeros((nmax, n)), np.zeros((nmax, n)), np.zeros((nmax, n)))
+    """The work arrays of :func:`refine` for n states and up to ``nmax`` active balls."""
+    return (np.zeros(n), np.empty(n), np.empty(n), np.empty((4, n)), np.empty(n), np.empty(n), np.zeros((nmax, 9, 9)),
+            np.zeros((nmax, 9, 9)), np.zeros((9, 9)), np.empty(n), np.empty(n), np.empty(n), np.empty(n))
 
 
 @njit
 def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hm0, h_min, tab, work, count,
-           dns):
+           dns, dst):
     """The active balls ``act`` (``mask`` 1 on them) again over [t, t + hh] [s] with ROS34PW2 steps of their own
     (module docstring, step 3), starting with the step hm0; y1's active states ← the result.  ``tab``: ROS34PW2's
-    constants (a21, a31, a32, a41, a42, a43, α2, α3, α4, c21, c31, c32, c41, c42, c43, m1…m4, e1…e4, γ); ``work``: a
-    set of :func:`refine_work` (its arrays' first index dropped); ``count`` (float[1]) += the masked right-hand sides
-    evaluated.  With ``dns`` the dense output's arrays (:func:`.common.dense_arrays`; no rows: none kept) the micro
-    steps' nodes are kept there on the active states (their count in row ``DNS_COUNT``, set when done).  Returns
-    (done, the next micro step proposed)."""
+    constants (a21, a31, a32, a41, a42, a43, α2, α3, α4, c21, c31, c32, c41, c42, c43, m1…m4, e1…e4, γ); ``count``
+    (float[1]) += the masked right-hand sides evaluated.  With ``dns`` rows for the nodes
+    (:func:`.common.dense_arrays`; no rows: none kept) the micro steps' nodes are kept for the dense output.
+    Returns (done, the next micro step proposed)."""
     yf, ff, ya, ks, tv, yn, jt, winvb, wm, ybase, yt2, ft2, fa = work
     amat = np.zeros((4, 3))  # a_sq (stage s from the earlier k_q), c_sq, α_s
     cmat = np.zeros((4, 3))
@@ -154,7 +151,14 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
     n = y0.shape[0]
     lo = blk[0]  # the balls' states: lo … hi − 1 (the rings' before, the cages' after)
     hi = blk[blk.shape[0] - 1] + 9
-    keep = dns.shape[0] > DNS_NODE0 and dns.shape[1] == n
+    keep = dns.shape[0] > 4 and dns.shape[1] == n
+    if keep:
+        for i in range(n):
+            dns[3, i] = 0.0
+        for a in range(na):
+            o = blk[act[a]]
+            for i in range(9):
+                dns[3, o + i] = 1.0
     for a in range(na):
         b = act[a]
         if turn.shape[0] > 0:
@@ -163,9 +167,8 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
             for i in range(9):
                 for j in range(9):
                     jt[a, i, j] = jac[b, i, j]
-        o = blk[b]
-        for i in range(9):
-            ya[o + i] = y0[o + i]
+    for i in range(n):
+        ya[i] = y0[i]
     tau = t
     te = t + hh
     hm = min(hm0, hh)
@@ -205,15 +208,13 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
                     block_w_inverse(jt[a], -gam * hs, wm, winvb[a])
                 prev_rej = False
             have_f = True
-            # a node per micro step (the end node, f at t + hh, is the caller's: .ros34pw2.integrate)
-            if keep and nodes < MICRO_MAX and (nodes == 0 or dns[DNS_NODE0 + 3 * nodes - 1, blk[act[0]]] < tau):
-                r = DNS_NODE0 + 3 * nodes
+            if keep and nodes < MICRO_MAX + 1 and (nodes == 0 or dst[DST_TIMES + nodes - 1] < tau):
+                dst[DST_TIMES + nodes] = tau
                 for a in range(na):
                     o = blk[act[a]]
                     for i in range(9):
-                        dns[r, o + i] = ya[o + i]
-                        dns[r + 1, o + i] = fa[o + i]
-                        dns[r + 2, o + i] = tau
+                        dns[4 + 2 * nodes, o + i] = ya[o + i]
+                        dns[5 + 2 * nodes, o + i] = fa[o + i]
                 nodes += 1
         # stage 1
         for a in range(na):
@@ -285,61 +286,15 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
         o = blk[act[a]]
         for i in range(9):
             y1[o + i] = ya[o + i]
-            if keep:
-                dns[DNS_COUNT, o + i] = float(nodes)
+    if keep:
+        dst[DST_NODES] = float(nodes)  # (the end node, f at t + hh, is the caller's: .ros34pw2.integrate)
     return True, hm
 
 
-@njit
-def _refine_ball(a, funm, args, masks, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmb, h_min, tab, work,
-                 counts, done, dns):
-    """Ball act[a] refined on its own (:func:`refine`) with work set a, its mask row a, its count counts[a:a+1]; its
-    next micro step into hmb[act[a]], done[a] ← whether it was."""
-    b = act[a]
-    ok, hm = refine(funm, args, masks[a], act[a:a + 1], t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmb[b],
-                    h_min, tab, (work[0][a], work[1][a], work[2][a], work[3][a], work[4][a], work[5][a], work[6][a],
-                                 work[7][a], work[8][a], work[9][a], work[10][a], work[11][a], work[12][a]),
-                    counts[a:a + 1], dns)
-    hmb[b] = hm
-    done[a] = ok
-
-
-@njit(parallel=True)
-def _refine_parallel(funm, args, masks, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmb, h_min, tab,
-                     work, counts, done, dns):
-    for a in prange(act.shape[0]):
-        _refine_ball(a, funm, args, masks, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmb, h_min, tab,
-                     work, counts, done, dns)
-
-
-@njit
-def refine_balls(funm, args, masks, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmb, h_min, tab, work,
-                 counts, done, dns, threads):
-    """Each active ball act[a] refined on its own over [t, t + hh] [s] (:func:`refine`, module docstring step 3):
-    its own micro steps and error control, its mask masks[a] (1 on it alone, set here), the masked right-hand sides
-    into counts[a], done[a] ← whether it was; hmb[b]: each ball's next micro step [s] (in and out).  The balls do
-    not depend on one another (the rings and cages latent), so ``threads`` deals them to numba's threads
-    (``prange``): the result is the same bit for bit on any number of threads."""
-    nb = blk.shape[0]
-    for a in range(act.shape[0]):
-        for b in range(nb):
-            masks[a, b] = 0
-        masks[a, act[a]] = 1
-        counts[a] = 0.0
-    if threads:
-        _refine_parallel(funm, args, masks, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmb, h_min, tab,
-                         work, counts, done, dns)
-    else:
-        for a in range(act.shape[0]):
-            _refine_ball(a, funm, args, masks, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmb, h_min,
-                         tab, work, counts, done, dns)
-
-
 @njit(cache=True, _nrt=False)
-def select(r2, blk, nbk, nmax, sb, mask, cool):
-    """The active balls of a step (module docstring, step 2) from the scaled squared errors ``r2`` of its states,
-    not those cooling down (cool[b] > 0: their refinement gave up lately): mask[b] ← 1 on them, sb[b] ← each ball's
-    sum; returns (their number, the sum over the other states)."""
+def select(r2, blk, nbk, nmax, sb, mask):
+    """The active balls of a step (module docstring, step 2) from the scaled squared errors ``r2`` of its states:
+    mask[b] ← 1 on them, sb[b] ← each ball's sum; returns (their number, the sum over the other states)."""
     nb = blk.shape[0]
     tot = 0.0
     for i in range(r2.shape[0]):
@@ -357,7 +312,7 @@ def select(r2, blk, nbk, nmax, sb, mask, cool):
         bb = -1
         best = HOT * nbk
         for b in range(nb):
-            if mask[b] == 0 and cool[b] == 0 and sb[b] > best:
+            if mask[b] == 0 and sb[b] > best:
                 best = sb[b]
                 bb = b
         if bb < 0:

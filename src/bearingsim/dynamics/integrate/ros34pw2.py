@@ -28,11 +28,9 @@ from numba import njit
 from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE, N_BALL
 from .base import INFO_SIZE, Workspace, ros34_workspace
 from .common import (
-    DNS_COOL,
-    DNS_COUNT,
-    DNS_HM,
-    DNS_NODE0,
+    DST_MR,
     DST_NODES,
+    DST_TIMES,
     MAX_STEPS,
     NO_DENSE,
     NO_DENSE_STATE,
@@ -59,7 +57,7 @@ from .jacobian import (
     ring_rows,
 )
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, orbit_reference, orbit_turn, turned_solve, w_inverse
-from .multirate import COOL, refine_balls, refine_work, select
+from .multirate import COOL, refine, refine_work, select
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
 R34_G = 0.435866521508459
@@ -214,26 +212,18 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     r2 = np.empty(n if mr_on else 0)
     sbl = np.empty(nb if mr_on else 0)
     mask = np.zeros(nb if mr_on else 0, np.int8)
-    masks = np.zeros((nmr, nb), np.int8)
-    counts = np.zeros(nmr)
-    done = np.zeros(nmr, np.bool_)
-    act = np.zeros(nmr, np.int64)
-    # per ball: its next micro step [s] and the large steps it is left unrefined after its refinement gave up
-    hmb = np.full(nb if mr_on else 0, h)
-    coolb = np.zeros(nb if mr_on else 0, np.int64)
     count = np.zeros(1)  # masked right-hand sides (:func:`.multirate.refine`)
     tab = np.array([R34_A21, R34_A31, R34_A32, R34_A41, R34_A42, R34_A43, R34_ALPHA2, R34_ALPHA3, R34_ALPHA4,
                     R34_C21, R34_C31, R34_C32, R34_C41, R34_C42, R34_C43, R34_M[0], R34_M[1], R34_M[2], R34_M[3],
                     R34_E[0], R34_E[1], R34_E[2], R34_E[3], R34_G])
     no_nodes = np.zeros((0, n))
+    hm = h
+    cool = 0
     nref = 0
     nball = 0
-    mr_dense = mr_on and dns.shape[1] == n and dns.shape[0] > DNS_NODE0
-    if mr_dense:  # the refinement's memory carried from the previous call
-        for b in range(nb):
-            if dns[DNS_HM, blk[b]] > 0.0:
-                hmb[b] = dns[DNS_HM, blk[b]]
-            coolb[b] = int(dns[DNS_COOL, blk[b]])
+    if dns.shape[1] == n and dst.shape[0] > DST_MR + 1 and dst[DST_MR] > 0.0:
+        hm = dst[DST_MR]
+        cool = int(dst[DST_MR + 1])
     need_jac = jst[1] == 0
     since = jst[0]
     adaptive = jmem.shape[0] > 0  # the refresh interval from the run's record (:func:`.jacobian.refresh_interval`)
@@ -328,47 +318,39 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         if dense and dst.shape[0] > DST_NODES:
             dst[DST_NODES] = 0.0
         if mr_on and finite:
-            for b in range(nb):
-                if coolb[b] > 0:
-                    coolb[b] -= 1
-            nact, rem = select(r2, blk, nbk, nmr, sbl, mask, coolb)
-            err_l = np.sqrt(rem / n)
-            if nact > 0 and err_l <= 1.0:
-                a = 0
-                for b in range(nb):
-                    if mask[b] == 1:
-                        act[a] = b
-                        a += 1
-                keep = mr_dense and t + hs >= t_end
-                if keep:
-                    for i in range(n):
-                        dns[DNS_COUNT, i] = 0.0
-                refine_balls(funm, args, masks, act[:nact], t, hs, y, f0, ynew, blk, jac, turn, atol, rtol, vec, hmb,
-                             h_min, tab, mrw, counts, done, dns if keep else no_nodes, threaded)
-                # a ball whose refinement gave up keeps the large step's result (its error counts in the step's) and
-                # is left unrefined for COOL steps
-                ndone = 0
-                for a in range(nact):
-                    count[0] += counts[a]
-                    if done[a]:
-                        ndone += 1
-                    else:
-                        rem += sbl[act[a]]
-                        coolb[act[a]] = COOL
-                nball += ndone
-                nref += 1 if ndone > 0 else 0
-                err = np.sqrt(rem / n)
-                if keep:
-                    dst[DST_NODES] = 1.0
-            elif nact > 0:
-                err = err_l  # rejected: the next step is sized for the other states
+            if cool > 0:
+                cool -= 1
+            else:
+                nact, rem = select(r2, blk, nbk, nmr, sbl, mask)
+                err_l = np.sqrt(rem / n)
+                if nact > 0 and err_l <= 1.0:
+                    act = np.empty(nact, np.int64)
+                    a = 0
+                    for b in range(nb):
+                        if mask[b] == 1:
+                            act[a] = b
+                            a += 1
+                    keep = dense and t + hs >= t_end
+                    done, hm = refine(funm, args, mask, act, t, hs, y, f0, ynew, blk, jac, turn, atol, rtol, vec,
+                                      min(hm, hs), h_min, tab, mrw, count, dns if keep else no_nodes, dst)
+                    if done:
+                        err = err_l
+                        nref += 1
+                        nball += nact
+                    else:  # given up: the large step as it is (accepted if its own error allows), no refinement
+                        cool = COOL
+                        nact = 0
+                        if dense and dst.shape[0] > DST_NODES:
+                            dst[DST_NODES] = 0.0
+                elif nact > 0:
+                    err = err_l  # rejected: the next step is sized for the other states
         if stats.shape[0] == 2 * n:
             for i in range(n):
                 r = evec[i] / error_scale(i, y, ynew, atol, rtol, vec)
                 stats[i] += r * r
             stats[n + int(info[2])] += 1.0
-        if adaptive:  # (an accepted step also pays the next f(t, y); one ball's masked f ≈ 2 / nb of the full one)
-            record_attempt(jmem, since, (4.0 if err <= 1.0 else 3.0) + (count[0] - masked0) * 2.0 / nb,
+        if adaptive:  # (an accepted step also pays the next f(t, y))
+            record_attempt(jmem, since, (4.0 if err <= 1.0 else 3.0) + (count[0] - masked0) * (nact + 1.0) / nb,
                            hs if err <= 1.0 else 0.0)
         if err <= 1.0:
             if dense:
@@ -409,20 +391,16 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         if have_f0:
             for i in range(n):
                 dns[2, i] = f0[i]
-        if mr_dense:
-            if dst[DST_NODES] > 0.0:
-                for i in range(n):  # the refined balls' end node: the state reached and f there
-                    nodes = int(dns[DNS_COUNT, i])
-                    if nodes > 0 and have_f0 and nacc > 0:
-                        r = DNS_NODE0 + 3 * nodes
-                        dns[r, i] = y[i]
-                        dns[r + 1, i] = f0[i]
-                        dns[r + 2, i] = t
-                        dns[DNS_COUNT, i] = nodes + 1.0
-            for b in range(nb):
-                for i in range(nbk):
-                    dns[DNS_HM, blk[b] + i] = hmb[b]
-                    dns[DNS_COOL, blk[b] + i] = float(coolb[b])
+        if dst.shape[0] > DST_MR + 1:
+            nodes = int(dst[DST_NODES])
+            if nodes > 0 and have_f0 and nacc > 0:  # the refined balls' end node: the state reached and f there
+                dst[DST_TIMES + nodes] = t
+                for i in range(n):
+                    dns[4 + 2 * nodes, i] = y[i]
+                    dns[5 + 2 * nodes, i] = f0[i]
+                dst[DST_NODES] = nodes + 1.0
+            dst[DST_MR] = hm
+            dst[DST_MR + 1] = float(cool)
         dst[1] = err_prev
         dst[2] = 1.0 if prev_rej else 0.0
         dst[3] = 1.0 if have_f0 else 0.0

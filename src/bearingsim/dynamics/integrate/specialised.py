@@ -147,11 +147,10 @@ def ros34_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, 
 def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass,
                    bmass, vec, dns, dst, mr):
     """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded` (and the
-    refined balls on the threads, each with the masked right-hand side :func:`~bearingsim.dynamics.forces.rhs_masked`:
-    :func:`.multirate.refine_balls`)."""
+    refinement's masked right-hand side threaded too, :func:`~bearingsim.dynamics.forces.rhs_masked_threaded`)."""
     return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
                               blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec, dns, dst, args[10],
-                              forces.rhs_masked, mr)
+                              forces.rhs_masked_threaded, mr)
 
 
 #: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel
