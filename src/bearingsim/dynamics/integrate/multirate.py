@@ -20,7 +20,7 @@ from an interpolant of the large step):
 3. The active balls are integrated again over [t, t + H] (:func:`refine`) by ROS34PW2 steps of their own on their
    nine states each, with the rings and cages on the quadratic through y(t), f(t, y) and the large step's y(t + H)
    (:func:`latent`); their right-hand side is the engine's with the other balls skipped
-   (:func:`bearingsim.dynamics.forces.rhs_masked`: 4 active balls cost 10.5 µs against 56 µs for all 32).
+   (:func:`bearingsim.dynamics.forces.rhs_masked`: 4 active balls cost 8.3 µs against 55 µs for all 32).
    Error control on the active balls' states alone: √(Σ_active (e_i / sc_i)² / (9 n_active)) ≤ 1, which holds each
    of them at least as tightly as the whole system's RMS norm does.  Their W uses the large step's Jacobian blocks
    (turned with the orbit, :mod:`.linalg`), made again by differences of the masked right-hand side after two
