@@ -57,6 +57,32 @@ def test_masked_rhs_is_the_full_one_on_the_active_balls(hub, data):
     assert np.array_equal(every[balls], full[balls])
 
 
+@pytest.mark.parametrize("orbit", ["free", "held"])
+def test_masked_rhs_reads_nothing_of_the_other_balls(orbit):
+    """The refinement leaves the other balls' states unset (zeros in its work array, :func:`.multirate.latent`):
+    the masked right-hand side must not read them — with the balls' azimuths held too, whose projection divides by
+    each ball's orbit radius (a zero there stopped a held run with ZeroDivisionError before the projection skipped
+    the other balls)."""
+    import dataclasses
+
+    c = dataclasses.replace(load_case(EXAMPLES / "hub-moment-50hz.toml"), ball_orbit=orbit)
+    m, ls, y, _ = R.build(c)
+    args = fo.args_of(m, ls, memo=False)
+    full = np.zeros_like(y)
+    fo.rhs_args(0.0, y, full, args)
+    act = np.zeros(m.n_balls, np.int8)
+    act[[1, 5, 20]] = 1
+    ym = y.copy()
+    for b in np.flatnonzero(act == 0):
+        o = ly.N_RING + ly.N_BALL * b
+        ym[o:o + 9] = 0.0
+    out = np.zeros_like(y)
+    fo.rhs_masked(0.0, ym, out, args, act)
+    for b in np.flatnonzero(act):
+        o = ly.N_RING + ly.N_BALL * b
+        assert np.array_equal(out[o:o + 9], full[o:o + 9]), (orbit, b)
+
+
 @settings(max_examples=200, deadline=None)
 @given(seed=st.integers(0, 2**31 - 1), nmax=st.integers(1, 10), spread=st.floats(0.0, 6.0))
 def test_select_takes_the_largest_hot_balls(seed, nmax, spread):

@@ -1061,6 +1061,8 @@ def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag
         # balls held in azimuth by a frictionless constraint (the fixed half-plane of each ball, a linear
         # constraint e_psi . r = 0): the azimuthal components of velocity and acceleration are removed
         for k in range(nb):
+            if masked and active[k] == 0:
+                continue  # (rhs_masked: the other balls' states are not set)
             o = ly.N_RING + ly.N_BALL * k
             rb = math.hypot(y[o + 1], y[o + 2])
             ey = -y[o + 2] / rb
