@@ -3,7 +3,8 @@ their reactions on the rings are summed serially in ball order, so any thread co
 bit for bit.  The suite runs with NUMBA_NUM_THREADS=1 (tests/conftest.py); the two-thread evaluations run
 in a subprocess with NUMBA_NUM_THREADS=2 on states of a serial run of this process (the integrator is the
 same code for any thread count, and its threaded linear algebra sums in ball order: a 2-thread ROS34PW2 run must
-reach the serial run's states bit for bit)."""
+reach the serial run's states bit for bit, the multirate refinement's steps from the hub's moment zero crossing
+included)."""
 
 from __future__ import annotations
 
@@ -42,6 +43,15 @@ _SCRIPT = textwrap.dedent("""
             for k, t in ((2, 1e-5), (3, 2e-5)):
                 st.advance(t)
                 assert np.array_equal(st.y, d[name + ":y"][k]), (name, t, np.abs(st.y - d[name + ":y"][k]).max())
+    # the multirate refinement on 2 threads (forces.rhs_masked_threaded), from the hub's moment zero crossing
+    case = load_case("examples/hub-moment-50hz.toml")
+    m, ls, _, _ = R.build(case)
+    st = R.Stepper(m, ls, d["zc:y0"].copy(), t=float(d["zc:t0"]), h=float(d["zc:h0"]), tol=case.tolerance,
+                   method="ros34w", threads=2, multirate=8, dense=True)
+    st.advance(float(d["zc:t_end"]))
+    assert st.workspace.work[4] > 2 * st.workspace.work[5] > 0, list(st.workspace.work)  # several balls a step
+    assert np.array_equal(st.y, d["zc:y"]), np.abs(st.y - d["zc:y"]).max()
+    assert np.array_equal(st.state_at(float(d["zc:t_out"])), d["zc:y_out"])
     print("bitwise ok")
 """ % (CASES,))
 
@@ -69,6 +79,19 @@ def test_two_threads_give_the_one_thread_result_bit_for_bit(tmp_path):
             assert np.abs(out[0]).max() > 0 and out[1][:, 0].max() > 0
             for part, v in zip(("dy", "diag", "gdiag"), out):
                 data[f"{name}:{part}{i}"] = v
+    # the multirate refinement (tests/unit/test_dyn_multirate.py): 0.3 ms from the hub's moment zero crossing, where
+    # most steps refine several balls; the 2-thread run must reach the same state and dense output bit for bit
+    case = load_case(ROOT / "examples" / "hub-moment-50hz.toml")
+    m, ls, y0, _ = R.build(case)
+    zc = R.Stepper(m, ls, y0.copy(), tol=case.tolerance, method="ros34w", threads=1, multirate=0)
+    zc.advance(9.1e-3)
+    ser = R.Stepper(m, ls, zc.y.copy(), t=zc.t, h=zc.h, tol=case.tolerance, method="ros34w", threads=1, multirate=8,
+                    dense=True)
+    ser.advance(zc.t + 0.3e-3)
+    assert ser.workspace.work[4] > 2 * ser.workspace.work[5] > 0, list(ser.workspace.work)
+    t_out = 0.5 * (ser.t + float(ser._dense[1][0]))  # inside the last step
+    data.update({"zc:y0": zc.y, "zc:t0": zc.t, "zc:h0": zc.h, "zc:t_end": zc.t + 0.3e-3, "zc:y": ser.y,
+                 "zc:t_out": t_out, "zc:y_out": ser.state_at(t_out)})
     np.savez(tmp_path / "ref.npz", **data)
     env = dict(os.environ, NUMBA_NUM_THREADS="2")
     r = subprocess.run([sys.executable, "-c", _SCRIPT, str(tmp_path / "ref.npz")], cwd=ROOT, env=env,
