@@ -407,8 +407,11 @@ def test_a_failing_workspace_reports_the_status_and_keeps_its_step():
 # ---- dense output of ROS34PW2 (issue 14) --------------------------------------------------------------------
 def test_hermite_interpolant_is_exact_for_cubics_and_lands_on_the_step_end():
     """The cubic Hermite interpolant (Hairer, Nørsett & Wanner, Solving ODEs I, §II.6 eq. 6.7) reproduces any
-    cubic from its values and slopes at both ends, and θ = 1 gives y1 itself."""
-    from bearingsim.dynamics.integrate.common import hermite
+    cubic from its values and slopes at both ends, and θ = 1 gives y1 itself (``hermite_one``, the interpolant of
+    the dense output, on every component)."""
+    from bearingsim.dynamics.integrate.common import hermite_one
+
+    hermite = np.vectorize(hermite_one)
 
     rng = np.random.default_rng(7)
     for _ in range(20):
@@ -435,7 +438,7 @@ def test_hermite_interpolant_is_exact_for_cubics_and_lands_on_the_step_end():
 def _ros34_dense(outputs, k=1e4, tol=1e-7):
     """The stiff problem above with ROS34PW2's dense output, sampled at ``outputs`` (a call per output): (samples,
     accepted steps, the largest error of the state at the ends of the steps the calls stopped at)."""
-    from bearingsim.dynamics.integrate.common import dense_arrays, hermite
+    from bearingsim.dynamics.integrate.common import dense_arrays, dense_state
 
     blk = np.array([0], dtype=np.int64)
     y = np.array([1.0, 0.0, 1.0])
@@ -450,7 +453,7 @@ def _ros34_dense(outputs, k=1e4, tol=1e-7):
             assert st == ig.OK and t >= to
             steps += int(info[0])
             end_err = max(end_err, np.max(np.abs(y - [math.cos(t), math.sin(t), math.cos(t)])))
-        out.append(hermite(dst[0], dns[0], dns[1], t, y, dns[2], to))
+        out.append(dense_state(dns, dst, t, y, to))
     return np.array(out), steps, end_err
 
 

@@ -175,7 +175,7 @@ def test_dense_output_of_refined_balls_follows_their_micro_steps(hub):
     velocities (a rattling ball turns within a large step).  Per vector, relative to its magnitude; measured at
     60 / 100 µs after the zero crossing: 4.28e-5 / 7.29e-5 on the nodes, 4.32e-5 / 7.32e-5 stopped there, 2.40e-4 /
     4.09e-4 on the large step."""
-    from bearingsim.dynamics.integrate.common import DST_NODES, hermite
+    from bearingsim.dynamics.integrate.common import DST_NODES, hermite_one
 
     c, m, ls, s = hub
     for dt in (60e-6, 100e-6):
@@ -185,7 +185,7 @@ def test_dense_output_of_refined_balls_follows_their_micro_steps(hub):
         assert dense.t > t_out and int(dst[DST_NODES]) >= 3, (dense.t, dst[DST_NODES])  # the last step was refined
         act = np.flatnonzero(dns[3] != 0.0).reshape(-1, 9)
         got = dense.state_at(t_out)
-        big = hermite(float(dst[0]), dns[0], dns[1], dense.t, dense.y, dns[2], t_out)
+        big = np.vectorize(hermite_one)(float(dst[0]), dns[0], dns[1], dense.t, dense.y, dns[2], t_out)
         fine = _run(m, ls, s, 1e-9, 0, t_out)
         clipped = _run(m, ls, s, c.tolerance, 8, t_out)  # the steps stop at t_out (no dense output)
         for part in (slice(0, 3), slice(3, 6), slice(6, 9)):  # positions, velocities, angular velocities

@@ -10,7 +10,7 @@ packs the output quantities (:func:`sample_from`), named as in :data:`.output.VA
 
 With ``dense=True`` (ROS34PW2 only; :func:`.run.simulate` sets it) the integrator does not stop at the output
 times: :meth:`Stepper.state_at` advances to the first step at or past the time asked and interpolates the state
-there (:func:`.integrate.common.hermite`), so the steps, and the trajectory, do not depend on the output interval.
+there (:func:`.integrate.common.hermite_one`), so the steps, and the trajectory, do not depend on the output interval.
 """
 
 from __future__ import annotations

@@ -17,7 +17,7 @@ checkpoint saves).  Each method module (:mod:`.dopri5`, :mod:`.ros2`, :mod:`.ros
   ws.h the proposed step; on failure ws.t is the time reached and ws.h unchanged; ws.steps and
   ws.rejected count the steps.  With ``ws.dense`` (ROS34PW2's dense output) the call instead stops at the
   first step that reaches or passes t_end (ws.t ≥ t_end) and leaves that step for the interpolant
-  (:func:`.common.hermite`).
+  (:func:`.common.hermite_one`).
 
 When ``ws.kernel`` holds the method's kernel specialised for ``ws.fun`` (:mod:`.specialised`, cached on disk;
 the stepper sets it for the engine's own right-hand sides with :func:`.specialised.engine_kernel`), ``advance``
@@ -104,7 +104,7 @@ class Workspace:
     #: the method's kernel specialised for ``fun`` (:func:`.specialised.engine_kernel`), or None: the generic one
     kernel: object = None
     #: ROS34PW2's dense output (:func:`.common.dense_arrays`): the calls stop at the first step at or past t_end
-    #: (ws.t ≥ t_end) and leave that step's ends for :func:`.common.hermite`; None: every call lands on t_end
+    #: (ws.t ≥ t_end) and leave that step's ends for :func:`.common.hermite_one`; None: every call lands on t_end
     dense: tuple | None = None
 
     def finish(self, status: int, t: float, h: float) -> Status:

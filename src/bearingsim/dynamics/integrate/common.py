@@ -106,15 +106,6 @@ def hermite_one(t0, y0, f0, t1, y1, f1, t):
                                                           + th * h * f1)
 
 
-@njit(cache=True)
-def hermite(t0, y0, f0, t1, y1, f1, t):
-    """:func:`hermite_one` on every component of one step [t0, t1] [s] (arrays y0, f0, y1, f1)."""
-    out = np.empty(y0.shape[0])
-    for i in range(y0.shape[0]):
-        out[i] = hermite_one(t0, y0[i], f0[i], t1, y1[i], f1[i], t)
-    return out
-
-
 @njit(cache=True, _nrt=False)
 def error_scale(i, y, ynew, atol, rtol, vec):
     """Error scale of component i: atol_i + rtol_i max(|y|, |ynew|) (Hairer, Nørsett & Wanner, *Solving

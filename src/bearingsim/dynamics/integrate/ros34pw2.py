@@ -155,8 +155,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     Dense output (``dns`` float[3, n], ``dst`` float[4]; :func:`.common.dense_arrays`): the steps are not clipped at
     t_end; the call returns at the first step that reaches or passes it, with t ≥ t_end, and leaves the last step's
     start (t₀ in dst[0], y₀ and f(t₀, y₀) in dns[0], dns[1]) and f at the state reached (dns[2]) for the Hermite
-    interpolant of :func:`.common.hermite`.  The controller's memory (err_prev, a rejection just before) and f at the
-    state reached are carried from one call to the next in ``dst``, so that the steps do not depend on where the
+    interpolant of :func:`.common.hermite_one`.  The controller's memory (err_prev, a rejection just before) and f at
+    the state reached are carried from one call to the next in ``dst``, so that the steps do not depend on where the
     calls stop: the trajectory is the same for any output interval (a checkpoint saves these arrays too).
     Without them (no columns): every call stops exactly at t_end and starts its controller afresh.
 
