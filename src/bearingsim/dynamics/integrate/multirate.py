@@ -122,7 +122,9 @@ def micro_jac(funm, args, mask, act, blk, tau, ybase, fbase, atol, jt, yt, ft):
 
 @njit(cache=True)
 def refine_work(n, nmax):
-    """The work arrays of :func:`refine` for n states and up to ``nmax`` active balls."""
+    """The work arrays of :func:`refine` for n states and up to ``nmax`` active balls (the first, the stages' state,
+    zeroed: :func:`latent` does not set the balls' states, and the masked right-hand side reads only the active
+    ones)."""
     return (np.zeros(n), np.empty(n), np.empty(n), np.empty((4, n)), np.empty(n), np.empty(n), np.zeros((nmax, 9, 9)),
             np.zeros((nmax, 9, 9)), np.zeros((9, 9)), np.empty(n), np.empty(n), np.empty(n), np.empty(n))
 
