@@ -141,6 +141,10 @@ CL_LN, CL_EX = LX, LOFF
 TRACTION_OUT = 10 + 31 * LANES
 #: n_slices = SPLIT_BASE + n: n equal strips, those holding a zero of the rolling slip split there
 SPLIT_BASE = 1_000_000
+#: n_slices = LOG_BASE + n: n nodes in all, generalized Gauss rules with the logarithm of the slip's zeros
+#: (:func:`_log_node`; LOG_MIN ≤ n ≤ LOG_MAX)
+LOG_BASE = 2_000_000
+LOG_MIN, LOG_MAX = 6, 8
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
 FLUID_MODELS = {"curve": 0, "physical": 1}
@@ -292,9 +296,12 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     if not (q > 0.0 and a > 0.0 and b > 0.0) or n_slices == 0:
         return
     curv = surface_curvature(r_dev)
-    split = n_slices > SPLIT_BASE
+    log_rule = n_slices > LOG_BASE
+    split = SPLIT_BASE < n_slices < LOG_BASE
     if split:
         n_slices -= SPLIT_BASE
+    elif log_rule:  # node rules below, as the Gauss rule's (n_slices < 0)
+        n_slices = LOG_BASE - n_slices
 
     # orbital angular velocity of the ball centre about the race centre
     rbx, rby, rbz = cbx - crx, cby - cry, cbz - crz
@@ -438,7 +445,7 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     need_f = wfl > 0.0
     fr_scale = phi * wfl
     if n_slices < 0:  # Gauss quadrature: its own constants (the strip ones below are not needed)
-        _gauss_quadrature(-n_slices, q, a, b, curv, nx, ny, nz, mx, my, mz, c0x - cbx, c0y - cby, c0z - cbz,
+        _gauss_quadrature(-n_slices, log_rule, q, a, b, curv, nx, ny, nz, mx, my, mz, c0x - cbx, c0y - cby, c0z - cbz,
                           c0x - crx, c0y - cry, c0z - crz, s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez,
                           u0, need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, lw[CL_LN + 4],
                           out)
@@ -1139,11 +1146,19 @@ def slip_zeros_on_major_axis(s0x, s0y, s0z, asx, asy, asz, bsx, bsy, bsz, nx, ny
     rates along e_major (as = ω_s × e_major) and the normal (bs = ω_s × n) [1/s] projected on the rolling direction
     r = n × e_major (σ0 = s0·r, σ1 = a as·r, σ2 = bs·r).  Returns (count, ξ1, ξ2).  The one place both the Gauss rule
     and the cut strips take their zeros from."""
+    sig0, sig1, sig2 = slip_rates_on_major_axis(s0x, s0y, s0z, asx, asy, asz, bsx, bsy, bsz, nx, ny, nz, mx, my, mz, a)
+    return rolling_slip_zeros(sig0, sig1, sig2, a, curv)
+
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def slip_rates_on_major_axis(s0x, s0y, s0z, asx, asy, asz, bsx, bsy, bsz, nx, ny, nz, mx, my, mz, a):
+    """(σ0, σ1, σ2) [m/s] of the rolling slip along the major axis, g(ξ) = σ0 + σ1 ξ + σ2 δ(aξ)
+    (:func:`rolling_slip_zeros`): the contact's sliding field projected on the rolling direction r = n × e_major."""
     rdx, rdy, rdz = ny * mz - nz * my, nz * mx - nx * mz, nx * my - ny * mx
     sig0 = s0x * rdx + s0y * rdy + s0z * rdz
     sig1 = a * (asx * rdx + asy * rdy + asz * rdz)
     sig2 = bsx * rdx + bsy * rdy + bsz * rdz
-    return rolling_slip_zeros(sig0, sig1, sig2, a, curv)
+    return sig0, sig1, sig2
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
@@ -1177,8 +1192,160 @@ def _gauss_node(m, ng, nroot, z1, z2):
     return lo + span * psi, 0.5 * span * dpsi * _GL_W[ng, i]
 
 
+# ---- generalized Gauss rules with the logarithm of the slip's zeros (n_slices = LOG_BASE + n) -------------------
+#
+# Next to a zero of the rolling slip, μ(s)·ŝ rises from 0 over a core of width ~1e-3 of the axis (the film's linear
+# response), then grows about as the logarithm of the distance to the zero (the Eyring stress, asinh of the shear rate)
+# until it levels off: measured on the hub states (issue 14, docs/dynamics.md, twentieth pass).  Gauss–Legendre nodes
+# converge slowly on such an integrand even graded towards the zero; rules built to integrate the logarithm exactly
+# take it with few nodes (the generalized Gaussian quadratures of Ma, Rokhlin & Wandzura 1996, here with one log term):
+#   one-sided, t ∈ [0, 1] from the zero: exact for 1, t, …, t^(2n−2) and ln t (n nodes, 2n unknowns);
+#   two-sided, symmetric about t = 1/2, zeros at both ends: exact for every polynomial of degree ≤ 2n − 3 and
+#   ln t + ln(1 − t) (n ≥ 2).
+# The nodes and weights were solved once from these moment equations (∫₀¹ tᵏ dt = 1/(k+1), ∫₀¹ ln t dt = −1, with
+# scipy.optimize.least_squares to a residual ≤ 6e-17; n = 1: t = 1/e; two-sided n = 2: t(1 − t) = e⁻²);
+# tests/unit/test_log_rule.py checks every moment.  Row n, entries 0..n−1 ascending.
+_LOG1_X = np.zeros((7, 6))
+_LOG1_W = np.zeros((7, 6))
+for _n, _x, _w in (
+        (1, (0.36787944117144245,), (1.0,)),
+        (2, (0.10948125144610703, 0.7133913765777445), (0.35334955930939316, 0.646650440690607)),
+        (3, (0.050353134746613355, 0.3969985049294198, 0.8552246120115472),
+         (0.1675406248553914, 0.4809327499596189, 0.35152662518498984)),
+        (4, (0.028670570407544154, 0.24159123743099462, 0.6060427719000977, 0.914782440093087),
+         (0.09640736620552812, 0.31789621538495505, 0.373615070883663, 0.21208134752585392)),
+        (5, (0.018453540464295932, 0.16034712387920436, 0.4306586561404479, 0.7299495255136921, 0.9442991323339215),
+         (0.06235400600646219, 0.2186596488904285, 0.30433270420823594, 0.27447069105355276, 0.14018294984132054)),
+        (6, (0.012854637567290498, 0.1135732391430297, 0.31637334764266306, 0.5695175583461733, 0.8053802015579017,
+             0.9608729079075851),
+         (0.04355004147923783, 0.1578098719803966, 0.2386634867084882, 0.2560288270751804, 0.2048820041118846,
+          0.09906576864481248))):
+    _LOG1_X[_n, :_n], _LOG1_W[_n, :_n] = _x, _w
+_LOG2_X = np.zeros((5, 4))
+_LOG2_W = np.zeros((5, 4))
+for _n, _x, _w in (
+        (2, (0.16137820985148146, 0.8386217901485186), (0.5, 0.5)),
+        (3, (0.06772448199575876, 0.5, 0.9322755180042412),
+         (0.2229808047444392, 0.5540383905111216, 0.2229808047444392)),
+        (4, (0.03618329587943532, 0.29707252708404963, 0.7029274729159504, 0.9638167041205646),
+         (0.12116887714900373, 0.37883112285099624, 0.37883112285099624, 0.12116887714900373))):
+    _LOG2_X[_n, :_n], _LOG2_W[_n, :_n] = _x, _w
+#: the smallest distance [-] (in ξ) of the slip's nearest zero that the root-free stretch's sinh map grades towards
+LOG_SINH_FLOOR = 0.05
+
+
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
-def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0bz, d0rx, d0ry, d0rz,
+def _log_counts(n, nroot, z1, z2):
+    """Nodes (n0, n1, n2) [-] of the log rule on each stretch of ξ ∈ [−1, 1] between the nroot zeros z1 < z2 of the
+    rolling slip: two each, the other n − 2(nroot + 1) dealt in proportion to the stretches' lengths (largest
+    remainders first, the lower stretch first on a tie).  Unused stretches get 0."""
+    if nroot == 0:
+        return n, 0, 0
+    l0 = z1 + 1.0
+    l1 = (z2 - z1) if nroot == 2 else (1.0 - z1)
+    l2 = (1.0 - z2) if nroot == 2 else 0.0
+    rest = n - 2 * (nroot + 1)
+    s0 = 0.5 * rest * l0
+    s1 = 0.5 * rest * l1
+    s2 = 0.5 * rest * l2
+    c0 = int(math.floor(s0))
+    c1 = int(math.floor(s1))
+    c2 = int(math.floor(s2))
+    f0 = s0 - c0
+    f1 = s1 - c1
+    f2 = s2 - c2
+    for _ in range(rest - c0 - c1 - c2):
+        if f0 >= f1 and f0 >= f2:
+            c0 += 1
+            f0 = -1.0
+        elif f1 >= f2:
+            c1 += 1
+            f1 = -1.0
+        else:
+            c2 += 1
+            f2 = -1.0
+    if nroot == 1:
+        return c0 + 2, c1 + 2, 0
+    return c0 + 2, c1 + 2, c2 + 2
+
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def nearest_slip_zero(sig0, sig1, sig2, a, curv):
+    """The zero of the rolling slip nearest the ellipse's axis ξ ∈ [−1, 1], off it: (ξ_b, d) [-] with ξ_b the point of
+    the axis nearest the zero and d its distance, from the quadratic g(ξ) ≈ σ0 + σ1 ξ + ½ σ2 c a² ξ² of
+    :func:`rolling_slip_zeros` (a complex pair x ± iy: ξ_b = clamp(x), d = |x + iy − ξ_b|; real zeros beyond ±1: the
+    nearer).  d = inf when g has no zero (the rule's map is then affine)."""
+    aa = 0.5 * sig2 * curv * a * a
+    scale = abs(aa) + abs(sig1) + abs(sig0)
+    xb = 0.0
+    d = math.inf
+    if scale == 0.0:
+        return xb, d
+    if abs(aa) <= 1e-12 * scale:
+        if sig1 != 0.0:
+            r = -sig0 / sig1
+            xb = min(1.0, max(-1.0, r))
+            d = abs(r - xb)
+        return xb, d
+    disc = sig1 * sig1 - 4.0 * aa * sig0
+    if disc < 0.0:
+        x = -sig1 / (2.0 * aa)
+        y = math.sqrt(-disc) / (2.0 * abs(aa))
+        xb = min(1.0, max(-1.0, x))
+        return xb, math.sqrt((x - xb) ** 2 + y * y)
+    qq = -0.5 * (sig1 + math.copysign(math.sqrt(disc), sig1))
+    for k in range(2):
+        r = qq / aa if k == 0 else (sig0 / qq if qq != 0.0 else qq / aa)
+        rb = min(1.0, max(-1.0, r))
+        if abs(r - rb) < d:
+            xb = rb
+            d = abs(r - rb)
+    return xb, d
+
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def _log_node(m, nroot, z1, z2, n0, n1, n2, xb, dz):
+    """Node m of the log rule (n_slices = LOG_BASE + n): (ξ, weight) [-] for ∫₋₁¹ f(ξ) dξ.
+
+    With zeros of the rolling slip on the axis (nroot ≥ 1), stretch k between them carries n_k nodes
+    (:func:`_log_counts`): a stretch with a zero at one end takes the one-sided rule from that end, one between two
+    zeros the two-sided rule (tables above).  Without (nroot = 0), n0 Gauss–Legendre nodes in u under the sinh map
+    ξ = ξ_b + d sinh u of Johnston & Elliott (2005) towards the slip's nearest zero off the axis
+    (:func:`nearest_slip_zero`, d no less than LOG_SINH_FLOOR): μ(s) changes fastest where the slip is smallest, and
+    as d grows the map tends to the affine one (plain Gauss–Legendre), so the nodes move continuously with the state."""
+    if nroot == 0:
+        t = _GL_X[n0, m]
+        w = _GL_W[n0, m]
+        y = max(dz, LOG_SINH_FLOOR)
+        if y > 1e6:  # (the affine limit)
+            return t, w
+        u0 = math.asinh((-1.0 - xb) / y)
+        u1 = math.asinh((1.0 - xb) / y)
+        u = u0 + 0.5 * (u1 - u0) * (1.0 + t)
+        return xb + y * math.sinh(u), 0.5 * (u1 - u0) * w * y * math.cosh(u)
+    k = 0
+    i = m
+    n_k = n0
+    if i >= n0:
+        k = 1
+        i -= n0
+        n_k = n1
+        if i >= n1:
+            k = 2
+            i -= n1
+            n_k = n2
+    lo = -1.0 if k == 0 else (z1 if k == 1 else z2)
+    hi = 1.0 if k == nroot else (z1 if k == 0 else z2)
+    span = hi - lo
+    if k > 0 and k < nroot:  # zeros at both ends
+        return lo + span * _LOG2_X[n_k, i], span * _LOG2_W[n_k, i]
+    if k > 0:  # the zero at the lower end
+        return lo + span * _LOG1_X[n_k, i], span * _LOG1_W[n_k, i]
+    return hi - span * _LOG1_X[n_k, i], span * _LOG1_W[n_k, i]  # the zero at the upper end
+
+
+@njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
+def _gauss_quadrature(ng, log_rule, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0bz, d0rx, d0ry, d0rz,
                       s0x, s0y, s0z, wsx, wsy, wsz, e0x, e0y, e0z, wex, wey, wez, u0,
                       need_b, need_f, fluid_kind, wfl, hc, theta, do_roll, reg, fr_scale, lub, ln_eta0, out):
     """The integrals of the strip model in its limit of infinitely many strips, by Gauss–Legendre
@@ -1203,8 +1370,16 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
     bsx, bsy, bsz = wsy * nz - wsz * ny, wsz * nx - wsx * nz, wsx * ny - wsy * nx
     aex, aey, aez = wey * mz - wez * my, wez * mx - wex * mz, wex * my - wey * mx
     bex, bey, bez = wey * nz - wez * ny, wez * nx - wex * nz, wex * ny - wey * nx
-    nroot, z1, z2 = slip_zeros_on_major_axis(s0x, s0y, s0z, asx, asy, asz, bsx, bsy, bsz, nx, ny, nz, mx, my, mz, a,
-                                             curv)
+    sig0, sig1, sig2 = slip_rates_on_major_axis(s0x, s0y, s0z, asx, asy, asz, bsx, bsy, bsz, nx, ny, nz, mx, my, mz, a)
+    nroot, z1, z2 = rolling_slip_zeros(sig0, sig1, sig2, a, curv)
+    # log_rule: ng nodes in all (_log_node), dealt to the stretches by _log_counts, or graded towards the slip's
+    # nearest zero off the ellipse's axis when none lies on it
+    n0 = n1 = n2 = 0
+    xb = dz = 0.0
+    if log_rule:
+        n0, n1, n2 = _log_counts(ng, nroot, z1, z2)
+        if nroot == 0:
+            xb, dz = nearest_slip_zero(sig0, sig1, sig2, a, curv)
     rx = lub[L_RX]
     alpha = lub[L_ALPHA]
     e_eff = lub[L_EEFF]
@@ -1231,13 +1406,16 @@ def _gauss_quadrature(ng, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx, d0by, d0b
     p_c = 0.375 * q / (a * b)  # p̄ = p_c √(1 − ξ²)
     two_rx = 2.0 * rx
     lw = out[10:]
-    n_nodes = (nroot + 1) * ng
+    n_nodes = ng if log_rule else (nroot + 1) * ng
     for c0 in range(0, n_nodes, LANES):
         nl = min(LANES, n_nodes - c0)
         for i in range(LANES):
             om = xi = wgt = 0.0
             if i < nl:
-                xi, wgt = _gauss_node(c0 + i, ng, nroot, z1, z2)
+                if log_rule:
+                    xi, wgt = _log_node(c0 + i, nroot, z1, z2, n0, n1, n2, xb, dz)
+                else:
+                    xi, wgt = _gauss_node(c0 + i, ng, nroot, z1, z2)
                 om = 1.0 - xi * xi
             qn = 0.0
             if om > 0.0:
@@ -1562,7 +1740,20 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
         sig = (float(sc @ rdir), a * float(np.cross(ws, m) @ rdir), float(np.cross(ws, n) @ rdir))
         return rolling_slip_zeros.py_func(*sig, a, c)
 
-    if n_slices > 0:
+    def rolling_nodes():
+        """The node rules' rolling resistance (the kernel's ROLL_NODES Gauss–Jacobi nodes)."""
+        # rolling resistance: Gauss-Jacobi nodes with the line-load factor (1 - ξ²)^0.246 (Zhou-Hoeprich) or
+        # (1 - ξ²)^0.5 (Martin) as the weight; per unit ξ the line contact of length a carrying (3Q/4)(1 - ξ²)
+        xr, wr_ = gauss_jacobi(ROLL_NODES, 0.5 if reg == 0 else 0.246)
+        for xi, wgt in zip(xr, wr_):
+            if reg == 0:
+                per_xi = lambda u: traction.rolling_resistance_ir.py_func(eta0, u, 0.75 * q / a, a)  # noqa: E731
+            else:
+                per_xi = lambda u: traction.rolling_resistance_zh.py_func(  # noqa: E731
+                    eta0 * u / (e_eff * rx), alpha * e_eff, 0.75 * q / (a * e_eff * rx), rx, alpha, a)
+            add_point(a * xi, 0.0, 0.0, 0.0, lambda u, f=per_xi, wgt=wgt: wgt * f(u))
+
+    if 0 < n_slices < LOG_BASE:
         # equal strips; with n_slices = SPLIT_BASE + n the strips that hold a zero of the rolling slip are cut there,
         # each part a strip of its own width
         nst = n_slices - SPLIT_BASE if n_slices > SPLIT_BASE else n_slices
@@ -1580,6 +1771,58 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
             x = a * (Gc(xi1) - Gc(xi0)) / (Fc(xi1) - Fc(xi0))
             area = a * b * (H(xi1) - H(xi0))
             add_point(x, qj, qj / area, area / width, rolling(width, qj))
+    elif n_slices > LOG_BASE:
+        # the log rule (the kernel's _log_node): n nodes, two on each stretch between the zeros of the rolling slip
+        # and the rest by the stretches' lengths; one-sided tables from a zero, the two-sided one between two zeros;
+        # without zeros on the axis, Gauss-Legendre under the sinh map towards the slip's nearest zero off it
+        n_nodes = n_slices - LOG_BASE
+        nroot, z1, z2 = zeros()
+        edges = [-1.0] + [z1, z2][:nroot] + [1.0]
+        nodes = []
+        if nroot == 0:
+            rdir = np.cross(n, m)
+            ws = wb - wr
+            sc, _ = kin(p0, n)
+            s0, s1, s2 = float(sc @ rdir), a * float(np.cross(ws, m) @ rdir), float(np.cross(ws, n) @ rdir)
+            coef = [0.5 * s2 * c * a * a, s1, s0]
+            while coef and abs(coef[0]) <= 1e-12 * sum(abs(v) for v in coef):
+                coef = coef[1:]
+            best = (0.0, math.inf)
+            for root in (np.roots(coef) if len(coef) > 1 else []):
+                xb = min(1.0, max(-1.0, root.real))
+                if abs(root - xb) < best[1]:
+                    best = (xb, abs(root - xb))
+            xb, y = best[0], max(best[1], LOG_SINH_FLOOR)
+            xg, wg = np.polynomial.legendre.leggauss(n_nodes)
+            if y > 1e6:
+                nodes = list(zip(xg, wg))
+            else:
+                u0, u1 = math.asinh((-1 - xb) / y), math.asinh((1 - xb) / y)
+                us = u0 + 0.5 * (u1 - u0) * (1 + xg)
+                nodes = list(zip(xb + y * np.sinh(us), 0.5 * (u1 - u0) * wg * y * np.cosh(us)))
+        else:
+            lengths = [hi - lo for lo, hi in zip(edges, edges[1:])]
+            rest = n_nodes - 2 * len(lengths)
+            share = [rest * ln / 2 for ln in lengths]
+            counts = [2 + math.floor(sh) for sh in share]
+            order = sorted(range(len(lengths)), key=lambda k: (-(share[k] - math.floor(share[k])), k))
+            for k in order[:n_nodes - sum(counts)]:
+                counts[k] += 1
+            for k, (lo, hi) in enumerate(zip(edges, edges[1:])):
+                nk = counts[k]
+                if 0 < k < nroot:
+                    ts, wts = _LOG2_X[nk, :nk], _LOG2_W[nk, :nk]
+                    nodes += [(lo + (hi - lo) * t, (hi - lo) * wt) for t, wt in zip(ts, wts)]
+                else:
+                    ts, wts = _LOG1_X[nk, :nk], _LOG1_W[nk, :nk]
+                    nodes += [(lo + (hi - lo) * t if k > 0 else hi - (hi - lo) * t, (hi - lo) * wt)
+                              for t, wt in zip(ts, wts)]
+        for xi, wgt in nodes:
+            om = 1 - xi * xi
+            if om > 0:
+                add_point(a * xi, 0.75 * q * om * wgt, 3 * q * math.sqrt(om) / (8 * a * b), 2 * b * math.sqrt(om),
+                          None)
+        rolling_nodes()
     else:
         # Gauss nodes between the zeros of the rolling slip, graded towards the zeros (the kernel's rule,
         # _gauss_quadrature): densities per unit ξ — load (3Q/4)(1 − ξ²), p̄ = 3Q√(1 − ξ²)/(8ab), chord 2b√(1 − ξ²)
@@ -1600,16 +1843,7 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                     continue
                 add_point(a * xi, 0.75 * q * om * wgt, 3 * q * math.sqrt(om) / (8 * a * b), 2 * b * math.sqrt(om),
                           None)
-        # rolling resistance: Gauss-Jacobi nodes with the line-load factor (1 - ξ²)^0.246 (Zhou-Hoeprich) or
-        # (1 - ξ²)^0.5 (Martin) as the weight; per unit ξ the line contact of length a carrying (3Q/4)(1 - ξ²)
-        xr, wr_ = gauss_jacobi(ROLL_NODES, 0.5 if reg == 0 else 0.246)
-        for xi, wgt in zip(xr, wr_):
-            if reg == 0:
-                per_xi = lambda u: traction.rolling_resistance_ir.py_func(eta0, u, 0.75 * q / a, a)  # noqa: E731
-            else:
-                per_xi = lambda u: traction.rolling_resistance_zh.py_func(  # noqa: E731
-                    eta0 * u / (e_eff * rx), alpha * e_eff, 0.75 * q / (a * e_eff * rx), rx, alpha, a)
-            add_point(a * xi, 0.0, 0.0, 0.0, lambda u, f=per_xi, wgt=wgt: wgt * f(u))
+        rolling_nodes()
     out[0:3] = F
     out[3:6] = Mb
     out[6:9] = Mr
