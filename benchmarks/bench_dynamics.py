@@ -5,7 +5,7 @@ Cases: (a) examples/spindle-7011.toml — SKF 7011 at Fa = 3000 N, 10,000 rpm, 2
 50 Hz moment, 0.1 s.  Targets (issue 14): (b) ≤ 60 s wall per simulated second on one core, ≤ 35 with 2 threads.
 
 Usage:  python benchmarks/bench_dynamics.py [--case a|b|both] [--duration "2 ms"] [--traction slices|coulomb|none]
-         [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8] [--slice-rule strips|split|gauss]
+         [--integrator auto|dopri5|ros2w|ros34w] [--tolerance 1e-6] [--n-slices 8] [--slice-rule strips|split|gauss|log]
          [--vehicle-speed KMH] [--profile] [--kernel] [--accuracy] [--threads N] [--steps]
          [--timeline WINDOW [--jac-every N] [--jac-fixed] [--jac-unturned]]
 --slice-rule gauss integrates the traction with --n-slices Gauss nodes per stretch between the zeros of the rolling
@@ -302,9 +302,9 @@ def main(argv=None):
     ap.add_argument("--traction", default=None, choices=["slices", "coulomb", "none"])
     ap.add_argument("--integrator", default=None, choices=["auto", "dopri5", "ros2w", "ros34w"])
     ap.add_argument("--tolerance", type=float, default=None, help="integrator tolerance (default: the case file)")
-    ap.add_argument("--n-slices", type=int, default=None, help="slices per contact ellipse, or Gauss nodes per "
-                    "stretch with --slice-rule gauss (default: the case file)")
-    ap.add_argument("--slice-rule", default=None, choices=["strips", "split", "gauss"],
+    ap.add_argument("--n-slices", type=int, default=None, help="slices per contact ellipse, Gauss nodes per "
+                    "stretch with --slice-rule gauss, nodes in all with --slice-rule log (default: the case file)")
+    ap.add_argument("--slice-rule", default=None, choices=["strips", "split", "gauss", "log"],
                     help="traction quadrature (default: the case file's, strips)")
     ap.add_argument("--vehicle-speed", type=float, default=None, help="hub case (b) at this vehicle speed [km/h] "
                     "(default: the case file's 100 km/h)")

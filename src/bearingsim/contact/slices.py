@@ -1236,37 +1236,15 @@ LOG_SINH_FLOOR = 0.05
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _log_counts(n, nroot, z1, z2):
-    """Nodes (n0, n1, n2) [-] of the log rule on each stretch of ξ ∈ [−1, 1] between the nroot zeros z1 < z2 of the
-    rolling slip: two each, the other n − 2(nroot + 1) dealt in proportion to the stretches' lengths (largest
-    remainders first, the lower stretch first on a tie).  Unused stretches get 0."""
+    """Nodes (n0, n1, n2) [-] of the log rule on the stretches of ξ ∈ [−1, 1] between the nroot zeros of the rolling
+    slip: all n on the axis without a zero; n // 2 on each side of one zero; two on each outer stretch and n − 4 on
+    the one between two zeros.  Fixed per count of zeros, so the nodes move continuously with the zeros (dealing by
+    length made the force jump where a node changed stretch: 24 times the steps on the hub, issue 14).  Unused: 0."""
     if nroot == 0:
         return n, 0, 0
-    l0 = z1 + 1.0
-    l1 = (z2 - z1) if nroot == 2 else (1.0 - z1)
-    l2 = (1.0 - z2) if nroot == 2 else 0.0
-    rest = n - 2 * (nroot + 1)
-    s0 = 0.5 * rest * l0
-    s1 = 0.5 * rest * l1
-    s2 = 0.5 * rest * l2
-    c0 = int(math.floor(s0))
-    c1 = int(math.floor(s1))
-    c2 = int(math.floor(s2))
-    f0 = s0 - c0
-    f1 = s1 - c1
-    f2 = s2 - c2
-    for _ in range(rest - c0 - c1 - c2):
-        if f0 >= f1 and f0 >= f2:
-            c0 += 1
-            f0 = -1.0
-        elif f1 >= f2:
-            c1 += 1
-            f1 = -1.0
-        else:
-            c2 += 1
-            f2 = -1.0
     if nroot == 1:
-        return c0 + 2, c1 + 2, 0
-    return c0 + 2, c1 + 2, c2 + 2
+        return n // 2, n // 2, 0
+    return 2, n - 4, 2
 
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
@@ -1304,25 +1282,25 @@ def nearest_slip_zero(sig0, sig1, sig2, a, curv):
 
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
-def _log_node(m, nroot, z1, z2, n0, n1, n2, xb, dz):
+def _log_node(m, nroot, z1, z2, n0, n1, n2, xb, ysh, u0, du):
     """Node m of the log rule (n_slices = LOG_BASE + n): (ξ, weight) [-] for ∫₋₁¹ f(ξ) dξ.
 
     With zeros of the rolling slip on the axis (nroot ≥ 1), stretch k between them carries n_k nodes
     (:func:`_log_counts`): a stretch with a zero at one end takes the one-sided rule from that end, one between two
     zeros the two-sided rule (tables above).  Without (nroot = 0), n0 Gauss–Legendre nodes in u under the sinh map
     ξ = ξ_b + d sinh u of Johnston & Elliott (2005) towards the slip's nearest zero off the axis
-    (:func:`nearest_slip_zero`, d no less than LOG_SINH_FLOOR): μ(s) changes fastest where the slip is smallest, and
-    as d grows the map tends to the affine one (plain Gauss–Legendre), so the nodes move continuously with the state."""
+    (:func:`nearest_slip_zero`; ysh = max(d, LOG_SINH_FLOOR), u from u0 = asinh((−1 − ξ_b)/ysh) over du to
+    asinh((1 − ξ_b)/ysh), taken once per contact by the caller): μ(s) changes fastest where the slip is smallest, and
+    as d grows the map tends to the affine one (plain Gauss–Legendre; ysh > 1e6: that one), so the nodes move
+    continuously with the state.  sinh u and cosh u from one exponential."""
     if nroot == 0:
         t = _GL_X[n0, m]
         w = _GL_W[n0, m]
-        y = max(dz, LOG_SINH_FLOOR)
-        if y > 1e6:  # (the affine limit)
+        if ysh > 1e6:  # (the affine limit)
             return t, w
-        u0 = math.asinh((-1.0 - xb) / y)
-        u1 = math.asinh((1.0 - xb) / y)
-        u = u0 + 0.5 * (u1 - u0) * (1.0 + t)
-        return xb + y * math.sinh(u), 0.5 * (u1 - u0) * w * y * math.cosh(u)
+        eu = math.exp(u0 + 0.5 * du * (1.0 + t))
+        ie = 1.0 / eu
+        return xb + 0.5 * ysh * (eu - ie), 0.25 * du * w * ysh * (eu + ie)
     k = 0
     i = m
     n_k = n0
@@ -1375,11 +1353,15 @@ def _gauss_quadrature(ng, log_rule, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx,
     # log_rule: ng nodes in all (_log_node), dealt to the stretches by _log_counts, or graded towards the slip's
     # nearest zero off the ellipse's axis when none lies on it
     n0 = n1 = n2 = 0
-    xb = dz = 0.0
+    xb = ysh = u0 = du = 0.0
     if log_rule:
         n0, n1, n2 = _log_counts(ng, nroot, z1, z2)
-        if nroot == 0:
+        if nroot == 0:  # the sinh map's constants (_log_node)
             xb, dz = nearest_slip_zero(sig0, sig1, sig2, a, curv)
+            ysh = max(dz, LOG_SINH_FLOOR)
+            if ysh <= 1e6:
+                u0 = math.asinh((-1.0 - xb) / ysh)
+                du = math.asinh((1.0 - xb) / ysh) - u0
     rx = lub[L_RX]
     alpha = lub[L_ALPHA]
     e_eff = lub[L_EEFF]
@@ -1413,7 +1395,7 @@ def _gauss_quadrature(ng, log_rule, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx,
             om = xi = wgt = 0.0
             if i < nl:
                 if log_rule:
-                    xi, wgt = _log_node(c0 + i, nroot, z1, z2, n0, n1, n2, xb, dz)
+                    xi, wgt = _log_node(c0 + i, nroot, z1, z2, n0, n1, n2, xb, ysh, u0, du)
                 else:
                     xi, wgt = _gauss_node(c0 + i, ng, nroot, z1, z2)
                 om = 1.0 - xi * xi
@@ -1592,7 +1574,9 @@ def contact_traction_checked(q, a, b, r_dev, centre, normal, major, ball_centre,
     """Python entry: checks the input (typed errors), then calls the kernel; returns out[10].
 
     quadrature "strips": n_slices equal strips (seed eq. 1); "gauss": n_slices Gauss–Legendre nodes
-    (1..GAUSS_MAX) on each sub-interval between the zeros of the rolling slip (the kernel's n_slices < 0)."""
+    (1..GAUSS_MAX) on each sub-interval between the zeros of the rolling slip (the kernel's n_slices < 0); "log":
+    n_slices nodes in all (LOG_MIN..LOG_MAX), generalized Gauss rules with the logarithm of the slip's zeros
+    (:func:`_log_node`; the kernel's LOG_BASE + n)."""
     vecs = dict(centre=centre, normal=normal, major=major, ball_centre=ball_centre, v_ball=v_ball, w_ball=w_ball,
                 race_centre=race_centre, v_race=v_race, w_race=w_race)
     check_contact_inputs(q, a, b, vecs, n_slices)
@@ -1601,8 +1585,13 @@ def contact_traction_checked(q, a, b, r_dev, centre, normal, major, ball_centre,
             raise InputError("n_slices", f"at most {GAUSS_MAX} Gauss nodes per sub-interval, got {n_slices}",
                              "use 3 or 4 nodes")
         n_slices = -n_slices
+    elif quadrature == "log":
+        if not LOG_MIN <= n_slices <= LOG_MAX:
+            raise InputError("n_slices", f"the log rule takes {LOG_MIN}..{LOG_MAX} nodes in all, got {n_slices}",
+                             "use 7 nodes")
+        n_slices = LOG_BASE + n_slices
     elif quadrature != "strips":
-        raise InputError("quadrature", f"unknown quadrature {quadrature!r}", "use strips or gauss")
+        raise InputError("quadrature", f"unknown quadrature {quadrature!r}", "use strips, gauss or log")
     lub = np.asarray(lub, dtype=float)
     if lub.shape != (L_SIZE,) or not np.all(np.isfinite(lub)):
         raise InputError("lub", "must be the finite vector built by pack_lubrication_parameters", "")
@@ -1772,8 +1761,8 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
             area = a * b * (H(xi1) - H(xi0))
             add_point(x, qj, qj / area, area / width, rolling(width, qj))
     elif n_slices > LOG_BASE:
-        # the log rule (the kernel's _log_node): n nodes, two on each stretch between the zeros of the rolling slip
-        # and the rest by the stretches' lengths; one-sided tables from a zero, the two-sided one between two zeros;
+        # the log rule (the kernel's _log_node): n nodes, n // 2 on each side of one zero of the rolling slip, or two
+        # outside two zeros and the rest between them; one-sided tables from a zero, the two-sided one between two;
         # without zeros on the axis, Gauss-Legendre under the sinh map towards the slip's nearest zero off it
         n_nodes = n_slices - LOG_BASE
         nroot, z1, z2 = zeros()
@@ -1801,13 +1790,7 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                 us = u0 + 0.5 * (u1 - u0) * (1 + xg)
                 nodes = list(zip(xb + y * np.sinh(us), 0.5 * (u1 - u0) * wg * y * np.cosh(us)))
         else:
-            lengths = [hi - lo for lo, hi in zip(edges, edges[1:])]
-            rest = n_nodes - 2 * len(lengths)
-            share = [rest * ln / 2 for ln in lengths]
-            counts = [2 + math.floor(sh) for sh in share]
-            order = sorted(range(len(lengths)), key=lambda k: (-(share[k] - math.floor(share[k])), k))
-            for k in order[:n_nodes - sum(counts)]:
-                counts[k] += 1
+            counts = [n_nodes // 2] * 2 if nroot == 1 else [2, n_nodes - 4, 2]
             for k, (lo, hi) in enumerate(zip(edges, edges[1:])):
                 nk = counts[k]
                 if 0 < k < nroot:

@@ -12,9 +12,12 @@ Example (``examples/spindle-7011.toml``)::
     duration = "20 ms"
     output_interval = "0.05 ms"
     traction = "slices"                 # slices (lubricated kernel), coulomb (test stand-in), none
-    n_slices = 8                        # strips per ellipse, or with slice_rule = "gauss" nodes per stretch
-    slice_rule = "strips"               # "strips" (equal strips, default) or "gauss" (Gauss–Legendre between the
-                                        # zeros of the rolling slip: smooth in the state, contact/slices.py)
+    n_slices = 8                        # strips per ellipse; with slice_rule = "gauss" nodes per stretch, with
+                                        # "log" nodes in all (6..8)
+    slice_rule = "strips"               # "strips" (equal strips, default), "gauss" (Gauss–Legendre between the
+                                        # zeros of the rolling slip: smooth in the state, contact/slices.py) or
+                                        # "log" (rules exact for the logarithm of those zeros: 7 nodes within 1 %
+                                        # of the strip limit on the hub states)
     tolerance = 1e-6                    # integrator tolerance (relative; lengths scaled by 1 mm)
     integrator = "auto"                 # ros34w (W-method, implicit per ball) for traction = "slices", else dopri5;
                                         # or "dopri5", "ros2w", "ros34w"
@@ -78,14 +81,26 @@ from .loads import LoadHistory, SpeedHistory
 
 def kernel_slices(n: int, rule: str) -> int:
     """The contact kernel's ``n_slices`` for a case's n_slices and slice_rule (:func:`.contact.slices.traction_at`:
-    n equal strips, −n Gauss nodes per stretch, SPLIT_BASE + n strips cut at the zeros of the rolling slip)."""
+    n equal strips, −n Gauss nodes per stretch, SPLIT_BASE + n strips cut at the zeros of the rolling slip,
+    LOG_BASE + n nodes of the log rule)."""
     if rule == "gauss":
         return -n
+    if rule == "log":
+        from ..contact.slices import LOG_BASE
+
+        return LOG_BASE + n
     if rule == "split":
         from ..contact.slices import SPLIT_BASE
 
         return SPLIT_BASE + n
     return n
+
+
+def _log_nodes() -> tuple[int, int]:
+    """Fewest and most nodes of the contact kernel's log rule (imported when asked, as :func:`_gauss_max`)."""
+    from ..contact.slices import LOG_MAX, LOG_MIN
+
+    return LOG_MIN, LOG_MAX
 
 
 def _gauss_max() -> int:
@@ -169,9 +184,12 @@ class Case:
                              'add lubricant = "iso-vg-68" or set traction = "none"')
         if isinstance(self.n_slices, bool) or not (isinstance(self.n_slices, int) and 1 <= self.n_slices <= 64):
             raise InputError("n_slices", f"must be an integer in 1..64, got {self.n_slices!r}", "e.g. 8")
-        if self.slice_rule not in ("strips", "gauss", "split"):
+        if self.slice_rule not in ("strips", "gauss", "split", "log"):
             raise InputError("slice_rule", f"unknown rule {self.slice_rule!r}"[:120],
-                             'use "strips", "split" or "gauss"')
+                             'use "strips", "split", "gauss" or "log"')
+        if self.slice_rule == "log" and not ((lo := _log_nodes()[0]) <= self.n_slices <= (hi := _log_nodes()[1])):
+            raise InputError("n_slices", f"with slice_rule = \"log\" it counts nodes in all: {lo}..{hi}, got "
+                             f"{self.n_slices}", "e.g. n_slices = 7")
         if self.slice_rule == "gauss" and self.n_slices > (GAUSS_MAX := _gauss_max()):
             raise InputError("n_slices", f"with slice_rule = \"gauss\" it counts nodes per stretch: 1..{GAUSS_MAX}, "
                              f"got {self.n_slices}", "e.g. n_slices = 4")
@@ -262,7 +280,9 @@ class Case:
             lub["solids"] = self.solids_shear()
         return dict(ring_mass=self.ring_mass, ring_inertia=self.ring_inertia, gravity=self.gravity,
                     damping_alpha=self.damping_alpha(), traction=self.traction,
-                    n_slices=kernel_slices(self.n_slices, self.slice_rule),
+                    # (the rules are the lubricated kernel's; the Coulomb stand-in takes n_slices equal strips)
+                    n_slices=(kernel_slices(self.n_slices, self.slice_rule) if self.traction == "slices"
+                              else self.n_slices),
                     load_point=self.load_point, speed=self.speed.as_tuple(), lubricant=self.lubricant,
                     temperature=self.temperature, lubrication=lub or None, ball_orbit=self.ball_orbit,
                     cage_mass=c.get("mass"), pocket_clearance=c.get("pocket_clearance"),

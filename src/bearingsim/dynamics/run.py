@@ -148,7 +148,9 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     if case.traction == "slices":
         gauss = f"Gauss-Legendre, {case.n_slices} nodes per stretch between the zeros of the rolling slip"
         attrs["traction_quadrature"] = {"gauss": gauss, "split": f"{case.n_slices} equal strips, cut at the zeros of "
-                                        "the rolling slip"}.get(case.slice_rule, f"{case.n_slices} equal strips")
+                                        "the rolling slip", "log": f"{case.n_slices} nodes, generalized Gauss rules "
+                                        "exact for the logarithm of the zeros of the rolling slip"}.get(
+                                            case.slice_rule, f"{case.n_slices} equal strips")
     n_total = case.n_samples
     start = 0
     writer = None
