@@ -3,7 +3,8 @@
 Prints µs per call after warm-up, called from a numba loop (as the dynamics engine does)
 for 10 slices and a few other counts (best and median of repeated runs), and for the Gauss quadrature between the
 zeros of the rolling slip (n_slices = −k: k nodes per sub-interval; the case has two zeros, so 3k μ evaluations), for
-equal strips cut at those zeros ("split": n strips, n + 2 evaluations here), for
+equal strips cut at those zeros ("split": n strips, n + 2 evaluations here), for the log rule (n_slices =
+LOG_BASE + n: n nodes in all, generalized Gauss rules exact for the logarithm of the zeros; n − 4 + 4 = n here), for
 the physical fluid model, the four-parameter curve and the boundary model.  Run:  python benchmarks/bench_slices.py
 Not a test: figures depend on the machine.
 """
@@ -97,7 +98,8 @@ def main(repeats: int = 25, n_calls: int = 10_000):
           f"{repeats} repeats; the best is the figure least disturbed by other load on the machine)")
     for model, fluid in (("mixed", "physical"), ("fluid", "curve"), ("boundary", "physical")):
         args = case(model, fluid)
-        for n_slices in (1, 5, 8, 10, 20, S.SPLIT_BASE + 6, S.SPLIT_BASE + 8, -2, -3, -4):
+        for n_slices in (1, 5, 8, 10, 20, S.SPLIT_BASE + 6, S.SPLIT_BASE + 8, -2, -3, -4, S.LOG_BASE + 7,
+                         S.LOG_BASE + 8):
             out = np.zeros(10)
             _loop(10, *args, n_slices, out)
             times = []
@@ -105,7 +107,8 @@ def main(repeats: int = 25, n_calls: int = 10_000):
                 t0 = time.perf_counter()
                 _loop(n_calls, *args, n_slices, out)
                 times.append((time.perf_counter() - t0) / n_calls * 1e6)
-            label = (f"split ={n_slices - S.SPLIT_BASE:3d}" if n_slices > S.SPLIT_BASE
+            label = (f"log   ={n_slices - S.LOG_BASE:3d}" if n_slices > S.LOG_BASE
+                     else f"split ={n_slices - S.SPLIT_BASE:3d}" if n_slices > S.SPLIT_BASE
                      else f"slices={n_slices:3d}" if n_slices > 0 else f"gauss ={-n_slices:3d}")
             print(f"  model={model:8s} fluid={fluid:8s} {label}: best {min(times):6.3f}  "
                   f"median {float(np.median(times)):6.3f} µs/call")

@@ -1,5 +1,6 @@
-"""The case-file key ``slice_rule`` (issue 14): the sliced traction by equal strips (default) or by Gauss–Legendre
-nodes between the zeros of the rolling slip (``contact.slices``, n_slices < 0 inside the kernel)."""
+"""The case-file key ``slice_rule`` (issue 14): the sliced traction by equal strips (default), by Gauss–Legendre
+nodes between the zeros of the rolling slip (``contact.slices``, n_slices < 0 inside the kernel), by strips cut at
+those zeros (SPLIT_BASE + n) or by the log rule (LOG_BASE + n)."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ from pathlib import Path
 import pytest
 from _cli import run  # tests/unit/_cli.py: the installed console script
 
-from bearingsim.contact.slices import GAUSS_MAX, SPLIT_BASE
+from bearingsim.contact.slices import GAUSS_MAX, LOG_BASE, LOG_MAX, LOG_MIN, SPLIT_BASE
 from bearingsim.dynamics.case import case_from_dict
 from bearingsim.errors import InputError
 
@@ -31,7 +32,9 @@ def test_default_is_strips_and_gauss_reaches_the_kernel_as_negative_count():
 
 @pytest.mark.parametrize("bad, field", [({"slice_rule": "simpson"}, "slice_rule"), ({"slice_rule": 3}, "slice_rule"),
                                         ({"slice_rule": "gauss", "n_slices": GAUSS_MAX + 1}, "n_slices"),
-                                        ({"slice_rule": "gauss", "n_slices": 0}, "n_slices")])
+                                        ({"slice_rule": "gauss", "n_slices": 0}, "n_slices"),
+                                        ({"slice_rule": "log", "n_slices": LOG_MIN - 1}, "n_slices"),
+                                        ({"slice_rule": "log", "n_slices": LOG_MAX + 1}, "n_slices")])
 def test_bad_rule_or_node_count_names_the_field(bad, field):
     with pytest.raises(InputError) as e:
         case_from_dict(_data(**bad), base=HUB.parent)
@@ -84,3 +87,28 @@ def test_split_rule_reaches_the_kernel_above_split_base_and_says_its_rule(tmp_pa
     with xr.open_dataset(out) as ds:
         assert ds.attrs["traction_quadrature"] == "6 equal strips, cut at the zeros of the rolling slip", ds.attrs
         assert ds.sizes["time"] == 3
+
+
+def test_log_rule_reaches_the_kernel_above_log_base_and_says_its_rule(tmp_path):
+    """slice_rule = "log": n nodes in all (tests/unit/test_log_rule.py); the kernel takes LOG_BASE + n, a resume never
+    mixes it with the other rules, and the output file names it."""
+    import xarray as xr
+
+    log = case_from_dict(_data(slice_rule="log", n_slices=7), base=HUB.parent)
+    assert log.model_options()["n_slices"] == LOG_BASE + 7
+    assert log.fingerprint() != case_from_dict(_data(n_slices=7), base=HUB.parent).fingerprint()
+    case = tmp_path / "log.toml"
+    case.write_text(HUB.read_text().replace("n_slices = 8", 'n_slices = 7\nslice_rule = "log"'))
+    out = tmp_path / "l.nc"
+    run("simulate", str(case), "--duration", "0.2 ms", "--out", str(out), "--quiet")
+    with xr.open_dataset(out) as ds:
+        assert ds.attrs["traction_quadrature"].startswith("7 nodes, generalized Gauss rules"), ds.attrs
+        assert ds.sizes["time"] == 3
+
+
+@pytest.mark.parametrize("rule, n", [("split", 6), ("gauss", 4), ("log", 7)])
+def test_coulomb_stand_in_takes_equal_strips_whatever_the_rule(rule, n):
+    """The rules are the lubricated kernel's: the Coulomb stand-in's slice table is built for n equal strips (before
+    the fix it was given SPLIT_BASE + n or LOG_BASE + n strips, or −n)."""
+    c = case_from_dict(_data(slice_rule=rule, n_slices=n, traction="coulomb"), base=HUB.parent)
+    assert c.model_options()["n_slices"] == n

@@ -145,6 +145,8 @@ SPLIT_BASE = 1_000_000
 #: (:func:`_log_node`; LOG_MIN ≤ n ≤ LOG_MAX)
 LOG_BASE = 2_000_000
 LOG_MIN, LOG_MAX = 6, 8
+#: most equal strips the checked entry takes (the kernel reads SPLIT_BASE + n and LOG_BASE + n as other rules)
+STRIPS_MAX = 100_000
 
 MODELS = {"boundary": 0, "fluid": 1, "mixed": 2}
 FLUID_MODELS = {"curve": 0, "physical": 1}
@@ -1236,14 +1238,15 @@ LOG_SINH_FLOOR = 0.05
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
 def _log_counts(n, nroot, z1, z2):
-    """Nodes (n0, n1, n2) [-] of the log rule on the stretches of ξ ∈ [−1, 1] between the nroot zeros of the rolling
-    slip: all n on the axis without a zero; n // 2 on each side of one zero; two on each outer stretch and n − 4 on
-    the one between two zeros.  Fixed per count of zeros, so the nodes move continuously with the zeros (dealing by
-    length made the force jump where a node changed stretch: 24 times the steps on the hub, issue 14).  Unused: 0."""
+    """Nodes (n0, n1, n2) [-] of the log rule (LOG_MIN ≤ n ≤ LOG_MAX, as the entry points check) on the stretches of
+    ξ ∈ [−1, 1] between the nroot zeros of the rolling slip: all n on the axis without a zero; n − n // 2 below one
+    zero and n // 2 above it; two on each outer stretch and n − 4 between two zeros.  Fixed per count of zeros, so the
+    nodes move continuously with the zeros (dealing by length made the force jump where a node changed stretch: 24
+    times the steps on the hub, issue 14).  Unused stretches: 0."""
     if nroot == 0:
         return n, 0, 0
     if nroot == 1:
-        return n // 2, n // 2, 0
+        return n - n // 2, n // 2, 0
     return 2, n - 4, 2
 
 
@@ -1252,7 +1255,7 @@ def nearest_slip_zero(sig0, sig1, sig2, a, curv):
     """The zero of the rolling slip nearest the ellipse's axis ξ ∈ [−1, 1], off it: (ξ_b, d) [-] with ξ_b the point of
     the axis nearest the zero and d its distance, from the quadratic g(ξ) ≈ σ0 + σ1 ξ + ½ σ2 c a² ξ² of
     :func:`rolling_slip_zeros` (a complex pair x ± iy: ξ_b = clamp(x), d = |x + iy − ξ_b|; real zeros beyond ±1: the
-    nearer).  d = inf when g has no zero (the rule's map is then affine)."""
+    nearer, the lower ξ_b of two equally near).  d = inf when g has no zero (the rule's map is then affine)."""
     aa = 0.5 * sig2 * curv * a * a
     scale = abs(aa) + abs(sig1) + abs(sig0)
     xb = 0.0
@@ -1275,7 +1278,7 @@ def nearest_slip_zero(sig0, sig1, sig2, a, curv):
     for k in range(2):
         r = qq / aa if k == 0 else (sig0 / qq if qq != 0.0 else qq / aa)
         rb = min(1.0, max(-1.0, r))
-        if abs(r - rb) < d:
+        if abs(r - rb) < d or (abs(r - rb) == d and rb < xb):  # (equally near: the lower end, as the reference)
             xb = rb
             d = abs(r - rb)
     return xb, d
@@ -1592,6 +1595,8 @@ def contact_traction_checked(q, a, b, r_dev, centre, normal, major, ball_centre,
         n_slices = LOG_BASE + n_slices
     elif quadrature != "strips":
         raise InputError("quadrature", f"unknown quadrature {quadrature!r}", "use strips, gauss or log")
+    elif n_slices > STRIPS_MAX:  # (larger codes select the other rules inside the kernel)
+        raise InputError("n_slices", f"at most {STRIPS_MAX} equal strips, got {n_slices}", "use e.g. 10 slices")
     lub = np.asarray(lub, dtype=float)
     if lub.shape != (L_SIZE,) or not np.all(np.isfinite(lub)):
         raise InputError("lub", "must be the finite vector built by pack_lubrication_parameters", "")
@@ -1761,8 +1766,9 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
             area = a * b * (H(xi1) - H(xi0))
             add_point(x, qj, qj / area, area / width, rolling(width, qj))
     elif n_slices > LOG_BASE:
-        # the log rule (the kernel's _log_node): n nodes, n // 2 on each side of one zero of the rolling slip, or two
-        # outside two zeros and the rest between them; one-sided tables from a zero, the two-sided one between two;
+        # the log rule (the kernel's _log_node): n nodes, n − n // 2 below one zero of the rolling slip and n // 2
+        # above it, or two outside two zeros and the rest between them; one-sided tables from a zero, the two-sided
+        # one between two;
         # without zeros on the axis, Gauss-Legendre under the sinh map towards the slip's nearest zero off it
         n_nodes = n_slices - LOG_BASE
         nroot, z1, z2 = zeros()
@@ -1776,12 +1782,10 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
             coef = [0.5 * s2 * c * a * a, s1, s0]
             while coef and abs(coef[0]) <= 1e-12 * sum(abs(v) for v in coef):
                 coef = coef[1:]
-            best = (0.0, math.inf)
-            for root in (np.roots(coef) if len(coef) > 1 else []):
-                xb = min(1.0, max(-1.0, root.real))
-                if abs(root - xb) < best[1]:
-                    best = (xb, abs(root - xb))
-            xb, y = best[0], max(best[1], LOG_SINH_FLOOR)
+            cand = [(abs(root - min(1.0, max(-1.0, root.real))), min(1.0, max(-1.0, root.real)))
+                    for root in (np.roots(coef) if len(coef) > 1 else [])]
+            d, xb = min(cand) if cand else (math.inf, 0.0)  # the nearest; equally near: the lower end
+            y = max(d, LOG_SINH_FLOOR)
             xg, wg = np.polynomial.legendre.leggauss(n_nodes)
             if y > 1e6:
                 nodes = list(zip(xg, wg))
@@ -1790,7 +1794,7 @@ def contact_traction_reference(q, a, b, r_dev, centre, normal, major, ball_centr
                 us = u0 + 0.5 * (u1 - u0) * (1 + xg)
                 nodes = list(zip(xb + y * np.sinh(us), 0.5 * (u1 - u0) * wg * y * np.cosh(us)))
         else:
-            counts = [n_nodes // 2] * 2 if nroot == 1 else [2, n_nodes - 4, 2]
+            counts = [n_nodes - n_nodes // 2, n_nodes // 2] if nroot == 1 else [2, n_nodes - 4, 2]
             for k, (lo, hi) in enumerate(zip(edges, edges[1:])):
                 nk = counts[k]
                 if 0 < k < nroot:

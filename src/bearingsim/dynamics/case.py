@@ -187,9 +187,11 @@ class Case:
         if self.slice_rule not in ("strips", "gauss", "split", "log"):
             raise InputError("slice_rule", f"unknown rule {self.slice_rule!r}"[:120],
                              'use "strips", "split", "gauss" or "log"')
-        if self.slice_rule == "log" and not ((lo := _log_nodes()[0]) <= self.n_slices <= (hi := _log_nodes()[1])):
-            raise InputError("n_slices", f"with slice_rule = \"log\" it counts nodes in all: {lo}..{hi}, got "
-                             f"{self.n_slices}", "e.g. n_slices = 7")
+        if self.slice_rule == "log":
+            lo, hi = _log_nodes()
+            if not lo <= self.n_slices <= hi:
+                raise InputError("n_slices", f"with slice_rule = \"log\" it counts nodes in all: {lo}..{hi}, got "
+                                 f"{self.n_slices}", "e.g. n_slices = 7")
         if self.slice_rule == "gauss" and self.n_slices > (GAUSS_MAX := _gauss_max()):
             raise InputError("n_slices", f"with slice_rule = \"gauss\" it counts nodes per stretch: 1..{GAUSS_MAX}, "
                              f"got {self.n_slices}", "e.g. n_slices = 4")
