@@ -544,9 +544,9 @@ def test_uniform_sliding_constant_mu_gives_mu_q(n):
 def test_hub_states_seven_nodes_against_the_strip_limit(scale):
     """The hub states of test_dyn_options (ball spin 1 % below, at and above Jones' value): the ball accelerations
     (traction forces and moments of the 64 contacts) with the log rule's 7 nodes against 1,024 equal strips (the
-    strip limit of seed 001 eqs. 1–2; 128 strips differ from it by 0.1–0.3 %).  Measured (counts fixed per number
-    of zeros, commit 73072a3): 0.25 / 0.40 / 0.86 % (8 equal strips 8.3 / 2.7 / 14.3 %: 0.03 / 0.15 / 0.06 of
-    theirs), power −0.18 / −0.23 / +0.36 %; 6 nodes reach 5.5 % at 1.01, hence 7."""
+    strip limit of seed 001 eqs. 1–2; 128 strips differ from it by 0.1–0.3 %).  Measured: 0.20 / 0.32 / 0.72 % (8
+    equal strips 8.3 / 2.7 / 14.3 %: 0.02 / 0.12 / 0.05 of theirs), power −0.19 / −0.23 / +0.37 %; 6 nodes reach
+    5.5 % at 1.01, hence 7."""
     ref, pref = _hub_accelerations(1024, scale)
     acc, p = _hub_accelerations(S.LOG_BASE + 7, scale)
     a8, _ = _hub_accelerations(8, scale)
