@@ -72,37 +72,24 @@ def test_gauss_case_runs_through_the_console_script_and_says_its_rule(tmp_path):
         assert ds.sizes["time"] == 3
 
 
-def test_split_rule_reaches_the_kernel_above_split_base_and_says_its_rule(tmp_path):
-    """slice_rule = "split": n equal strips cut at the zeros of the rolling slip (tests/unit/test_split_strips.py);
-    the kernel takes SPLIT_BASE + n, a resume never mixes it with the equal strips, and the output file names it."""
+@pytest.mark.parametrize("rule, n, base, says", [
+    ("split", 6, SPLIT_BASE, "6 equal strips, cut at the zeros of the rolling slip"),
+    ("log", 7, LOG_BASE, "7 nodes, generalized Gauss rules exact for the logarithm of the zeros of the rolling slip")])
+def test_rule_reaches_the_kernel_above_its_base_and_says_its_rule(tmp_path, rule, n, base, says):
+    """slice_rule = "split" (n equal strips cut at the zeros of the rolling slip, tests/unit/test_split_strips.py) and
+    "log" (n nodes in all, tests/unit/test_log_rule.py): the kernel takes SPLIT_BASE + n or LOG_BASE + n, a resume
+    never mixes the rule with the equal strips, and the output file names it."""
     import xarray as xr
 
-    split = case_from_dict(_data(slice_rule="split", n_slices=6), base=HUB.parent)
-    assert split.model_options()["n_slices"] == SPLIT_BASE + 6
-    assert split.fingerprint() != case_from_dict(_data(n_slices=6), base=HUB.parent).fingerprint()
-    case = tmp_path / "split.toml"
-    case.write_text(HUB.read_text().replace("n_slices = 8", 'n_slices = 6\nslice_rule = "split"'))
-    out = tmp_path / "s.nc"
-    run("simulate", str(case), "--duration", "0.2 ms", "--out", str(out), "--quiet")
+    case = case_from_dict(_data(slice_rule=rule, n_slices=n), base=HUB.parent)
+    assert case.model_options()["n_slices"] == base + n
+    assert case.fingerprint() != case_from_dict(_data(n_slices=n), base=HUB.parent).fingerprint()
+    path = tmp_path / f"{rule}.toml"
+    path.write_text(HUB.read_text().replace("n_slices = 8", f'n_slices = {n}\nslice_rule = "{rule}"'))
+    out = tmp_path / "o.nc"
+    run("simulate", str(path), "--duration", "0.2 ms", "--out", str(out), "--quiet")
     with xr.open_dataset(out) as ds:
-        assert ds.attrs["traction_quadrature"] == "6 equal strips, cut at the zeros of the rolling slip", ds.attrs
-        assert ds.sizes["time"] == 3
-
-
-def test_log_rule_reaches_the_kernel_above_log_base_and_says_its_rule(tmp_path):
-    """slice_rule = "log": n nodes in all (tests/unit/test_log_rule.py); the kernel takes LOG_BASE + n, a resume never
-    mixes it with the other rules, and the output file names it."""
-    import xarray as xr
-
-    log = case_from_dict(_data(slice_rule="log", n_slices=7), base=HUB.parent)
-    assert log.model_options()["n_slices"] == LOG_BASE + 7
-    assert log.fingerprint() != case_from_dict(_data(n_slices=7), base=HUB.parent).fingerprint()
-    case = tmp_path / "log.toml"
-    case.write_text(HUB.read_text().replace("n_slices = 8", 'n_slices = 7\nslice_rule = "log"'))
-    out = tmp_path / "l.nc"
-    run("simulate", str(case), "--duration", "0.2 ms", "--out", str(out), "--quiet")
-    with xr.open_dataset(out) as ds:
-        assert ds.attrs["traction_quadrature"].startswith("7 nodes, generalized Gauss rules"), ds.attrs
+        assert ds.attrs["traction_quadrature"] == says, ds.attrs
         assert ds.sizes["time"] == 3
 
 

@@ -79,6 +79,9 @@ the limiting-stress denominator, the film-elasticity factors) and integrates the
 ROLL_NODES Gauss–Jacobi nodes (its line-load factor (1 − ξ²)^0.246 as the weight, u^0.648 as in the strip
 loop); :func:`contact_traction_reference` evaluates the same rule one point at a time with the model functions
 (tests at 1e-10).  Issue 14, fifth pass: Gauss kernel −21 % (docs/dynamics.md).
+The log rule (n_slices = LOG_BASE + n, n = 6…8 nodes in all) takes the Gauss rule's path with other nodes
+(:func:`_log_node`): generalized Gauss rules exact for the logarithm of the rolling slip's zeros, where μ(s)·ŝ grows
+as that logarithm; 7 nodes within 1 % of the strip limit on the hub states (issue 14, twentieth pass).
 """
 
 from __future__ import annotations
