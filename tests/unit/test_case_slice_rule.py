@@ -41,13 +41,17 @@ def test_bad_rule_or_node_count_names_the_field(bad, field):
     assert e.value.field == field
 
 
-def test_example_gauss_case_differs_from_the_benchmark_case_only_by_the_rule():
-    """examples/hub-moment-gauss.toml (the hub study's case) is benchmark case (b) with the Gauss rule."""
-    gauss = tomllib.loads((ROOT / "examples" / "hub-moment-gauss.toml").read_text())
+@pytest.mark.parametrize("name, rule, lo, hi", [("hub-moment-gauss.toml", "gauss", 1, GAUSS_MAX),
+                                                ("hub-moment-log.toml", "log", LOG_MIN, LOG_MAX)])
+def test_example_study_cases_differ_from_the_benchmark_case_only_by_the_rule(name, rule, lo, hi):
+    """examples/hub-moment-gauss.toml (the hub study's case) and examples/hub-moment-log.toml are benchmark case (b)
+    with the Gauss rule and the log rule."""
+    case = tomllib.loads((ROOT / "examples" / name).read_text())
     base = tomllib.loads(HUB.read_text())
-    assert {k: v for k, v in gauss.items() if k not in ("slice_rule", "n_slices")} == \
+    assert {k: v for k, v in case.items() if k not in ("slice_rule", "n_slices")} == \
         {k: v for k, v in base.items() if k != "n_slices"}
-    assert gauss["slice_rule"] == "gauss" and 1 <= gauss["n_slices"] <= GAUSS_MAX
+    assert case["slice_rule"] == rule and lo <= case["n_slices"] <= hi
+    case_from_dict(case, base=HUB.parent)  # (a valid case)
 
 
 def test_console_script_refuses_a_bad_rule_in_one_line(tmp_path):
