@@ -144,3 +144,29 @@ def test_physical_fluid_curve_fast_path():
                                  fluid_curve=(mu0, mu_max, s_max, mu_inf))
     assert fit[0] == pytest.approx(phys[0], rel=1e-9)  # the peak is reproduced
     assert fit[1] == pytest.approx(mu_inf, rel=1e-9)
+
+
+@pytest.mark.parametrize("slices", ["1000006", "2000007"])
+def test_console_script_refuses_strip_counts_that_are_other_rules_codes(slices):
+    """The kernel reads SPLIT_BASE + n and LOG_BASE + n as its other quadrature rules: a strip count there would
+    silently change the rule, so the installed console script refuses it in one line naming the option (exit 2)."""
+    from _cli import run
+
+    p = run("lubrication", "hub-seed001-row", "--fa", "3000 N", "--speed", "1000 rpm", "--slices", slices, check=False)
+    assert p.returncode == 2, p.stderr
+    lines = [ln for ln in p.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and "--slices" in lines[0] and "Traceback" not in p.stderr, p.stderr
+
+
+def test_library_entries_refuse_strip_counts_that_are_other_rules_codes():
+    from bearingsim.contact.slices import LOG_BASE, SPLIT_BASE, STRIPS_MAX
+
+    b = load_bearing("hub-seed001-row")
+    res = solve(b, Loads(fa=3000.0), 1000 * math.pi / 30)
+    for n in (SPLIT_BASE + 6, LOG_BASE + 7, STRIPS_MAX + 1):
+        with pytest.raises(InputError) as e:
+            lubrication_report(res, "hub-grease-base-oil", 333.15, n_slices=n)
+        assert e.value.field == "n_slices"
+    with pytest.raises(InputError) as e:
+        traction_vs_slide_roll("iso-vg-68", 333.15, 1000.0, 0.005, 0.05, 2.3e11, 2.0, [0.01], n_slices=LOG_BASE + 7)
+    assert e.value.field == "n_slices"

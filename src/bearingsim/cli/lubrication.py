@@ -73,8 +73,10 @@ def lubrication(
     sigma = parse_quantity(roughness, "length", "--roughness")
     if sigma < 0:
         raise InputError("--roughness", "must be >= 0", 'e.g. "0.05 um"')
-    if slices < 1:
-        raise InputError("--slices", f"must be >= 1, got {slices}", "e.g. 10")
+    from ..contact.slices import STRIPS_MAX  # (larger codes are the kernel's other rules)
+
+    if not 1 <= slices <= STRIPS_MAX:
+        raise InputError("--slices", f"must lie in 1..{STRIPS_MAX}, got {slices}", "e.g. 10")
     flow = _parse_flow(oil_flow) if oil_flow is not None else None
     if oil_fraction is not None and not (math.isfinite(oil_fraction) and 0.0 <= oil_fraction <= 1.0):
         raise InputError("--oil-fraction", f"must lie in [0, 1], got {oil_fraction!r}", "e.g. 0.001")
