@@ -151,9 +151,9 @@ def test_two_sided_table_is_symmetric_and_integrates_its_moments(n):
 
 def test_smallest_rows_have_their_closed_forms():
     """One node, exact for 1 and ln t: weight 1 and ln t₁ = −1, t₁ = 1/e; two symmetric nodes, exact for
-    ln t + ln(1 − t): 2·½ ln(t(1 − t)) = −2, t(1 − t) = e⁻² (the comment block of the tables).  To 2e-16: the
-    table's 1/e, 0.36787944117144245, is 2 ulp above the rounded 1/e (as the least-squares solve left it)."""
-    assert S._LOG1_X[1, 0] == pytest.approx(math.exp(-1.0), abs=2e-16)
+    ln t + ln(1 − t): 2·½ ln(t(1 − t)) = −2, t(1 − t) = e⁻² (the comment block of the tables); the table's 1/e is
+    the rounded 1/e."""
+    assert S._LOG1_X[1, 0] == math.exp(-1.0)
     assert S._LOG1_W[1, 0] == 1.0
     for t in S._LOG2_X[2, :2]:
         assert t * (1.0 - t) == pytest.approx(math.exp(-2.0), abs=1e-16)
