@@ -275,8 +275,11 @@ def test_nearest_slip_zero_special_cases():
     sig2 = 2.0 / (curv * a * a)  # aa = 1
     xb, d = S.nearest_slip_zero(0.25, -0.6, sig2, a, curv)
     assert xb == pytest.approx(0.3, abs=1e-14) and d == pytest.approx(0.4, rel=1e-13)
-    xb, d = S.nearest_slip_zero(1.5, 1.0, 0.0, a, curv)  # root −1.5
-    assert (xb, d) == (-1.0, 0.5)
+    xb, d = S.nearest_slip_zero(1.5, 1.0, 0.0, a, curv)  # root −1.5 (the field scaled first: to rounding)
+    assert xb == -1.0 and d == pytest.approx(0.5, rel=1e-15)
+    # the same fields 1e-160 times weaker (σ1² would underflow unscaled): the same zeros
+    assert S.nearest_slip_zero(1.5e-160, 1e-160, 0.0, a, curv) == pytest.approx((xb, d), rel=1e-15)
+    assert S.nearest_slip_zero(0.25e-160, -0.6e-160, sig2 * 1e-160, a, curv) == pytest.approx((0.3, 0.4), rel=1e-13)
 
 
 # --------------------------------------------------------------------------- 4. kernel against its reference

@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from bearingsim.contact import hertz
@@ -84,9 +84,11 @@ def test_uniform_sliding_constant_mu_gives_mu_q(k):
 
 @settings(max_examples=60, deadline=None)
 @given(st.floats(-1.0, 1.0), st.floats(-2.0, 2.0), st.floats(-50.0, 50.0), st.floats(-300.0, 300.0))
+@example(2.373207236475156e-158, 2.373207236475156e-158, 2.373207236475156e-158, -1.0)  # (σ1² underflowed: the CI)
 def test_rolling_slip_zeros_are_the_sign_changes(sig0, sig1, sig2, curv):
     """The zeros returned are zeros of g(ξ) = σ0 + σ1 ξ + σ2 δ(aξ), and g keeps its sign between them
-    (checked on a dense grid), so each sub-interval has one sign of the rolling slip."""
+    (checked on a dense grid), so each sub-interval has one sign of the rolling slip — whatever the field's scale
+    (a field of 1e-158 m/s once lost its zeros to an underflowing σ1²)."""
     a = 1.8e-3
     nr, z1, z2 = S.rolling_slip_zeros(sig0, sig1, sig2, a, curv)
 

@@ -1101,6 +1101,13 @@ def rolling_slip_zeros(sig0, sig1, sig2, a, curv):
     r2 = 2.0
     if scale == 0.0:
         return 0, 0.0, 0.0
+    # the zeros do not change with the field's scale: taken on σ/scale, so that σ1² cannot underflow (|σ| ≲ 1e-150)
+    inv = 1.0 / scale
+    sig0 *= inv
+    sig1 *= inv
+    sig2 *= inv
+    aa *= inv
+    scale = 1.0
     if abs(aa) <= 1e-12 * scale:
         if sig1 != 0.0:
             r1 = -sig0 / sig1
@@ -1265,6 +1272,10 @@ def nearest_slip_zero(sig0, sig1, sig2, a, curv):
     d = math.inf
     if scale == 0.0:
         return xb, d
+    aa /= scale  # (the zeros do not change with the field's scale; σ1² cannot underflow, as in rolling_slip_zeros)
+    sig1 /= scale
+    sig0 /= scale
+    scale = 1.0
     if abs(aa) <= 1e-12 * scale:
         if sig1 != 0.0:
             r = -sig0 / sig1
