@@ -76,12 +76,6 @@ def contact_at_jones_kinematics(lub, q, a, b, r_dev, d, dm, alpha_i, alpha_o, om
     return out, float(np.linalg.norm(e)), float(np.linalg.norm(s))
 
 
-def _check_strips(n_slices) -> None:
-    """n_slices [-] a count of equal strips, 1..STRIPS_MAX (the kernel reads larger codes as its other rules)."""
-    if isinstance(n_slices, bool) or not isinstance(n_slices, int) or not 1 <= n_slices <= S.STRIPS_MAX:
-        raise InputError("n_slices", f"must be an integer in 1..{S.STRIPS_MAX}, got {n_slices!r}", "e.g. 10")
-
-
 def lubrication_report(result, lubricant, temperature: float, roughness: float = 0.1e-6, n_slices: int = 10,
                        model: str = "mixed", fluid_model: str = "physical", starvation_factor: float = 1.0) -> dict:
     """Per loaded ball and contact: film, Λ, regime, traction and power at Jones' kinematics (all SI).
@@ -97,7 +91,7 @@ def lubrication_report(result, lubricant, temperature: float, roughness: float =
     lub_obj.check_temperature(temperature)
     if not (math.isfinite(roughness) and roughness >= 0):
         raise InputError("roughness", f"must be finite and >= 0, got {roughness!r}", 'e.g. "0.1 um"')
-    _check_strips(n_slices)
+    S.check_strip_count(n_slices)
     row_bearings = [r.bearing for r in result.bearing.rows]  # the rows protocol (bearingsim.geometry)
     balls = result.balls
     omega = float(result.speed)  # signed, as the ball speeds of ball_table
@@ -171,7 +165,7 @@ def traction_vs_slide_roll(lubricant, temperature: float, load: float, rx: float
     """
     if not (math.isfinite(load) and load > 0):
         raise InputError("load", f"must be positive, got {load!r}", "")
-    _check_strips(n_slices)
+    S.check_strip_count(n_slices)
     if not (math.isfinite(rolling_speed) and rolling_speed > 0):
         raise InputError("rolling_speed", f"must be positive, got {rolling_speed!r}", "")
     options.setdefault("model", "fluid")

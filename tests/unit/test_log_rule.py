@@ -181,7 +181,7 @@ def test_log_counts_are_fixed_per_count_of_zeros(n, nroot, za, zb):
     are dealt."""
     z1, z2 = min(za, zb), max(za, zb)
     assume(nroot < 2 or z1 < z2)
-    counts = tuple(S._log_counts(n, nroot, z1, z2))
+    counts = tuple(S._log_counts(n, nroot))
     assert counts == _counts_of(n, nroot), counts
     if nroot == 0:
         assert counts[0] <= S.GAUSS_MAX
@@ -197,7 +197,7 @@ def test_log_counts_are_fixed_per_count_of_zeros(n, nroot, za, zb):
 @pytest.mark.parametrize("n", [n for n in NODES if n % 2])
 def test_every_node_is_used_with_one_zero(n):
     """LOG_BASE + n: "n nodes in all" (slices.py) — with one zero of the rolling slip, too."""
-    counts = S._log_counts(n, 1, 0.2, 0.0)
+    counts = S._log_counts(n, 1)
     assert sum(counts) == n, counts
     assert all(_node(S._log_node.py_func, m, 1, 0.2, 0.0, counts)[1] > 0.0 for m in range(n))
 
@@ -506,7 +506,7 @@ def test_pure_spin_constant_mu_is_exact(n):
     stretches [−1, 0] and [0, 1] (_log_counts), and on each the integrand (1 − ξ²)|ξ| of degree 3 ≤ 2·3 − 2 is
     integrated exactly by the one-sided rule: the moment about the normal is −3μQa/8 (the closed form of the strip
     model's docstring, seed 001 eq. 1 with constant μ), the force zero."""
-    assert min(S._log_counts(n, 1, 0.0, 0.0)[:2]) >= 3
+    assert min(S._log_counts(n, 1)[:2]) >= 3
     mu = 0.08
     out = _flat(0.0, 0.0, 50.0, _constant_mu(mu), S.LOG_BASE + n)
     assert out[5] == pytest.approx(-3 * mu * Q * HC.a / 8, rel=1e-12), "pure spin: −3μQa/8 (seed 001 eq. 1)"
@@ -519,7 +519,7 @@ def test_off_centre_zero_constant_mu_is_exact(n, z):
     """Spin and sliding on a flat contact, constant μ, the rolling slip spin·a(ξ − z) with its zero at ξ = z: with
     ≥ 3 nodes on each stretch the closed forms of seed 001 eq. 1's load density (3Q/4)(1 − ξ²) are exact to 1e-12:
         F_y = μQ(3z − z³)/2,  M_z = −(3μQa/8)(1 − z²)²,  power = (3μQ/4)|spin| a (1/2 + z² − z⁴/6)."""
-    assert min(S._log_counts(n, 1, z, z)[:2]) >= 3
+    assert min(S._log_counts(n, 1)[:2]) >= 3
     mu, spin = 0.08, 50.0
     out = _flat(0.0, z * spin * HC.a, spin, _constant_mu(mu), S.LOG_BASE + n)
     assert out[1] == pytest.approx(mu * Q * (3 * z - z**3) / 2, rel=1e-12), "F_y = μQ(3z − z³)/2 (seed 001 eq. 1)"
@@ -575,7 +575,7 @@ def test_the_rule_takes_one_pass_of_the_lanes():
 def _stretches(n, nroot, z1, z2):
     """[(lo, hi, zero_lo, zero_hi, [(ξ, w), …])] of the log rule's nodes (_log_node.py_func) on each stretch between
     the zeros, in the kernel's order m = 0, 1, …; and the nodes m past the dealt ones."""
-    counts = S._log_counts(n, nroot, z1, z2)
+    counts = S._log_counts(n, nroot)
     edges = [-1.0] + [z1, z2][:nroot] + [1.0]
     out, m = [], 0
     for k, nk in enumerate(counts[:nroot + 1]):
@@ -603,7 +603,7 @@ def test_log_nodes_with_zeros_integrate_each_stretch_to_the_rules_degree(n, nroo
     z1, z2 = min(za, zb), max(za, zb)
     assume(nroot < 2 or z2 - z1 > 1e-9)
     stretches, rest = _stretches(n, nroot, z1, z2)
-    counts = S._log_counts(n, nroot, z1, z2)
+    counts = S._log_counts(n, nroot)
     total = []
     for m in range(n):
         xi, w = _node(S._log_node.py_func, m, nroot, z1, z2, counts)

@@ -1247,7 +1247,7 @@ LOG_SINH_FLOOR = 0.05
 
 
 @njit(cache=True, error_model="numpy", _nrt=False, fastmath={"contract"})
-def _log_counts(n, nroot, z1, z2):
+def _log_counts(n, nroot):
     """Nodes (n0, n1, n2) [-] of the log rule (LOG_MIN ≤ n ≤ LOG_MAX, as the entry points check) on the stretches of
     ξ ∈ [−1, 1] between the nroot zeros of the rolling slip: all n on the axis without a zero; n − n // 2 below one
     zero and n // 2 above it; two on each outer stretch and n − 4 between two zeros.  Fixed per count of zeros, so the
@@ -1275,7 +1275,6 @@ def nearest_slip_zero(sig0, sig1, sig2, a, curv):
     aa /= scale  # (the zeros do not change with the field's scale; σ1² cannot underflow, as in rolling_slip_zeros)
     sig1 /= scale
     sig0 /= scale
-    scale = 1.0
     if abs(aa) <= 1e-12 * scale:
         if sig1 != 0.0:
             r = -sig0 / sig1
@@ -1372,7 +1371,7 @@ def _gauss_quadrature(ng, log_rule, q, a, b, curv, nx, ny, nz, mx, my, mz, d0bx,
     n0 = n1 = n2 = 0
     xb = ysh = u0 = du = 0.0
     if log_rule:
-        n0, n1, n2 = _log_counts(ng, nroot, z1, z2)
+        n0, n1, n2 = _log_counts(ng, nroot)
         if nroot == 0:  # the sinh map's constants (_log_node)
             xb, dz = nearest_slip_zero(sig0, sig1, sig2, a, curv)
             ysh = max(dz, LOG_SINH_FLOOR)
@@ -1573,10 +1572,17 @@ def deformed_surface_radius(ball_diameter: float, groove_radius: float) -> float
     return 2.0 * groove_radius * ball_diameter / (2.0 * groove_radius + ball_diameter)
 
 
+def check_strip_count(n_slices) -> None:
+    """Raise InputError unless n_slices [-] is an integer in 1..STRIPS_MAX (the kernel reads larger codes as its
+    other rules: SPLIT_BASE + n, LOG_BASE + n)."""
+    if not isinstance(n_slices, (int, np.integer)) or isinstance(n_slices, bool) or not 1 <= n_slices <= STRIPS_MAX:
+        raise InputError("n_slices", f"must be an integer in 1..{STRIPS_MAX}, got {n_slices!r}", "use e.g. 10 slices")
+
+
 def check_contact_inputs(q, a, b, vectors: dict, n_slices) -> None:
-    """Raise InputError for bad kernel input (NaN velocities, n < 1, negative load); the kernel does not check."""
-    if not isinstance(n_slices, (int, np.integer)) or isinstance(n_slices, bool) or n_slices < 1:
-        raise InputError("n_slices", f"must be an integer >= 1, got {n_slices!r}", "use e.g. 10 slices")
+    """Raise InputError for bad kernel input (NaN velocities, a count outside 1..STRIPS_MAX, negative load); the kernel
+    does not check."""
+    check_strip_count(n_slices)
     for name, v in (("load", q), ("a", a), ("b", b)):
         if not (math.isfinite(v) and v >= 0):
             raise InputError(name, f"must be finite and >= 0, got {v!r}", "")
@@ -1609,8 +1615,6 @@ def contact_traction_checked(q, a, b, r_dev, centre, normal, major, ball_centre,
         n_slices = LOG_BASE + n_slices
     elif quadrature != "strips":
         raise InputError("quadrature", f"unknown quadrature {quadrature!r}", "use strips, gauss or log")
-    elif n_slices > STRIPS_MAX:  # (larger codes select the other rules inside the kernel)
-        raise InputError("n_slices", f"at most {STRIPS_MAX} equal strips, got {n_slices}", "use e.g. 10 slices")
     lub = np.asarray(lub, dtype=float)
     if lub.shape != (L_SIZE,) or not np.all(np.isfinite(lub)):
         raise InputError("lub", "must be the finite vector built by pack_lubrication_parameters", "")
