@@ -95,12 +95,23 @@ def test_select_takes_the_largest_hot_balls(seed, nmax, spread):
     blk = np.array([ly.N_RING + 9 * b for b in range(nb)], dtype=np.int64)
     sb = np.empty(nb)
     mask = np.zeros(nb, np.int8)
-    nact, rem = mrm.select(r2, blk, 9, nmax, sb, mask)
+    rank = np.full(nmax, -1, np.int64)
+    nact, rem = mrm.select(r2, blk, 9, nmax, sb, mask, rank)
     sums = np.array([r2[o:o + 9].sum() for o in blk])
     order = np.argsort(-sums, kind="stable")
     want = [b for b in order if sums[b] > 9.0 * mrm.HOT][:nmax]
     assert sorted(np.flatnonzero(mask)) == sorted(want) and nact == len(want)
+    assert list(rank[:nact]) == want  # largest error first
     assert rem == pytest.approx(r2.sum() - sums[want].sum(), rel=1e-12, abs=1e-12 * r2.sum())
+    # the groups: ranks dealt in turn (0, 2, 4 … to group 0), each group's balls in ball order, every ball once
+    gmask = np.full((2, nb), 7, np.int8)
+    gact = np.full((2, max(nmax, 1)), -1, np.int64)
+    gn = np.full(2, -1, np.int64)
+    mrm.split_groups(rank, nact, nb, gmask, gact, gn)
+    for g in range(2):
+        mine = sorted(want[g::2])
+        assert list(gact[g, :gn[g]]) == mine and sorted(np.flatnonzero(gmask[g])) == mine, (g, want)
+    assert gn.sum() == nact and not (gmask[0] & gmask[1]).any()
 
 
 @settings(max_examples=50, deadline=None)
@@ -200,3 +211,37 @@ def test_dense_output_of_refined_balls_follows_their_micro_steps(hub):
         ev = lambda y: (np.linalg.norm(y[vel] - fine.y[vel], axis=1) / np.linalg.norm(fine.y[vel], axis=1)).max()  # noqa: E731
         assert ev(big) > 3.0 * ev(got), (dt, ev(got), ev(big))
 
+
+
+@pytest.mark.parametrize("orbit", ["free", "held"])
+@settings(max_examples=12, deadline=None)
+@given(seed=st.integers(0, 2**31 - 1), nact=st.integers(0, 8))
+def test_f_in_two_parts_is_f_bit_for_bit(orbit, seed, nact):
+    """f at a refined step's end in two parts (:func:`~bearingsim.dynamics.forces.rhs_split`): the raceway contacts
+    of the balls not refined beside the refinement, at the large step's state, then the rest once the refined balls'
+    states are in — the same numbers as :func:`~bearingsim.dynamics.forces.rhs_args` at the final state bit for bit,
+    the ring record that ROS34PW2 derives its ring columns from (memo row n_balls) included.  The refined balls'
+    states differ between the two calls (the first must not read them)."""
+    import dataclasses
+
+    c = dataclasses.replace(load_case(EXAMPLES / "hub-moment-50hz.toml"), ball_orbit=orbit)
+    m, ls, y0, _ = R.build(c)
+    rng = np.random.default_rng(seed)
+    y = y0 * (1.0 + 1e-4 * rng.standard_normal(y0.size))  # every contact loaded and sliding differently
+    act = np.zeros(m.n_balls, np.int8)
+    act[rng.choice(m.n_balls, nact, replace=False)] = 1
+    y_large = y.copy()  # the refined balls elsewhere during the first part
+    for b in np.flatnonzero(act):
+        o = ly.N_RING + ly.N_BALL * b
+        y_large[o:o + 9] *= 1.0 + 1e-3 * rng.standard_normal(9)
+    t = 1.3e-3
+    a_full = fo.args_of(m, ls)
+    full = np.zeros_like(y)
+    fo.rhs_args(t, y, full, a_full)
+    a_split = fo.args_of(m, ls)
+    work = fo.split_work(a_split)
+    two = np.full_like(y, np.nan)
+    fo.rhs_split(t, y_large, two, a_split, act, fo.PHASE_OTHERS, work)
+    fo.rhs_split(t, y, two, a_split, act, fo.PHASE_REST, work)
+    assert np.array_equal(two, full), np.abs(two - full).max()
+    assert np.array_equal(a_split[10], a_full[10])  # the outer-contact memo and the ring record

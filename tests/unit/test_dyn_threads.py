@@ -43,7 +43,7 @@ _SCRIPT = textwrap.dedent("""
             for k, t in ((2, 1e-5), (3, 2e-5)):
                 st.advance(t)
                 assert np.array_equal(st.y, d[name + ":y"][k]), (name, t, np.abs(st.y - d[name + ":y"][k]).max())
-    # the multirate refinement on 2 threads (forces.rhs_masked_threaded), from the hub's moment zero crossing
+    # the multirate refinement on 2 threads (its two groups of balls: multirate.refine_groups_threaded), from the hub's moment zero crossing
     case = load_case("examples/hub-moment-50hz.toml")
     m, ls, _, _ = R.build(case)
     st = R.Stepper(m, ls, d["zc:y0"].copy(), t=float(d["zc:t0"]), h=float(d["zc:h0"]), tol=case.tolerance,

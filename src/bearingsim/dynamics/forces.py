@@ -82,6 +82,7 @@ NCONTRIB = 15
 #: [22:28] the record of the inner contact's reaction (layout ``MEMO_*``, ``MR_*`` in :mod:`.layout`, with the
 #: ring's row after the balls')
 MEMO_W = ly.MEMO_W
+PHASE_ALL, PHASE_MASKED, PHASE_OTHERS, PHASE_REST = ly.PHASE_ALL, ly.PHASE_MASKED, ly.PHASE_OTHERS, ly.PHASE_REST
 
 
 @njit(cache=True)
@@ -326,7 +327,7 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
 
 @njit(cache=True, _nrt=False)
 def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc, memo, threads, work, active):
+                      diag, acc, memo, threads, work, active, phase=PHASE_ALL):
     """Every ball on its two raceways, and Newton–Euler for every ball.
 
     Inner raceway: the groove-curvature centre g in the ball's meridian plane of the tilted, displaced
@@ -385,10 +386,11 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
         g1 = gp[ly.G_GX + 1]
         g2 = gp[ly.G_GX + 2]
         for k in range(nb):
-            if active.shape[0] > 0 and active[k] == 0:
-                for i in range(NCONTRIB):
-                    contrib[k, i] = 0.0
-                continue
+            if phase != PHASE_ALL and (active[k] == 0) != (phase == PHASE_OTHERS):
+                if phase == PHASE_MASKED:
+                    for i in range(NCONTRIB):
+                        contrib[k, i] = 0.0
+                continue  # (PHASE_REST: its contribution is the PHASE_OTHERS call's, kept in the work array)
             for i in range(NCONTRIB):
                 ck[i] = 0.0
             # ---- BEGIN copy of the body of _one_ball (kept identical: bitwise the same as the threaded path)
@@ -526,8 +528,8 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
             # ---- END copy
             for i in range(NCONTRIB):
                 contrib[k, i] = ck[i]
-    if active.shape[0] > 0:
-        return  # (masked: the rings' reactions are not read)
+    if phase == PHASE_MASKED or phase == PHASE_OTHERS:
+        return  # (the rings' reactions are not read, or summed by the PHASE_REST call)
     # the reduction, serially in ball order (independent of the thread count)
     for k in range(nb):
         for i in range(3):
@@ -959,13 +961,14 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
     nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, threads)
     _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, np.empty(nw),
-         np.zeros(0, np.int8))
+         np.zeros(0, np.int8), PHASE_ALL)
 
 
 @njit(cache=True, _nrt=False)
-def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, work, active):
+def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, work, active,
+         phase):
     """The body of :func:`rhs`; work: float[RHS_WORK + cm.shape[1] + ball_work_size(...)] (every small array of the
-    equations is a view of it)."""
+    equations is a view of it); ``phase`` (:data:`PHASE_ALL` …) and ``active`` say which part is computed."""
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
     omega = speed_at(t, gp)
@@ -999,12 +1002,14 @@ def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag
     for i in range(18, 30 + NACC):  # fring, mring, fout, mout, acc start at zero
         work[i] = 0.0
     loads = work[36:41]
-    masked = active.shape[0] > 0  # (rhs_masked: the active balls' derivatives alone, nothing of the rings' and cages')
+    masked = phase == PHASE_MASKED  # (the active balls' derivatives alone, nothing of the rings' and cages')
     if not masked:
         loads_at(t, loadspec, loads)
     # ---- balls on the raceways
     balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, fring, mring, fout, mout,
-                      diag, acc, memo, threads, work[RHS_WORK + cm.shape[1]:], active)
+                      diag, acc, memo, threads, work[RHS_WORK + cm.shape[1]:], active, phase)
+    if phase == PHASE_OTHERS:
+        return
     # ---- cages: pockets (with elastic modes), land guidance, equations
     oc0 = ly.N_RING + ly.N_BALL * nb
     rmc = work[41:50].reshape((3, 3))
@@ -1052,7 +1057,7 @@ def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag
             fc[i] = 0.0
             mc[i] = 0.0
         cage_pockets(ci, y, dy, rows, ball_row, gp, cpar, cm, alpha, rcm, occ, vc, wc, fc, mc, fm, diag, want, acc,
-                     cwork, active)
+                     cwork, active if masked else active[:0])
         if masked:
             continue
         land_guidance(cpar, occ, vc, wc, c, ax, wring, cd, fc, mc, fring, mring, gp[ly.G_VREF], want, acc, cwork)
@@ -1137,24 +1142,33 @@ def rhs_args(t, y, dy, a):
 def rhs_masked(t, y, dy, a, active):
     """:func:`rhs_args` for the balls with active[k] ≠ 0 only (their raceway and pocket contacts): the other
     balls' derivatives and those of the rings and cages are not computed (the multirate refinement's right-hand side,
-    :mod:`.integrate.multirate`; on the hub case 0.6 µs and 1.9 µs per active ball, against 55 µs for all 32)."""
-    _rhs_masked(t, y, dy, a, active, False)
-
-
-@njit(cache=True)
-def rhs_masked_threaded(t, y, dy, a, active):
-    """:func:`rhs_masked` with the active balls on ``numba.get_num_threads()`` threads (the same result, bit for
-    bit)."""
-    _rhs_masked(t, y, dy, a, active, True)
-
-
-@njit(cache=True)
-def _rhs_masked(t, y, dy, a, active, threads):
+    :mod:`.integrate.multirate`; on the hub case 0.6 µs and 1.9 µs per active ball, against 55 µs for all 32).
+    Serial: on a threaded engine the refinement's groups of balls are the parallel work
+    (:func:`.integrate.multirate.refine_groups_threaded`)."""
     rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
-    nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, threads)
-    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), threads, np.empty(nw),
-         active)
+    nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, False)
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), False, np.empty(nw),
+         active, PHASE_MASKED)
+
+
+@njit(cache=True)
+def split_work(a):
+    """The work array that :func:`rhs_split`'s two calls share (as :func:`rhs` allocates it, one thread)."""
+    rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
+    nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
+    return np.empty(RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, False))
+
+
+@njit(cache=True)
+def rhs_split(t, y, dy, a, active, phase, work):
+    """:func:`rhs_args` in two calls on the same ``work`` (:func:`split_work`): ``phase`` = :data:`PHASE_OTHERS`
+    the raceway contacts of the balls with active[k] = 0, then :data:`PHASE_REST` everything else.  Between the
+    two, the active balls' states may still change (the multirate refinement runs beside the first call,
+    :mod:`.integrate.multirate`); the two give f bit for bit as :func:`rhs_args` does at the final state (the same
+    statements per ball, the reduction in ball order)."""
+    rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, False, work, active, phase)
 
 
 @njit(cache=True)

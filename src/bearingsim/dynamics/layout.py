@@ -194,3 +194,14 @@ def ball_offset(k: int) -> int:
 def cage_offset(n_balls: int, c: int = 0) -> int:
     """Index in the state of cage c's first value (``Model.cage_offset`` for c = 0)."""
     return N_RING + N_BALL * n_balls + N_CAGE * c
+
+
+# ---- the parts of one evaluation of the right-hand side (``phase`` of ``forces._rhs``)
+#: everything; the balls with active[k] ≠ 0 only (the multirate refinement's masked right-hand side,
+#: ``forces.rhs_masked``); the raceway contacts of the balls with active[k] = 0 only, into a work array kept for the
+#: next phase; the rest of the evaluation after that (the other balls, the cages, the rings, the reduction) — the
+#: last two make f in two parts (``forces.rhs_split``, run beside the refinement: ``integrate.multirate``)
+PHASE_ALL = 0
+PHASE_MASKED = 1
+PHASE_OTHERS = 2
+PHASE_REST = 3

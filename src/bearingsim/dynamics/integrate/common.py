@@ -40,42 +40,62 @@ NO_VECTORS = np.zeros((0, 2), dtype=np.int64)
 
 #: the most micro steps of one multirate refinement (:mod:`.multirate`): the dense output keeps their nodes
 MICRO_MAX = 48
-#: the dense output's state (:func:`dense_arrays`): where the number of micro nodes, their times, and the multirate
-#: refinement's memory (its next micro step [s], the large steps left without refinement) are
+#: the groups of refined balls of a step (:mod:`.multirate`), each on micro steps of its own (run on two threads
+#: when the engine is threaded; the same groups whatever the thread count)
+GROUPS = 2
+#: the dense output's state (:func:`dense_arrays`): where the groups' numbers of micro nodes, their times, and the
+#: multirate refinement's memory (each group's next micro step [s], the large steps left without refinement) are
 DST_NODES = 4
-DST_TIMES = 5
-DST_MR = DST_TIMES + MICRO_MAX + 1
+DST_TIMES = DST_NODES + GROUPS
+DST_MR = DST_TIMES + GROUPS * (MICRO_MAX + 1)
+
+
+@njit(cache=True, inline="always")
+def node_row(g, j):
+    """Row of :func:`dense_arrays`' states holding group g's micro node j (the state; f there in the next row)."""
+    return 4 + 2 * (g * (MICRO_MAX + 1) + j)
+
+
+@njit(cache=True, inline="always")
+def node_time(g, j):
+    """Index of group g's micro node j's time [s] in :func:`dense_arrays`' dense state."""
+    return DST_TIMES + g * (MICRO_MAX + 1) + j
 
 
 def dense_arrays(n: int) -> tuple[np.ndarray, np.ndarray]:
-    """The arrays of a dense-output run of ROS34PW2 (:func:`.ros34pw2.integrate`) for n states: float[4 + 2 (M + 1),
+    """The arrays of a dense-output run of ROS34PW2 (:func:`.ros34pw2.integrate`) for n states: float[4 + 2 G (M + 1),
     n] (y₀ and f(t₀, y₀) at the start of the last step, f at its end, then — when the last step refined some balls
-    (:mod:`.multirate`) — 1 on their states, and per node j of their micro steps the states and f there) and
-    float[5 + M + 1] (t₀ [s], the step controller's previous error (1 at the start, as in a call without dense
-    output), 1 after a rejected step, 1 when row 2 holds f at the current state, the number of micro nodes of the last
-    step (0: not refined), the nodes' times [s], the refinement's next micro step [s] and cool-down count, carried
-    from one call to the next); M = :data:`MICRO_MAX`.  With n = 0: no dense output
-    (:data:`NO_DENSE`)."""
-    dst = np.zeros(DST_MR + 2)
+    (:mod:`.multirate`) — the group number + 1 on their states, and per group and node j of its micro steps the
+    states and f there, :func:`node_row`) and float[4 + G + G (M + 1) + G + 1] (t₀ [s], the step controller's
+    previous error (1 at the start, as in a call without dense output), 1 after a rejected step, 1 when row 2 holds f
+    at the current state, per group the number of micro nodes of the last step (0: not refined), the nodes' times
+    [s] (:func:`node_time`), the groups' next micro steps [s] and the cool-down count, carried from one call to the
+    next); M = :data:`MICRO_MAX`, G = :data:`GROUPS`.  With n = 0: no dense output (:data:`NO_DENSE`)."""
+    dst = np.zeros(DST_MR + GROUPS + 1)
     dst[1] = 1.0
-    return np.zeros((4 + 2 * (MICRO_MAX + 1) if n else 3, n)), dst
+    return np.zeros((4 + 2 * GROUPS * (MICRO_MAX + 1) if n else 3, n)), dst
 
 
 @njit(cache=True)
 def dense_state(dns: np.ndarray, dst: np.ndarray, t1: float, y1: np.ndarray, t: float) -> np.ndarray:
     """The state at t [s] in the last step [dst[0], t1] of a dense-output run (ending at y1): :func:`hermite_one` on
-    the step's ends, and on the refined balls' states (:mod:`.multirate`) the same interpolant on the micro step that
-    holds t.  (Compiled: 1.8 µs a sample on the hub case, against 16.5 µs in numpy.)"""
+    the step's ends, and on the refined balls' states (:mod:`.multirate`) the same interpolant on their group's micro
+    step that holds t.  (Compiled: 1.8 µs a sample on the hub case, against 16.5 µs in numpy.)"""
     n = y1.shape[0]
     y = np.empty(n)
-    nodes = int(dst[DST_NODES]) if dst.shape[0] > DST_NODES else 0
-    j = 0  # the last node at or before t (the first one before them all)
-    while j < nodes - 2 and dst[DST_TIMES + j + 1] <= t:
-        j += 1
+    js = np.zeros(GROUPS, np.int64)  # per group the last node at or before t (the first one before them all)
+    nodes = np.zeros(GROUPS, np.int64)
+    for g in range(GROUPS):
+        nodes[g] = int(dst[DST_NODES + g]) if dst.shape[0] > DST_NODES + g else 0
+        while js[g] < nodes[g] - 2 and dst[node_time(g, js[g] + 1)] <= t:
+            js[g] += 1
     for i in range(n):
-        if nodes >= 2 and dns[3, i] != 0.0:
-            y[i] = hermite_one(dst[DST_TIMES + j], dns[4 + 2 * j, i], dns[5 + 2 * j, i], dst[DST_TIMES + j + 1],
-                               dns[6 + 2 * j, i], dns[7 + 2 * j, i], t)
+        g = int(dns[3, i]) - 1 if dns.shape[0] > 3 else -1
+        if g >= 0 and nodes[g] >= 2:
+            j = js[g]
+            r = node_row(g, j)
+            y[i] = hermite_one(dst[node_time(g, j)], dns[r, i], dns[r + 1, i], dst[node_time(g, j + 1)],
+                               dns[r + 2, i], dns[r + 3, i], t)
         else:
             y[i] = hermite_one(dst[0], dns[0, i], dns[1, i], t1, y1[i], dns[2, i], t)
     return y
@@ -84,6 +104,12 @@ def dense_state(dns: np.ndarray, dst: np.ndarray, t1: float, y1: np.ndarray, t: 
 @njit(cache=True)
 def no_masked(t, y, dy, args, active):
     """The masked right-hand side of a problem without one (:mod:`.multirate` is off there): nothing."""
+    return
+
+
+@njit(cache=True)
+def no_split(t, y, dy, args, active, phase, work):
+    """The two-part right-hand side of a problem without one (the integrator then evaluates f whole): nothing."""
     return
 
 

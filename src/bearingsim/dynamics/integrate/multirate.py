@@ -28,6 +28,16 @@ from an interpolant of the large step):
    up: the large step is rejected and the next :data:`COOL` steps are not refined.
 4. The active balls' states at t + H are replaced by the refined ones.
 
+Two groups (issue 14, twenty-first pass).  The active balls are dealt to :data:`~.common.GROUPS` = 2 groups in turn
+by rank (:func:`split_groups`), each refined on micro steps of its own (its own error control, next micro step and
+dense-output nodes; :func:`refine_groups`), so that on a threaded engine the two run on two threads in one parallel
+region per refinement (:func:`refine_groups_threaded`) — with the first part of f at the step's end beside them
+(the raceway contacts of the balls not refined, which the refinement does not change:
+:func:`bearingsim.dynamics.forces.rhs_split`).  The groups are the same whatever the thread count, so one and two
+threads give the same trajectory bit for bit.  Before, the refinement's masked right-hand sides ran on the threads
+ball by ball (≈ 3 balls, ≈ 8 µs of work per call: the parallel region's entry ate the gain) and were ≈ 1/3 of a
+step's time on either thread count.
+
 What it leaves out: the rings and cages feel the active balls' forces of the large step, not of the refined
 trajectories (the coupling error of the method).  Measured (docs/dynamics.md): the ring displacement's deviation
 from a tol-1e-8 run over the first 5 ms 1.32e-5 / 9.9e-6 / 5.4e-6 of the ranges against 8.7e-6 / 6.6e-6 /
@@ -41,9 +51,11 @@ refined balls on them.
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
-from .common import DST_NODES, DST_TIMES, MICRO_MAX, accept_factor, error_scale, reject_factor
+from .. import threads as _threads  # noqa: F401 - numba's threading layer, chosen and started
+from ..layout import PHASE_OTHERS
+from .common import DST_NODES, MICRO_MAX, accept_factor, error_scale, node_row, node_time, reject_factor
 from .jacobian import perturbed
 from .linalg import block_w_inverse
 
@@ -131,12 +143,14 @@ def refine_work(n, nmax):
 
 @njit
 def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hm0, h_min, tab, work, count,
-           dns, dst):
+           dns, dst, g, yo):
     """The active balls ``act`` (``mask`` 1 on them) again over [t, t + hh] [s] with ROS34PW2 steps of their own
     (module docstring, step 3), starting with the step hm0; y1's active states ← the result.  ``tab``: ROS34PW2's
     constants (a21, a31, a32, a41, a42, a43, α2, α3, α4, c21, c31, c32, c41, c42, c43, m1…m4, e1…e4, γ); ``count``
     (float[1]) += the masked right-hand sides evaluated.  With ``dns`` rows for the nodes
-    (:func:`.common.dense_arrays`; no rows: none kept) the micro steps' nodes are kept for the dense output.
+    (:func:`.common.dense_arrays`; no rows: none kept) the micro steps' nodes are kept for the dense output as group
+    g's (its states marked g + 1 in dns[3]: the caller clears that row first).  When done, yo's active states ← the
+    result (y0, f0, y1 are only read, so that the groups of a step can run at the same time: :func:`refine_groups`).
     Returns (done, the next micro step proposed)."""
     yf, ff, ya, ks, tv, yn, jt, winvb, wm, ybase, yt2, ft2, fa = work
     amat = np.zeros((4, 3))  # a_sq (stage s from the earlier k_q), c_sq, α_s
@@ -155,12 +169,10 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
     hi = blk[blk.shape[0] - 1] + 9
     keep = dns.shape[0] > 4 and dns.shape[1] == n
     if keep:
-        for i in range(n):
-            dns[3, i] = 0.0
         for a in range(na):
             o = blk[act[a]]
             for i in range(9):
-                dns[3, o + i] = 1.0
+                dns[3, o + i] = g + 1.0
     for a in range(na):
         b = act[a]
         if turn.shape[0] > 0:
@@ -210,13 +222,14 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
                     block_w_inverse(jt[a], -gam * hs, wm, winvb[a])
                 prev_rej = False
             have_f = True
-            if keep and nodes < MICRO_MAX + 1 and (nodes == 0 or dst[DST_TIMES + nodes - 1] < tau):
-                dst[DST_TIMES + nodes] = tau
+            if keep and nodes < MICRO_MAX + 1 and (nodes == 0 or dst[node_time(g, nodes - 1)] < tau):
+                dst[node_time(g, nodes)] = tau
+                r = node_row(g, nodes)
                 for a in range(na):
                     o = blk[act[a]]
                     for i in range(9):
-                        dns[4 + 2 * nodes, o + i] = ya[o + i]
-                        dns[5 + 2 * nodes, o + i] = fa[o + i]
+                        dns[r, o + i] = ya[o + i]
+                        dns[r + 1, o + i] = fa[o + i]
                 nodes += 1
         # stage 1
         for a in range(na):
@@ -287,16 +300,17 @@ def refine(funm, args, mask, act, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol,
     for a in range(na):
         o = blk[act[a]]
         for i in range(9):
-            y1[o + i] = ya[o + i]
+            yo[o + i] = ya[o + i]
     if keep:
-        dst[DST_NODES] = float(nodes)  # (the end node, f at t + hh, is the caller's: .ros34pw2.integrate)
+        dst[DST_NODES + g] = float(nodes)  # (the end node, f at t + hh, is the caller's: .ros34pw2.integrate)
     return True, hm
 
 
 @njit(cache=True, _nrt=False)
-def select(r2, blk, nbk, nmax, sb, mask):
+def select(r2, blk, nbk, nmax, sb, mask, rank):
     """The active balls of a step (module docstring, step 2) from the scaled squared errors ``r2`` of its states:
-    mask[b] ← 1 on them, sb[b] ← each ball's sum; returns (their number, the sum over the other states)."""
+    mask[b] ← 1 on them, rank[0:number] ← them, largest error first, sb[b] ← each ball's sum; returns (their number,
+    the sum over the other states)."""
     nb = blk.shape[0]
     tot = 0.0
     for i in range(r2.shape[0]):
@@ -320,6 +334,76 @@ def select(r2, blk, nbk, nmax, sb, mask):
         if bb < 0:
             break
         mask[bb] = 1
+        rank[nact] = bb
         rem -= sb[bb]
         nact += 1
     return nact, max(rem, 0.0)
+
+
+@njit(cache=True, _nrt=False)
+def split_groups(rank, nact, nb, gmask, gact, gn):
+    """The active balls ``rank[0:nact]`` (largest error first) dealt to the :data:`~.common.GROUPS` groups in turn
+    (rank r to group r mod G, so that the groups carry similar errors): gmask[g, b] ← 1 on group g's balls,
+    gact[g, 0:gn[g]] ← them in ball order (the order :func:`refine` and the masked right-hand side visit them)."""
+    ng = gmask.shape[0]
+    for g in range(ng):
+        gn[g] = 0
+        for b in range(nb):
+            gmask[g, b] = 0
+    for r in range(nact):
+        gmask[r % ng, rank[r]] = 1
+    for g in range(ng):
+        for b in range(nb):
+            if gmask[g, b] == 1:
+                gact[g, gn[g]] = b
+                gn[g] += 1
+
+
+@njit
+def _refine_group(g, funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg, h_min,
+                  tab, work, counts, dns, dst, yo, done):
+    """Group g of :func:`refine_groups` (nothing when it has no ball)."""
+    if gn[g] == 0:
+        done[g] = 1
+        return
+    ok, hm = refine(funm, args, gmask[g], gact[g, 0:gn[g]], t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec,
+                    min(hmg[g], hh), h_min, tab, work, counts[g:g + 1], dns, dst, g, yo)
+    done[g] = 1 if ok else 0
+    hmg[g] = hm
+
+
+@njit
+def refine_groups(funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg, h_min, tab,
+                  works, counts, dns, dst, yo, done):
+    """:func:`refine` for each group of :func:`split_groups` in turn, each on micro steps of its own (its own error
+    control, micro step hmg[g] and nodes), into yo; done[g] ← whether it finished.  The groups read y0, f0, y1 and
+    write disjoint parts of yo, dns and dst, so :func:`refine_groups_threaded` gives the same numbers bit for bit."""
+    for g in range(gmask.shape[0]):
+        _refine_group(g, funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg, h_min,
+                      tab, works[g], counts, dns, dst, yo, done)
+
+
+@njit(parallel=True)
+def refine_groups_threaded(funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg,
+                           h_min, tab, works, counts, dns, dst, yo, done, funs, over, t1, fnext, swork, mask):
+    """:func:`refine_groups` on two threads, one parallel region per refinement: group 0 on one, group 1 and then —
+    with ``over`` — the first part of f at the step's end (``funs(t1, y1, fnext, args, mask, PHASE_OTHERS, swork)``:
+    the raceway contacts of the balls not refined, which the refinement does not change) on the other.  ``funm``
+    and ``funs`` must be serial: the groups are the parallel work.  The same numbers bit for bit as
+    :func:`refine_groups` followed by that call.  (The tuples are unpacked outside the loop: a parallel loop's body
+    takes arrays, not tuples of them, as arguments.)"""
+    a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10 = args
+    w00, w01, w02, w03, w04, w05, w06, w07, w08, w09, w010, w011, w012 = works[0]
+    w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w110, w111, w112 = works[1]
+    for g in prange(2):
+        ag = (a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10)
+        if g == 0:
+            wg = (w00, w01, w02, w03, w04, w05, w06, w07, w08, w09, w010, w011, w012)
+            _refine_group(0, funm, ag, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg,
+                          h_min, tab, wg, counts, dns, dst, yo, done)
+        else:
+            wg = (w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w110, w111, w112)
+            _refine_group(1, funm, ag, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg,
+                          h_min, tab, wg, counts, dns, dst, yo, done)
+            if over:
+                funs(t1, y1, fnext, ag, mask, PHASE_OTHERS, swork)

@@ -25,12 +25,12 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE, N_BALL
+from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE, N_BALL, PHASE_OTHERS, PHASE_REST
 from .base import INFO_SIZE, Workspace, ros34_workspace
 from .common import (
     DST_MR,
     DST_NODES,
-    DST_TIMES,
+    GROUPS,
     MAX_STEPS,
     NO_DENSE,
     NO_DENSE_STATE,
@@ -43,6 +43,9 @@ from .common import (
     error_norm_parts,
     error_scale,
     no_masked,
+    no_split,
+    node_row,
+    node_time,
     pi_factor,
     reject_factor,
 )
@@ -57,7 +60,7 @@ from .jacobian import (
     ring_rows,
 )
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, orbit_reference, orbit_turn, turned_solve, w_inverse
-from .multirate import COOL, refine, refine_work, select
+from .multirate import COOL, refine_groups, refine_groups_threaded, refine_work, select, split_groups
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
 R34_G = 0.435866521508459
@@ -136,7 +139,8 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
 @njit
 def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
               rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False, vec=NO_VECTORS,
-              dns=NO_DENSE, dst=NO_DENSE_STATE, rec=np.zeros((0, MEMO_W)), funm=no_masked, mr=0):
+              dns=NO_DENSE, dst=NO_DENSE_STATE, rec=np.zeros((0, MEMO_W)), funm=no_masked, mr=0, funs=no_split,
+              swork=np.zeros(0)):
     """ROS34PW2 from t to t_end in place (module docstring).
 
     ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
@@ -208,22 +212,32 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     # the multirate refinement (:mod:`.multirate`): up to mr balls per step, on the balls' layout
     mr_on = mr > 0 and nbk == N_BALL
     nmr = mr if mr_on else 0
-    mrw = refine_work(n if mr_on else 0, nmr)
+    mrw = (refine_work(n if mr_on else 0, nmr), refine_work(n if mr_on else 0, nmr))  # (one per group)
     r2 = np.empty(n if mr_on else 0)
     sbl = np.empty(nb if mr_on else 0)
     mask = np.zeros(nb if mr_on else 0, np.int8)
-    count = np.zeros(1)  # masked right-hand sides (:func:`.multirate.refine`)
+    rank = np.zeros(nmr, np.int64)
+    gmask = np.zeros((GROUPS, nb if mr_on else 0), np.int8)
+    gact = np.zeros((GROUPS, nmr), np.int64)
+    gn = np.zeros(GROUPS, np.int64)
+    gdone = np.zeros(GROUPS, np.int64)
+    yo = np.empty(n if mr_on else 0)
+    counts = np.zeros(GROUPS)  # masked right-hand sides per group (:func:`.multirate.refine`)
+    # f at a refined step's end in two parts, the first beside the refinement (``funs``: forces.rhs_split)
+    over = mr_on and swork.shape[0] > 0
+    fnext = np.empty(n if over else 0)
     tab = np.array([R34_A21, R34_A31, R34_A32, R34_A41, R34_A42, R34_A43, R34_ALPHA2, R34_ALPHA3, R34_ALPHA4,
                     R34_C21, R34_C31, R34_C32, R34_C41, R34_C42, R34_C43, R34_M[0], R34_M[1], R34_M[2], R34_M[3],
                     R34_E[0], R34_E[1], R34_E[2], R34_E[3], R34_G])
     no_nodes = np.zeros((0, n))
-    hm = h
+    hmg = np.full(GROUPS, h)  # each group's next micro step
     cool = 0
     nref = 0
     nball = 0
-    if dns.shape[1] == n and dst.shape[0] > DST_MR + 1 and dst[DST_MR] > 0.0:
-        hm = dst[DST_MR]
-        cool = int(dst[DST_MR + 1])
+    if dns.shape[1] == n and dst.shape[0] > DST_MR + GROUPS and dst[DST_MR] > 0.0:
+        for g in range(GROUPS):
+            hmg[g] = dst[DST_MR + g]
+        cool = int(dst[DST_MR + GROUPS])
     need_jac = jst[1] == 0
     since = jst[0]
     adaptive = jmem.shape[0] > 0  # the refresh interval from the run's record (:func:`.jacobian.refresh_interval`)
@@ -313,35 +327,52 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
             evec[i] = ((R34_M[0] - R34_E[0]) * k1[i] + (R34_M[1] - R34_E[1]) * k2[i]
                        + (R34_M[2] - R34_E[2]) * k3[i] + (R34_M[3] - R34_E[3]) * k4[i])
         err, finite = error_norm_parts(evec, y, ynew, atol, rtol, info, vec, r2)
-        masked0 = count[0]
+        masked0 = counts.sum()
         nact = 0
-        if dense and dst.shape[0] > DST_NODES:
-            dst[DST_NODES] = 0.0
+        part = False  # f at the step's end begun beside the refinement (its PHASE_OTHERS part in fnext)
+        if dense and dst.shape[0] > DST_NODES + GROUPS:
+            for g in range(GROUPS):
+                dst[DST_NODES + g] = 0.0
         if mr_on and finite:
             if cool > 0:
                 cool -= 1
             else:
-                nact, rem = select(r2, blk, nbk, nmr, sbl, mask)
+                nact, rem = select(r2, blk, nbk, nmr, sbl, mask, rank)
                 err_l = np.sqrt(rem / n)
                 if nact > 0 and err_l <= 1.0:
-                    act = np.empty(nact, np.int64)
-                    a = 0
-                    for b in range(nb):
-                        if mask[b] == 1:
-                            act[a] = b
-                            a += 1
+                    tn = t_end if last else t + hs
+                    split_groups(rank, nact, nb, gmask, gact, gn)
                     keep = dense and t + hs >= t_end
-                    done, hm = refine(funm, args, mask, act, t, hs, y, f0, ynew, blk, jac, turn, atol, rtol, vec,
-                                      min(hm, hs), h_min, tab, mrw, count, dns if keep else no_nodes, dst)
-                    if done:
+                    dkeep = dns if keep else no_nodes
+                    if keep:
+                        for i in range(n):
+                            dns[3, i] = 0.0
+                    # the groups on two threads when the engine is threaded and both have balls (bit for bit the
+                    # same as one after the other: they read y, f0, ynew and write disjoint parts of yo, dns, dst)
+                    if threaded and (gn[1] > 0 or over):
+                        refine_groups_threaded(funm, args, gmask, gact, gn, t, hs, y, f0, ynew, blk, jac, turn, atol,
+                                               rtol, vec, hmg, h_min, tab, mrw, counts, dkeep, dst, yo, gdone,
+                                               funs, over, tn, fnext, swork, mask)
+                    else:
+                        refine_groups(funm, args, gmask, gact, gn, t, hs, y, f0, ynew, blk, jac, turn, atol, rtol,
+                                      vec, hmg, h_min, tab, mrw, counts, dkeep, dst, yo, gdone)
+                        if over:
+                            funs(tn, ynew, fnext, args, mask, PHASE_OTHERS, swork)
+                    part = over
+                    if gdone.min() == 1:
+                        for a in range(nact):
+                            o = blk[rank[a]]
+                            for i in range(nbk):
+                                ynew[o + i] = yo[o + i]
                         err = err_l
                         nref += 1
                         nball += nact
                     else:  # given up: the large step as it is (accepted if its own error allows), no refinement
                         cool = COOL
                         nact = 0
-                        if dense and dst.shape[0] > DST_NODES:
-                            dst[DST_NODES] = 0.0
+                        if dense and dst.shape[0] > DST_NODES + GROUPS:
+                            for g in range(GROUPS):
+                                dst[DST_NODES + g] = 0.0
                 elif nact > 0:
                     err = err_l  # rejected: the next step is sized for the other states
         if stats.shape[0] == 2 * n:
@@ -350,7 +381,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                 stats[i] += r * r
             stats[n + int(info[2])] += 1.0
         if adaptive:  # (an accepted step also pays the next f(t, y))
-            record_attempt(jmem, since, (4.0 if err <= 1.0 else 3.0) + (count[0] - masked0) * (nact + 1.0) / nb,
+            record_attempt(jmem, since, (4.0 if err <= 1.0 else 3.0) + (counts.sum() - masked0) * (nact + 1.0) / nb,
                            hs if err <= 1.0 else 0.0)
         if err <= 1.0:
             if dense:
@@ -358,10 +389,16 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                 for i in range(n):
                     dns[0, i] = y[i]
                     dns[1, i] = f0[i]
+            have_f0 = False
+            if part:  # f at the new state: the part not begun beside the refinement (its balls, cages, rings)
+                funs(t_end if last else t + hs, ynew, fnext, args, mask, PHASE_REST, swork)
+                nfun += 1
+                for i in range(n):
+                    f0[i] = fnext[i]
+                have_f0 = True
             for i in range(n):
                 y[i] = ynew[i]
             t = t_end if last else t + hs
-            have_f0 = False
             prev_rej = False
             nacc += 1
             since += 1
@@ -391,16 +428,18 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         if have_f0:
             for i in range(n):
                 dns[2, i] = f0[i]
-        if dst.shape[0] > DST_MR + 1:
-            nodes = int(dst[DST_NODES])
-            if nodes > 0 and have_f0 and nacc > 0:  # the refined balls' end node: the state reached and f there
-                dst[DST_TIMES + nodes] = t
-                for i in range(n):
-                    dns[4 + 2 * nodes, i] = y[i]
-                    dns[5 + 2 * nodes, i] = f0[i]
-                dst[DST_NODES] = nodes + 1.0
-            dst[DST_MR] = hm
-            dst[DST_MR + 1] = float(cool)
+        if dst.shape[0] > DST_MR + GROUPS:
+            for g in range(GROUPS):
+                nodes = int(dst[DST_NODES + g])
+                if nodes > 0 and have_f0 and nacc > 0:  # the group's end node: the state reached and f there
+                    dst[node_time(g, nodes)] = t
+                    r = node_row(g, nodes)
+                    for i in range(n):
+                        dns[r, i] = y[i]
+                        dns[r + 1, i] = f0[i]
+                    dst[DST_NODES + g] = nodes + 1.0
+                dst[DST_MR + g] = hmg[g]
+            dst[DST_MR + GROUPS] = float(cool)
         dst[1] = err_prev
         dst[2] = 1.0 if prev_rej else 0.0
         dst[3] = 1.0 if have_f0 else 0.0
@@ -410,7 +449,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
         info[4] = nfun
         info[5] = nfac
         info[6] = njac
-        info[7] = count[0]
+        info[7] = counts.sum()
         info[8] = nball
         info[9] = nref
     return status, t, h

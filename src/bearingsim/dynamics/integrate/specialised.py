@@ -140,17 +140,18 @@ def ros34_serial(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, 
     right-hand side of the multirate refinement, :func:`~bearingsim.dynamics.forces.rhs_masked`)."""
     return ros34pw2.integrate(forces.rhs_args, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk,
                               jac_every, ws, rmass, bmass, np.zeros(0), False, vec, dns, dst, args[10],
-                              forces.rhs_masked, mr)
+                              forces.rhs_masked, mr, forces.rhs_split, forces.split_work(args))
 
 
 @_cached
 def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws, rmass,
                    bmass, vec, dns, dst, mr):
-    """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded` (and the
-    refinement's masked right-hand side threaded too, :func:`~bearingsim.dynamics.forces.rhs_masked_threaded`)."""
+    """:func:`.ros34pw2.integrate` with ``fun`` = :func:`~bearingsim.dynamics.forces.rhs_args_threaded` (the
+    refinement's two groups of balls on two threads, each with the serial masked right-hand side,
+    :func:`.multirate.refine_groups_threaded`)."""
     return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
                               blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec, dns, dst, args[10],
-                              forces.rhs_masked_threaded, mr)
+                              forces.rhs_masked, mr, forces.rhs_split, forces.split_work(args))
 
 
 #: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel
