@@ -170,6 +170,12 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     (t, y) and the record must be made there first, :func:`.jacobian.record_at`; instead of 9 + 10 with ≈ 0.58
     each), unless the record's ring row says the model does not allow it.
 
+    ``funs`` and ``swork`` (the engine's :func:`bearingsim.dynamics.forces.rhs_split` and its
+    :func:`~bearingsim.dynamics.forces.split_work`; none: f is evaluated whole): at a refined step (``mr`` > 0) f at
+    its end is made in two parts, the raceway contacts of the balls not refined beside the refinement's groups
+    (:func:`.multirate.refine_groups_threaded` when ``threaded``), the rest once the step is accepted — the same f bit
+    for bit.
+
     ``funm``, ``mr``: the multirate refinement (:mod:`.multirate`; issue 14): with mr > 0 and the balls' layout
     (nbk = 9) each step refines up to mr balls whose own errors are too large with micro steps of their own, ``funm``
     being the right-hand side of those balls alone (:func:`bearingsim.dynamics.forces.rhs_masked`, signature
