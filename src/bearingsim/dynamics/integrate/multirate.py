@@ -374,24 +374,28 @@ def _refine_group(g, funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, t
 
 @njit
 def refine_groups(funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg, h_min, tab,
-                  works, counts, dns, dst, yo, done):
+                  works, counts, dns, dst, yo, done, funs, over, t1, fnext, swork, mask):
     """:func:`refine` for each group of :func:`split_groups` in turn, each on micro steps of its own (its own error
-    control, micro step hmg[g] and nodes), into yo; done[g] ← whether it finished.  The groups read y0, f0, y1 and
-    write disjoint parts of yo, dns and dst, so :func:`refine_groups_threaded` gives the same numbers bit for bit."""
+    control, micro step hmg[g] and nodes), into yo; done[g] ← whether it finished; then, with ``over``, the first part
+    of f at the step's end, ``funs(t1, y1, fnext, args, mask, PHASE_OTHERS, swork)`` (the raceway contacts of the
+    balls not refined, which the refinement does not change).  The groups read y0, f0, y1 and write disjoint parts of
+    yo, dns and dst, so :func:`refine_groups_threaded` gives the same numbers bit for bit."""
     for g in range(gmask.shape[0]):
         _refine_group(g, funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg, h_min,
                       tab, works[g], counts, dns, dst, yo, done)
+    if over:
+        funs(t1, y1, fnext, args, mask, PHASE_OTHERS, swork)
 
 
 @njit(parallel=True)
 def refine_groups_threaded(funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg,
                            h_min, tab, works, counts, dns, dst, yo, done, funs, over, t1, fnext, swork, mask):
-    """:func:`refine_groups` on two threads, one parallel region per refinement: group 0 on one, group 1 and then —
-    with ``over`` — the first part of f at the step's end (``funs(t1, y1, fnext, args, mask, PHASE_OTHERS, swork)``:
-    the raceway contacts of the balls not refined, which the refinement does not change) on the other.  ``funm``
-    and ``funs`` must be serial: the groups are the parallel work.  The same numbers bit for bit as
-    :func:`refine_groups` followed by that call.  (The tuples are unpacked outside the loop: a parallel loop's body
-    takes arrays, not tuples of them, as arguments.)"""
+    """:func:`refine_groups` on two threads, one parallel region per refinement: group 0 on one, group 1 and then
+    the first part of f on the other; the same numbers bit for bit.  ``funm`` and ``funs`` must be serial: the groups
+    are the parallel work.  For the engine's right-hand sides only (``args`` of 11 arrays,
+    :func:`bearingsim.dynamics.forces.args_of`; the threaded kernel of :mod:`.specialised` passes it to
+    :func:`.ros34pw2.integrate`): the tuples are unpacked outside the loop, since a parallel loop's body takes
+    arrays, not tuples of them, as arguments."""
     a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10 = args
     w00, w01, w02, w03, w04, w05, w06, w07, w08, w09, w010, w011, w012 = works[0]
     w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w110, w111, w112 = works[1]

@@ -25,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE, N_BALL, PHASE_OTHERS, PHASE_REST
+from ..layout import MEMO_INNER, MEMO_W, MR_DERIVE, N_BALL, PHASE_REST
 from .base import INFO_SIZE, Workspace, ros34_workspace
 from .common import (
     DST_MR,
@@ -60,7 +60,7 @@ from .jacobian import (
     ring_rows,
 )
 from .linalg import NR, coupled_w, coupled_w_threaded, no_coupling, orbit_reference, orbit_turn, turned_solve, w_inverse
-from .multirate import COOL, refine_groups, refine_groups_threaded, refine_work, select, split_groups
+from .multirate import COOL, refine_groups, refine_work, select, split_groups
 
 # ROS34PW2 (Rang & Angermann, BIT 45 (2005) 761, Table 3)
 R34_G = 0.435866521508459
@@ -140,7 +140,7 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
 def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk, nbk, jac_every, ws,
               rmass=np.zeros(0), bmass=np.zeros((0, 2)), stats=np.zeros(0), threaded=False, vec=NO_VECTORS,
               dns=NO_DENSE, dst=NO_DENSE_STATE, rec=np.zeros((0, MEMO_W)), funm=no_masked, mr=0, funs=no_split,
-              swork=np.zeros(0)):
+              swork=np.zeros(0), fung=refine_groups):
     """ROS34PW2 from t to t_end in place (module docstring).
 
     ``blk``, ``nbk``: the per-ball Jacobian blocks (start indices, states each); ``ws``
@@ -173,8 +173,8 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     ``funs`` and ``swork`` (the engine's :func:`bearingsim.dynamics.forces.rhs_split` and its
     :func:`~bearingsim.dynamics.forces.split_work`; none: f is evaluated whole): at a refined step (``mr`` > 0) f at
     its end is made in two parts, the raceway contacts of the balls not refined beside the refinement's groups
-    (:func:`.multirate.refine_groups_threaded` when ``threaded``), the rest once the step is accepted — the same f bit
-    for bit.
+    (``fung``: :func:`.multirate.refine_groups`, or :func:`.multirate.refine_groups_threaded` from the threaded
+    engine's kernel), the rest once the step is accepted — the same f bit for bit.
 
     ``funm``, ``mr``: the multirate refinement (:mod:`.multirate`; issue 14): with mr > 0 and the balls' layout
     (nbk = 9) each step refines up to mr balls whose own errors are too large with micro steps of their own, ``funm``
@@ -353,17 +353,11 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
                     if keep:
                         for i in range(n):
                             dns[3, i] = 0.0
-                    # the groups on two threads when the engine is threaded and both have balls (bit for bit the
-                    # same as one after the other: they read y, f0, ynew and write disjoint parts of yo, dns, dst)
-                    if threaded and (gn[1] > 0 or over):
-                        refine_groups_threaded(funm, args, gmask, gact, gn, t, hs, y, f0, ynew, blk, jac, turn, atol,
-                                               rtol, vec, hmg, h_min, tab, mrw, counts, dkeep, dst, yo, gdone,
-                                               funs, over, tn, fnext, swork, mask)
-                    else:
-                        refine_groups(funm, args, gmask, gact, gn, t, hs, y, f0, ynew, blk, jac, turn, atol, rtol,
-                                      vec, hmg, h_min, tab, mrw, counts, dkeep, dst, yo, gdone)
-                        if over:
-                            funs(tn, ynew, fnext, args, mask, PHASE_OTHERS, swork)
+                    # the groups one after the other, or on two threads (fung: multirate.refine_groups_threaded from
+                    # the threaded engine's kernel; bit for bit the same: they read y, f0, ynew and write disjoint
+                    # parts of yo, dns, dst)
+                    fung(funm, args, gmask, gact, gn, t, hs, y, f0, ynew, blk, jac, turn, atol, rtol, vec, hmg,
+                         h_min, tab, mrw, counts, dkeep, dst, yo, gdone, funs, over, tn, fnext, swork, mask)
                     part = over
                     if gdone.min() == 1:
                         for a in range(nact):

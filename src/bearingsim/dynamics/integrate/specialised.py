@@ -36,7 +36,7 @@ from numba import njit
 
 from ... import _kernel_modules
 from .. import forces
-from . import dopri5, ros2, ros34pw2
+from . import dopri5, multirate, ros2, ros34pw2
 
 #: src/bearingsim
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -151,7 +151,8 @@ def ros34_threaded(args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     :func:`.multirate.refine_groups_threaded`)."""
     return ros34pw2.integrate(forces.rhs_args_threaded, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info,
                               blk, nbk, jac_every, ws, rmass, bmass, np.zeros(0), True, vec, dns, dst, args[10],
-                              forces.rhs_masked, mr, forces.rhs_split, forces.split_work(args))
+                              forces.rhs_masked, mr, forces.rhs_split, forces.split_work(args),
+                              multirate.refine_groups_threaded)
 
 
 #: (method module name, ``"serial"`` for rhs_args or ``"threaded"`` for rhs_args_threaded) → cached kernel
