@@ -1146,15 +1146,14 @@ def rhs_masked(t, y, dy, a, active):
     Serial: on a threaded engine the refinement's groups of balls are the parallel work
     (:func:`.integrate.multirate.refine_groups_threaded`)."""
     rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
-    nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
-    nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, False)
-    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), False, np.empty(nw),
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), False, split_work(a),
          active, PHASE_MASKED)
 
 
 @njit(cache=True)
 def split_work(a):
-    """The work array that :func:`rhs_split`'s two calls share (as :func:`rhs` allocates it, one thread)."""
+    """A work array of the one-thread right-hand side (as :func:`rhs` allocates it): the one :func:`rhs_split`'s two
+    calls share, and :func:`rhs_masked`'s own."""
     rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
     return np.empty(RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, False))

@@ -401,13 +401,10 @@ def refine_groups_threaded(funm, args, gmask, gact, gn, t, hh, y0, f0, y1, blk, 
     w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w110, w111, w112 = works[1]
     for g in prange(2):
         ag = (a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10)
-        if g == 0:
-            wg = (w00, w01, w02, w03, w04, w05, w06, w07, w08, w09, w010, w011, w012)
-            _refine_group(0, funm, ag, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg,
-                          h_min, tab, wg, counts, dns, dst, yo, done)
-        else:
-            wg = (w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w110, w111, w112)
-            _refine_group(1, funm, ag, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg,
-                          h_min, tab, wg, counts, dns, dst, yo, done)
-            if over:
-                funs(t1, y1, fnext, ag, mask, PHASE_OTHERS, swork)
+        # (one call site: the work tuple chosen by the index, so that the parallel region holds one copy of refine)
+        wg = ((w00, w01, w02, w03, w04, w05, w06, w07, w08, w09, w010, w011, w012) if g == 0 else
+              (w10, w11, w12, w13, w14, w15, w16, w17, w18, w19, w110, w111, w112))
+        _refine_group(g, funm, ag, gmask, gact, gn, t, hh, y0, f0, y1, blk, jac, turn, atol, rtol, vec, hmg, h_min,
+                      tab, wg, counts, dns, dst, yo, done)
+        if g == 1 and over:
+            funs(t1, y1, fnext, ag, mask, PHASE_OTHERS, swork)
