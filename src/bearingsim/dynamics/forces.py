@@ -960,15 +960,19 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     """
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
     nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, threads)
-    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, np.empty(nw),
-         np.zeros(0, np.int8), PHASE_ALL)
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, bool(threads), np.empty(nw),
+         np.zeros(0, np.int8), int(PHASE_ALL))
 
 
 @njit(cache=True, _nrt=False)
 def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, threads, work, active,
          phase):
     """The body of :func:`rhs`; work: float[RHS_WORK + cm.shape[1] + ball_work_size(...)] (every small array of the
-    equations is a view of it); ``phase`` (:data:`PHASE_ALL` …) and ``active`` say which part is computed."""
+    equations is a view of it); ``phase`` (:data:`PHASE_ALL` …) and ``active`` say which part is computed.
+
+    Its callers pass ``threads`` and ``phase`` as run-time values (``bool(…)``, ``int(…)``): numba compiles a called
+    function once per literal argument, and the constants made six copies of this body (and of
+    :func:`balls_on_raceways`), ≈ 18 s of compilation each from an empty cache (issue 14: the CI's time)."""
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
     omega = speed_at(t, gp)
@@ -1146,8 +1150,8 @@ def rhs_masked(t, y, dy, a, active):
     Serial: on a threaded engine the refinement's groups of balls are the parallel work
     (:func:`.integrate.multirate.refine_groups_threaded`)."""
     rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
-    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), False, split_work(a),
-         active, PHASE_MASKED)
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, no_memo(), bool(False),
+         split_work(a), active, int(PHASE_MASKED))
 
 
 @njit(cache=True)
@@ -1167,7 +1171,8 @@ def rhs_split(t, y, dy, a, active, phase, work):
     :mod:`.integrate.multirate`); the two give f bit for bit as :func:`rhs_args` does at the final state (the same
     statements per ball, the reduction in ball order)."""
     rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo = a
-    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, False, work, active, phase)
+    _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag, memo, bool(False), work, active,
+         int(phase))
 
 
 @njit(cache=True)
