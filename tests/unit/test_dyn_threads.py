@@ -196,19 +196,23 @@ _SEQUENCE = textwrap.dedent("""
     if sys.argv[1] == "threaded":
         fo.rhs_args_threaded(0.0, y, np.zeros_like(y), fo.args_of(m, ls))
     else:
-        dy = fo.evaluate(m, 0.0, y, ls)[0]
+        dy = fo.evaluate(m, 0.0, y, ls, threads=True)[0]
         assert np.isfinite(dy).all() and np.abs(dy).max() > 0
     print("ok")
 """)
 
 
-def test_a_cached_kernel_calling_the_parallel_one_loads_in_a_fresh_process(tmp_path):
-    """The sequence that killed a hub-study worker: process 1 caches the parallel ball loop (a threaded right-hand
-    side), process 2 compiles the Python-side right-hand side (``evaluate``: threads as a run-time flag, so it
-    links the cached parallel loop) and caches it, process 3 loads that from the cache.  Before forces.py started
-    the threading layer at import, process 3 died (segmentation fault, or "LLVM ERROR: Symbol not found:
-    allocate_sched"), since numba registers the layer's symbols only when the layer starts."""
-    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "cache"), NUMBA_NUM_THREADS="2")
+def test_a_cached_kernel_calling_the_parallel_one_loads_in_a_fresh_process():
+    """The sequence that killed a hub-study worker: a fresh process loads from the cache a kernel compiled without
+    ``parallel`` that calls the parallel ball loop, and runs it.  Process 1 compiles and caches the threaded
+    right-hand side (``rhs_args_threaded`` → ``rhs`` → ``_rhs`` → ``balls_on_raceways``, none parallel, calling
+    ``_balls_parallel``); processes 2 and 3 load it and run it (``evaluate(threads=True)``).  Before forces.py
+    started the threading layer at import, such a process died (segmentation fault, or "LLVM ERROR: Symbol not
+    found: allocate_sched"), since numba registers the layer's symbols only when the layer starts.  (``evaluate``
+    compiled a kernel of its own before, threads a run-time flag; it now calls the engine's: forces._rhs.)"""
+    env = dict(os.environ, NUMBA_NUM_THREADS="2")
+    # (the suite's own kernel cache: the kernel is there already when the bitwise test above ran, which changes
+    # nothing for processes 2 and 3; a cache of its own before, 71 s of compilation in the CI)
     for step in ("threaded", "evaluate", "evaluate"):
         r = subprocess.run([sys.executable, "-c", _SEQUENCE, step], cwd=ROOT, env=env, capture_output=True,
                            text=True, timeout=900)
