@@ -52,6 +52,12 @@ _SCRIPT = textwrap.dedent("""
     assert st.workspace.work[4] > 2 * st.workspace.work[5] > 0, list(st.workspace.work)  # several balls a step
     assert np.array_equal(st.y, d["zc:y"]), np.abs(st.y - d["zc:y"]).max()
     assert np.array_equal(st.state_at(float(d["zc:t_out"])), d["zc:y_out"])
+    # the output sample on the run's threads (Stepper.sample: its two evaluations, the rolling-resistance share)
+    out = st.sample(float(d["zc:t_out"]), st.state_at(float(d["zc:t_out"])))
+    keys = [k for k in d.files if k.startswith("zs:")]
+    assert len(keys) > 10 and d["zs:power_loss_rolling"] != 0.0
+    for k in keys:
+        assert np.array_equal(np.asarray(out[k[3:]]), d[k]), k
     print("bitwise ok")
 """ % (CASES,))
 
@@ -92,6 +98,8 @@ def test_two_threads_give_the_one_thread_result_bit_for_bit(tmp_path):
     t_out = 0.5 * (ser.t + float(ser._dense[1][0]))  # inside the last step
     data.update({"zc:y0": zc.y, "zc:t0": zc.t, "zc:h0": zc.h, "zc:t_end": zc.t + 0.3e-3, "zc:y": ser.y,
                  "zc:t_out": t_out, "zc:y_out": ser.state_at(t_out)})
+    data.update({"zs:" + k: np.asarray(v) for k, v in ser.sample(t_out, ser.state_at(t_out)).items()
+                 if np.asarray(v).dtype.kind == "f"})
     np.savez(tmp_path / "ref.npz", **data)
     env = dict(os.environ, NUMBA_NUM_THREADS="2")
     r = subprocess.run([sys.executable, "-c", _SCRIPT, str(tmp_path / "ref.npz")], cwd=ROOT, env=env,
