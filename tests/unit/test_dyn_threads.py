@@ -225,3 +225,15 @@ def test_a_cached_kernel_calling_the_parallel_one_loads_in_a_fresh_process():
         r = subprocess.run([sys.executable, "-c", _SEQUENCE, step], cwd=ROOT, env=env, capture_output=True,
                            text=True, timeout=900)
         assert r.returncode == 0 and "ok" in r.stdout, (step, r.returncode, r.stderr[-2000:])
+
+
+def test_balls_are_dealt_in_contiguous_quarters():
+    """forces.dealt: every ball once for any count; on 2 threads (numba's static schedule: a contiguous half of the
+    iterations each) each thread's balls are two contiguous runs, a quarter of the row numbering apart."""
+    from bearingsim.dynamics.forces import dealt
+
+    for nb in range(1, 70):
+        ks = [dealt(i, nb) for i in range(nb)]
+        assert sorted(ks) == list(range(nb)), (nb, ks)
+    ks = [dealt(i, 32) for i in range(32)]
+    assert ks[:16] == list(range(0, 8)) + list(range(16, 24)) and ks[16:] == list(range(8, 16)) + list(range(24, 32))

@@ -297,26 +297,48 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
 # the threading layer of _balls_parallel is chosen and started by .threads (imported above)
 
 
+@njit(cache=True, _nrt=False, inline="always")
+def dealt(i, nb):
+    """The ball taken by iteration i of :func:`_balls_parallel`'s loop: the balls in four contiguous quarters
+    (q = ⌈nb/4⌉ balls each, the last one shorter) visited in the order 0, 2, 1, 3.  (i may come as a parallel
+    loop's unsigned index: taken as int64 first, since uint64 − int64 is a float in numba.)"""
+    i = np.int64(i)
+    q = (nb + 3) // 4
+    s1 = min(q, max(nb - q, 0))
+    s2 = min(q, max(nb - 2 * q, 0))
+    if i < q:
+        return i
+    if i < q + s2:
+        return 2 * q + (i - q)
+    if i < q + s2 + s1:
+        return q + (i - q - s2)
+    return 3 * q + (i - q - s2 - s1)
+
+
 @njit(cache=True, parallel=True)
 def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wring, diag, want, memo, work,
                     contrib, active):
     """:func:`_one_ball` for every ball in a numba ``prange`` (threads: ``numba.set_num_threads``), each with
     its own work row; contrib[k] ← its reactions and diagnostics (layout of :func:`balls_on_raceways`).
 
-    The balls are dealt to the threads, not handed out in contiguous blocks: iteration i of the loop takes ball 2i
-    while 2i < the ball count, then the odd balls, so that on 2 threads (numba's static schedule hands each thread a
-    contiguous block of iterations) one thread takes the even balls and the other the odd ones.  The balls are
-    numbered row by row and along each row, so a contiguous block was a row, and under a moment load one row
-    carries its load zone while the other is half unloaded (an unloaded contact returns at once): hub (b), 2
-    threads, right-hand side at three states 22.3–24.0 → 21.6–22.6 µs (issue 14, docs/dynamics.md twelfth pass;
-    the van der Corput order, which would spread the balls for any power-of-two thread count, measured 0.5 µs
-    slower on 2).  Which thread computes a ball does not change its numbers.  ``active`` (no entries: every ball):
-    the balls with active[k] = 0 are skipped, their contributions zero (:func:`rhs_masked`; the balls a multirate
-    step refines are mostly neighbours, which the even/odd dealing splits between two threads)."""
+    The balls are dealt to the threads in contiguous quarters (:func:`dealt`: iterations take quarters 0, 2, 1, 3 of
+    the ball numbering; numba's static schedule hands each of 2 threads a contiguous half of the iterations, so one
+    thread takes quarters 0 and 2, the other 1 and 3).  The balls are numbered row by row and along each row, so a
+    thread holds opposite halves of the rows (under a moment load one row's load zone is opposite the other's: the
+    loaded balls split about evenly), and its balls are neighbours in memory.  The even/odd dealing used before put
+    every pair of neighbours on different threads; hub (b), 2 threads, right-hand side at three states of a run (4 /
+    6 / 9.2 ms, each call on a state other than the last one's): 38–42 / 35–41 / 43–48 µs even/odd, 30–32 / 30–31 /
+    39–40 contiguous halves (a row per thread: unbalanced near the moment's zero crossing), **29–31 / 27–28 / 32–34
+    quarters**, against 44–46 / 44 / 53 on one thread (issue 14, docs/dynamics.md twenty-second pass).  Most likely
+    the cache lines that neighbours share in ``dy`` (9 floats per ball) went back and forth between the cores:
+    padding the memo, contribution and work rows to whole lines changed nothing, the contiguous dealing did.  (The
+    twelfth pass had preferred even/odd from loops over one repeated state, which overstate the threads: the same
+    loops give 31 µs at 4 ms even/odd with a repeated state, 40 with two alternating ones.)  Which thread computes a
+    ball does not change its numbers.  ``active`` (no entries: every ball): the balls with active[k] = 0 are
+    skipped, their contributions zero (:func:`rhs_masked`)."""
     nb = ball_row.shape[0]
-    half = (nb + 1) // 2
     for i in prange(nb):
-        k = 2 * i if i < half else 2 * (i - half) + 1
+        k = dealt(i, nb)
         if active.shape[0] > 0 and active[k] == 0:
             for j in range(contrib.shape[1]):
                 contrib[k, j] = 0.0
