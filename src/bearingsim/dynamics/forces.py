@@ -332,7 +332,7 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
     quarters**, against 44–46 / 44 / 53 on one thread (issue 14, docs/dynamics.md twenty-second pass).  Most likely
     the cache lines that neighbours share in ``dy`` (9 floats per ball) went back and forth between the cores:
     padding the memo, contribution and work rows to whole lines changed nothing, the contiguous dealing did.  (The
-    twelfth pass had preferred even/odd from loops over one repeated state, which overstate the threads: the same
+    twelfth pass had preferred even/odd from loops of calls on fixed states, which overstate the threads: the same
     loops give 31 µs at 4 ms even/odd with a repeated state, 40 with two alternating ones.)  Which thread computes a
     ball does not change its numbers.  ``active`` (no entries: every ball): the balls with active[k] = 0 are
     skipped, their contributions zero (:func:`rhs_masked`)."""
