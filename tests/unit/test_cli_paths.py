@@ -237,3 +237,28 @@ def test_bad_bearing_is_refused_before_any_output_folder_is_made(tmp_path):
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1 and "ball_diameter" in r.stderr, r.stderr
     assert not (tmp_path / "new").exists(), "a refused map must not leave folders behind"
+
+
+WRONG_TYPE = {
+    "map --out": (["map", "skf-7011-cdga-hc", "--fa", "1000:2000:2", "--out", "{d}/new/m.csv"], "--out", ".nc"),
+    "map --plot": (["map", "skf-7011-cdga-hc", "--fa", "1000:2000:2", "--out", "{d}/new/m.nc", "--plot",
+                    "{d}/new/kxx.txt"], "--plot", ".png"),
+    "simulate": (["simulate", str(CASE), "--out", "{d}/new/run.csv", "--duration", "0.05 ms", "--quiet"], "--out",
+                 ".nc"),
+    "export ross": (["export", "ross", "skf-7011-cdga-hc", "--fa", "1000", "--speed", "0:1000:2", "--out",
+                     "{d}/new/ross.txt"], "--out", ".json"),
+    "traction-curve": (["traction-curve", "--out", "{d}/new/mu.txt"], "--out", ".png"),
+}
+
+
+@pytest.mark.parametrize("name", sorted(WRONG_TYPE))
+def test_an_output_of_another_file_type_is_refused_before_anything_is_written(name, tmp_path):
+    """A map named .csv was written as netCDF under that name; a figure named .txt failed with an internal error
+    after the map had been computed and written (new-user trial, session 26): now one line naming the option and
+    the suffixes it takes, exit 2, and nothing created."""
+    args, option, example = WRONG_TYPE[name]
+    p = run(*[a.replace("{d}", str(tmp_path)) for a in args])
+    assert p.returncode == 2, p.stderr
+    err = error_lines(p)
+    assert len(err) == 1 and err[0].startswith(f"error: {option}: ") and example in err[0], p.stderr
+    assert not (tmp_path / "new").exists(), sorted(tmp_path.rglob("*"))

@@ -37,10 +37,10 @@ def simulate(case: CaseArg,
     from ..dynamics.case import load_case
     from ..dynamics.run import simulate as run_sim
     from ..units import parse_quantity
-    from .output import output_file, writing
+    from .output import NETCDF_SUFFIXES, output_file, writing
 
     c = load_case(case)
-    out = output_file(out, "--out", renamed=True)
+    out = output_file(out, "--out", renamed=True, suffixes=NETCDF_SUFFIXES)
     if duration is not None:
         c = dataclasses.replace(c, duration=parse_quantity(duration, "time", "--duration"))
     con = make_console(stderr=True)

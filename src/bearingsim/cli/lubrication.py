@@ -27,7 +27,7 @@ from .options import (
     SpeedOpt,
     out_option,
 )
-from .output import atomic_output, output_file
+from .output import FIGURE_SUFFIXES, atomic_output, output_file
 
 TractionOut = out_option("Image file to write")
 
@@ -229,7 +229,7 @@ def traction_curve(
         raise InputError("--loads/--speeds", "give positive loads and speeds", 'e.g. --loads "500 N,2000 N"')
     if not (0 < s_max <= 1):
         raise InputError("--s-max", f"must lie in (0, 1], got {s_max}", "e.g. 0.05")
-    out = output_file(out, "--out")
+    out = output_file(out, "--out", suffixes=FIGURE_SUFFIXES)
     announce_compilation()
     fig = plot_traction_curves(lubricant, t, qs, us, s_max=s_max)
     with atomic_output(out, "--out", default_suffix=".png") as tmp:

@@ -84,14 +84,41 @@ def output_folder(path, option: str = "--out") -> Path:
     return p
 
 
-def output_file(path, option: str = "--out", *, renamed: bool = False) -> Path:
+#: the file types of the commands' outputs, by suffix ("" = none): netCDF (``map``, ``simulate``), figures (what
+#: matplotlib writes; no suffix writes a PNG), the ROSS export (JSON, or a .toml BearingElement)
+NETCDF_SUFFIXES = (".nc",)
+FIGURE_SUFFIXES = ("", ".png", ".pdf", ".svg", ".svgz", ".eps", ".ps", ".jpg", ".jpeg", ".tif", ".tiff", ".webp",
+                   ".gif", ".avif", ".pgf")
+ROSS_SUFFIXES = (".json", ".toml")
+
+
+def check_suffix(path, option: str, suffixes: tuple[str, ...]) -> None:
+    """An :class:`InputError` naming ``option`` when the output file ``path`` ends in none of ``suffixes`` (a folder,
+    a device or a pipe, e.g. ``/dev/null``, is taken whatever its name)."""
+    p = Path(path).expanduser()
+    if p.suffix.lower() in suffixes or (p.exists() and not p.is_file()):
+        return
+    kinds = ", ".join(x for x in suffixes if x) + (" or none" if "" in suffixes else "")
+    raise InputError(option, f"{p.name!r}: this output cannot be written as {p.suffix or 'a file without suffix'}",
+                     f"give a name ending in {kinds}")
+
+
+def output_file(path, option: str = "--out", *, renamed: bool = False, suffixes: tuple[str, ...] | None = None
+                ) -> Path:
     """Prepare the output FILE ``path``: create missing parent folders and check, before any computing, that the
     file can be written (an existing regular file is opened for appending and closed: nothing changes).
+
+    ``suffixes``: the file types the command writes (e.g. :data:`NETCDF_SUFFIXES`); another suffix is an
+    :class:`InputError` before anything is computed or created (a device or a pipe, e.g. ``/dev/null``, is taken
+    whatever its name) (a map under a .csv name was written as netCDF, a
+    figure under .txt failed after the map was computed).
 
     ``renamed``: the writer creates a temporary file next to ``path`` and renames it onto ``path`` (the netCDF
     writers of ``map`` and ``simulate``); then ``path`` must not be a device or a pipe — the rename would put a
     regular file in place of ``/dev/null`` (as root)."""
     p = Path(path).expanduser()
+    if suffixes is not None:
+        check_suffix(p, option, suffixes)
     try:
         if p.is_dir():
             raise InputError(option, f"{p} is a folder", "give a file name, e.g. out/map.nc")

@@ -62,7 +62,7 @@ def map_cmd(
 ):
     """Quasi-static map over a grid of loads, speeds and preloads (xarray / netCDF)."""
     from ..sweep import map_grid, plot_map
-    from .output import apply_umask, atomic_output, output_file, writing
+    from .output import FIGURE_SUFFIXES, NETCDF_SUFFIXES, apply_umask, atomic_output, check_suffix, output_file, writing
 
     def opt(v):
         return 0.0 if v is None else v
@@ -78,11 +78,13 @@ def map_cmd(
             raise InputError("--rings", f"unknown ring model {rings!r}", "use rigid or fe")
     else:
         rings = model_of(b)
-    # both outputs checked (folders created) before the map is computed
-    if out is not None:
-        out = output_file(out, "--out", renamed=True)
+    # both outputs checked (folders created) before the map is computed, both types before either folder
     if plot is not None:
-        plot = output_file(plot, "--plot")
+        check_suffix(plot, "--plot", FIGURE_SUFFIXES)
+    if out is not None:
+        out = output_file(out, "--out", renamed=True, suffixes=NETCDF_SUFFIXES)
+    if plot is not None:
+        plot = output_file(plot, "--plot", suffixes=FIGURE_SUFFIXES)
     announce_compilation()
     if scheduler is None:
         # kernels compiled (first run) or loaded here, with the note, before local worker processes start:
@@ -144,11 +146,11 @@ def export_ross(
     from ..export import export_json, to_ross_bearing
     from ..io import load_bearing
     from ..sweep import parse_grid
-    from .output import atomic_output, output_file
+    from .output import ROSS_SUFFIXES, atomic_output, output_file
 
     loads = options.parse_loads(fa, fr, fz, moment, my)
     speeds = parse_grid(speed, "speed", "--speed")
-    out = output_file(out, "--out")
+    out = output_file(out, "--out", suffixes=ROSS_SUFFIXES)
     announce_compilation()
     b = load_bearing(bearing)
     if out.suffix.lower() == ".toml":
