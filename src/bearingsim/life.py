@@ -325,6 +325,15 @@ def life_hours(l10: float, speed: float) -> float | None:
     return l10 * 1e6 / (60.0 * n)
 
 
+def hours_text(hours) -> str:
+    """A life in hours for people: thousands grouped above 100 h ("2,818 h"), three significant digits below
+    ("0.244 h", "12.3 h": a short life was printed "0 h"), "—" for none."""
+    if hours is None or not math.isfinite(float(hours)):
+        return "—"
+    h = float(hours)
+    return f"{h:,.0f} h" if h >= 100.0 else f"{h:.3g} h"
+
+
 # ---- ISO 281:2007 modified rating life ---------------------------------------------------------------
 #: life modification factor for reliability a1, reliability [%] -> a1 (ISO 281:2007, reliability table)
 RELIABILITY_A1 = {90.0: 1.0, 95.0: 0.64, 96.0: 0.55, 97.0: 0.47, 98.0: 0.37, 99.0: 0.25, 99.2: 0.22,
@@ -569,7 +578,11 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
     elif p is not None and p > 0:
         l10 = basic_rating_life(c, p)
     elif p is not None:
-        notes.append("no load: infinite rating life")
+        if math.hypot(result.loads.m_y, result.loads.m_z) > 0:
+            notes.append("no radial or axial load (P = 0): no ISO 281 basic rating life; the moment load enters the "
+                         "reference rating life only")
+        else:
+            notes.append("no load: infinite rating life")
     row_lives = row_reference_lives(result) if c > 0 else None
     l10r = None if row_lives is None else float(_combine([x for x in row_lives if math.isfinite(x)]))
     if l10r is not None and not math.isfinite(l10r):

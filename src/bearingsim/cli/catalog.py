@@ -55,6 +55,9 @@ def select(entries: list[dict], series: str | None = None, bore: float | None = 
         raise InputError("--series", f"{series!r} is not an ISO series", "give two digits, e.g. --series 62")
     if kind is not None and kind not in ("deep_groove", "angular_contact", "bearing_set"):
         raise InputError("--type", f"unknown type {kind!r}", "use deep_groove, angular_contact or bearing_set")
+    known = sorted({x for x in (series_of(e["name"]) for e in entries) if x is not None})
+    if series is not None and series.strip() not in known:
+        raise InputError("--series", f"no series {series.strip()} in the catalogue", f"it holds {', '.join(known)}")
     out = []
     for e in entries:
         if series is not None and series_of(e["name"]) != series.strip():

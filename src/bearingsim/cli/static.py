@@ -189,7 +189,9 @@ def _kn(v) -> str:
 
 
 def _hours(v) -> str:
-    return "—" if v is None else f"{v:,.0f} h"
+    from ..life import hours_text
+
+    return hours_text(v)
 
 
 def print_rating(con, res, friction=None) -> None:

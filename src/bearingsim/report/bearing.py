@@ -44,7 +44,9 @@ def _show(value, si_unit: str, spec: str = ".4g") -> str:
 
 
 def _hours(v) -> str:
-    return "—" if v is None else f"{float(v):,.0f} h"
+    from ..life import hours_text
+
+    return hours_text(v)
 
 
 def _stiffness_unit(i: int, j: int) -> str:

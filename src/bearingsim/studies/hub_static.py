@@ -154,6 +154,17 @@ class HubStaticResult:
         return Path(path)
 
 
+def check_hub(bearing, field: str = "bearing") -> None:
+    """An :class:`~bearingsim.errors.InputError` unless ``bearing`` has the two rows of a hub unit (the study reads
+    both rows' loads and lift-off; a single-row bearing was an IndexError)."""
+    n = len(bearing.rows)
+    if n != 2:
+        from ..errors import InputError
+
+        raise InputError(field, f"{getattr(bearing, 'name', 'the bearing')} has {n} row{'s' if n != 1 else ''}; this "
+                         "study is for a double-row hub unit", "e.g. hub-seed001, or a TOML file with two rows")
+
+
 def run_study(bearing=None, moments=None, speed: float = 0.0, control: str = "outer") -> HubStaticResult:
     """Tilt vs moment of the hub unit under the tied Table 2 loads.
 
@@ -167,6 +178,7 @@ def run_study(bearing=None, moments=None, speed: float = 0.0, control: str = "ou
         from ..io import load_bearing
 
         bearing = load_bearing("hub-seed001")
+    check_hub(bearing)
     m = np.linspace(-M_MAX, M_MAX, 25) if moments is None else np.asarray(moments, dtype=float)
     n = len(m)
     disp = np.zeros((n, 5))
