@@ -41,8 +41,8 @@ def test_an_input_the_command_cannot_take_is_one_line_exit_2(args, field, words,
 
 
 def test_a_short_life_is_printed_in_significant_digits_not_rounded_to_zero():
-    """6205 (C = 14.8 kN by the catalogue's ISO 281 rating) under 50 kN radial at 1500 rpm: L10 = (C/P)³ = 0.0219
-    × 10⁶ rev = 0.244 h — it was printed "L10 = 0 h"."""
+    """6205 under 50 kN radial at 1500 rpm: L10 = (C/P)³ = 0.0219 × 10⁶ rev, 10⁶ L10 / (60 n) = 0.244 h (ISO 281) —
+    it was printed "L10 = 0 h"; the hours must be the printed revolutions at the printed speed."""
     p = run("static", "6205", "--fr", "50 kN", "--speed", "1500")
     line = next(ln for ln in p.stdout.splitlines() if ln.startswith("basic rating life L10 ="))
     rev = float(line.split("(")[1].split("×")[0])
