@@ -59,3 +59,36 @@ def test_a_pure_moment_is_not_called_no_load():
     text = p.stdout + p.stderr
     assert "no load: infinite rating life" not in text
     assert "no radial or axial load (P = 0)" in text and "reference rating life L10r = " in text
+
+
+def test_lubrication_reports_the_static_solutions_limit_warnings():
+    """`lubrication` under a load far past the contact's static limit printed no warning, while `static` on the same
+    inputs warns of the contact pressure and s0 < 1: the same warnings now, in the text and the JSON."""
+    args = ["skf-7011-cdga-hc", "--fa", "1e6", "--speed", "10000"]
+    st = run("static", *args, "--json")
+    lu = run("lubrication", *args, "--json")
+    import json
+
+    ws, wl = json.loads(st.stdout)["warnings"], json.loads(lu.stdout)["warnings"]
+    assert ws and wl == ws, (ws, wl)
+    text = run("lubrication", *args).stdout
+    assert sum(ln.startswith("warning: ") for ln in text.splitlines()) == len(ws), text
+
+
+def test_a_tilt_past_a_few_degrees_is_refused_on_both_paths():
+    """--tilt fixed --misalignment "90 deg" was solved to "converged" with γz = 1571 mrad and M_z = 3.6e6 N·m; a
+    tilt past MAX_MISALIGNMENT (0.1 rad) is now an input error naming the option (CLI) or the argument (library),
+    and a tilt of arc minutes still solves."""
+    from bearingsim.errors import InputError
+    from bearingsim.io import load_bearing
+    from bearingsim.statics.jones_harris import MAX_MISALIGNMENT, Loads, solve
+
+    p = run("static", "6205", "--fr", "2000", "--speed", "1500", "--tilt", "fixed", "--misalignment", "90 deg")
+    assert p.returncode == 2, p.stderr
+    err = error_lines(p)
+    assert len(err) == 1 and err[0].startswith("error: --misalignment: "), p.stderr
+    with pytest.raises(InputError) as e:
+        solve(load_bearing("6205"), Loads(fr_y=2000.0), 157.0, tilt="fixed", misalignment=(0.0, 1.01 * MAX_MISALIGNMENT))
+    assert e.value.field == "misalignment"
+    ok = solve(load_bearing("6205"), Loads(fr_y=2000.0), 157.0, tilt="fixed", misalignment=(0.0, 5.8e-4))
+    assert ok.converged

@@ -88,6 +88,8 @@ def lubrication(
     rep["friction"] = friction_summary(res, lubricant, t, lubrication_method=lubrication_method, roughness=sigma,
                                        n_slices=slices, traction_model=model, oil_flow=flow,
                                        oil_volume_fraction=oil_fraction)
+    # the static solution's limits (contact pressure, contact angle, speed, lift-off), as `static` reports them
+    rep["warnings"] = list(getattr(res, "warnings", ()))
     if as_json:
         typer.echo(json.dumps(rep))
     else:
@@ -180,6 +182,8 @@ def _print_report(rep: dict, name: str) -> None:
     con.print(f"total power loss {rep['total_power_loss_W']:.2f} W")
     if rep.get("friction"):
         _print_friction(con, rep["friction"])
+    for w in rep.get("warnings", ()):
+        con.print(f"[yellow]warning:[/] {w}")
 
 
 def lubricants(as_json: JsonOpt = False):

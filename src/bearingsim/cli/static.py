@@ -116,7 +116,11 @@ def _tilt_options(tilt, misalignment) -> tuple[str, tuple[float, float]]:
         return t, (0.0, 0.0)
     if t != "fixed":
         raise InputError("--misalignment", "a misalignment needs the tilt held", "add --tilt fixed")
-    return t, (0.0, parse_quantity(misalignment, "angle", "--misalignment"))
+    gamma = (0.0, parse_quantity(misalignment, "angle", "--misalignment"))
+    from ..statics.jones_harris import check_misalignment
+
+    check_misalignment(gamma, "--misalignment")
+    return t, gamma
 
 
 def _ring_model(value, bearing=None) -> str:

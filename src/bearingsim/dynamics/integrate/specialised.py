@@ -30,6 +30,7 @@ from __future__ import annotations
 import functools
 import hashlib
 import os
+import warnings
 
 import numpy as np
 from numba import njit
@@ -41,6 +42,13 @@ from . import dopri5, multirate, ros2, ros34pw2
 #: src/bearingsim
 PACKAGE_DIR = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 _DIGEST: str | None = None
+
+# The kernels here hand compiled functions (the right-hand sides) to the integrators as values, which numba calls an
+# experimental feature and warns of at every compilation ("First-class function type feature is experimental",
+# printed at a user's first run).  The results are pinned by the engine's tests, not by numba's label: the notice
+# is silenced for the warnings numba attributes to this package's kernels only.
+warnings.filterwarnings("ignore", message="First-class function type feature is experimental",
+                        module=r"bearingsim(\.|$)")
 
 
 def kernel_sources(root: str = PACKAGE_DIR) -> list[str]:
