@@ -144,6 +144,23 @@ def kinematics(si, ci, so, co, gam):
 
 
 @njit(cache=True, error_model="numpy")
+def rolling_angles(si, ci, so, co, di, do):
+    """The contact angles (sin, cos) Jones' rolling relations take, inner then outer, and whether the inner or the
+    outer one was replaced: the geometric ones, except for an open contact (approach di or do ≤ 0 [m]) whose groove
+    centre the ball has passed (cos < 0: an unloaded ball opposite a radial load heavy enough to carry the inner
+    groove centre past it), which takes the other contact's angle.  The relations divide by
+    (cos α_o + tan β sin α_o)/(1 + γ′ cos α_o) + (cos α_i + tan β sin α_i)/(1 − γ′ cos α_i), which is 0 for such a
+    ball: 6205 under 50 kN radial did not converge at any speed above 0 (residual NaN), while it did at rest."""
+    inv_i = di <= 0.0 and ci < 0.0 and not (do <= 0.0 and co < 0.0)
+    inv_o = do <= 0.0 and co < 0.0 and not inv_i
+    if inv_i:
+        return so, co, so, co, True, False
+    if inv_o:
+        return si, ci, si, ci, False, True
+    return si, ci, so, co, False, False
+
+
+@njit(cache=True, error_model="numpy")
 def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac):
     """Residual, ring force and analytic derivatives for one ball.
 
@@ -195,29 +212,30 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
     fc = 0.0
     g_si = g_ci = g_so = g_co = 0.0
     f_si = f_ci = f_so = f_co = 0.0
+    ksi, kci, kso, kco, inv_i, inv_o = rolling_angles(si, ci, so, co, di, do)
     if cg > 0.0 or cf > 0.0:
         if inner_ctrl:
-            den = ci - gam
+            den = kci - gam
             if den == 0.0:
                 den = math.nan  # β = 90°: outside the rolling relations (NaN residual, never a crash)
-            t = si / den
+            t = ksi / den
             t_si = 1.0 / den
-            t_ci = -si / (den * den)
+            t_ci = -ksi / (den * den)
             t_so = 0.0
             t_co = 0.0
         else:
-            den = co + gam
+            den = kco + gam
             if den == 0.0:
                 den = math.nan
-            t = so / den
+            t = kso / den
             t_si = 0.0
             t_ci = 0.0
             t_so = 1.0 / den
-            t_co = -so / (den * den)
-        ao = 1.0 + gam * co
-        ai = 1.0 - gam * ci
-        po = (co + t * so) / ao
-        pi = (ci + t * si) / ai
+            t_co = -kso / (den * den)
+        ao = 1.0 + gam * kco
+        ai = 1.0 - gam * kci
+        po = (kco + t * kso) / ao
+        pi = (kci + t * ksi) / ai
         s = po + pi
         if s == 0.0:
             # no rolling solution at these contact angles (Jones' relations divide by po + pi):
@@ -232,15 +250,15 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
         g_pi = -2.0 * cg * t * po / s3
         f_po = 2.0 * cf * po * pi / s3
         f_pi = -2.0 * cf * po * po / s3
-        # partials with respect to (si, ci, so, co), including those through t
-        po_t = so / ao
-        pi_t = si / ai
+        # partials with respect to (ksi, kci, kso, kco), including those through t
+        po_t = kso / ao
+        pi_t = ksi / ai
         dpo_si = po_t * t_si
         dpo_ci = po_t * t_ci
         dpo_so = t / ao + po_t * t_so
-        dpo_co = (1.0 - gam * t * so) / (ao * ao) + po_t * t_co
+        dpo_co = (1.0 - gam * t * kso) / (ao * ao) + po_t * t_co
         dpi_si = t / ai + pi_t * t_si
-        dpi_ci = (1.0 + gam * t * si) / (ai * ai) + pi_t * t_ci
+        dpi_ci = (1.0 + gam * t * ksi) / (ai * ai) + pi_t * t_ci
         dpi_so = pi_t * t_so
         dpi_co = pi_t * t_co
         g_si = g_t * t_si + g_po * dpo_si + g_pi * dpi_si
@@ -251,6 +269,18 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
         f_ci = f_po * dpo_ci + f_pi * dpi_ci
         f_so = f_po * dpo_so + f_pi * dpi_so
         f_co = f_po * dpo_co + f_pi * dpi_co
+        if inv_i:  # the inner angle was the outer one: its partials are the outer angle's
+            g_so += g_si
+            g_co += g_ci
+            f_so += f_si
+            f_co += f_ci
+            g_si = g_ci = f_si = f_ci = 0.0
+        elif inv_o:
+            g_si += g_so
+            g_ci += g_co
+            f_si += f_so
+            f_ci += f_co
+            g_so = g_co = f_so = f_co = 0.0
     fx = qi * si + lam_i * g * ci
     fr = qi * ci - lam_i * g * si
     ox = -qo * so - lam_o * g * co

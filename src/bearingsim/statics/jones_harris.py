@@ -722,7 +722,8 @@ def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.nd
         for j in range(z):
             bo = ballout[r, j]
             si, ci, so, co = bo[8], bo[9], bo[10], bo[11]
-            kin = kn.kinematics(si, ci, so, co, gam)
+            ksi, kci, kso, kco, _, _ = kn.rolling_angles(si, ci, so, co, bo[4], bo[5])
+            kin = kn.kinematics(ksi, kci, kso, kco, gam)
             ctrl = int(lam[r, j])
             wm, wr, beta = kin[3 * ctrl] * omega, kin[3 * ctrl + 1] * omega, kin[3 * ctrl + 2]
             cols["row"].append(r)
