@@ -92,3 +92,23 @@ def test_a_tilt_past_a_few_degrees_is_refused_on_both_paths():
     assert e.value.field == "misalignment"
     ok = solve(load_bearing("6205"), Loads(fr_y=2000.0), 157.0, tilt="fixed", misalignment=(0.0, 5.8e-4))
     assert ok.converged
+
+
+def test_simulate_says_when_its_start_is_past_a_physical_limit(tmp_path):
+    """A case under 10¹² N ran to exit 0 with nothing said (ring displacement −5 m in the file): the warnings of its
+    quasi-static start (contact pressure, contact angle, s0) are now printed and in the JSON summary."""
+    import json
+    from pathlib import Path
+
+    case = Path(__file__).resolve().parents[2] / "examples" / "spindle-7011.toml"
+    text = case.read_text(encoding="utf-8")
+    assert '\nfa = "' in text
+    lines = [('fa = "1e12 N"' if ln.startswith("fa = ") else ln) for ln in text.splitlines()]
+    huge = tmp_path / "huge.toml"
+    huge.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    p = run("simulate", huge, "--out", tmp_path / "h.nc", "--duration", "0.05 ms", "--json")
+    summary = json.loads(p.stdout)
+    ws = summary["initial_static_warnings"]
+    assert any("contact pressure" in w for w in ws), ws
+    said = [ln for ln in error_lines(p) if ln.startswith("warning: the quasi-static start at t = 0: ")]
+    assert len(said) == len(ws), p.stderr

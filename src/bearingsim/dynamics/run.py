@@ -135,6 +135,8 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
 
     threads = resolve_threads(threads)  # (bad input fails before the start is solved)
     model, loadspec, y0, static = build(case)
+    for w in getattr(static, "warnings", ()):  # the start past a physical limit (contact pressure, angle, s0 < 1)
+        _note(console, f"warning: the quasi-static start at t = 0: {w}")
     fp = case.fingerprint()
     stepper = Stepper(model, loadspec, y0, tol=case.tolerance, h=min(1e-7, case.output_interval),
                       method=case.method, threads=threads, dense=dense, multirate=case.multirate)
@@ -257,7 +259,8 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
                "threads": stepper.threads,
                "rejected_steps": stepper.rejected,
                "wall_per_simulated_second": wall / max(t_out - t_sim0, 1e-30),
-               "initial_static_converged": bool(static.converged)}
+               "initial_static_converged": bool(static.converged),
+               "initial_static_warnings": list(getattr(static, "warnings", ()))}
     res = Results(data=stack_samples(samples_mem) if writer is None else None, attrs=attrs,
                   path=str(out_path) if out_path else None, summary=summary)
     if error is not None:
