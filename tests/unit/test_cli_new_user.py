@@ -31,6 +31,12 @@ def error_lines(p) -> list[str]:
     (["reproduce", "hub-static", "--points", "100000000"], "--points", "2..10001"),
     # a series the catalogue does not hold printed an empty table, exit 0
     (["catalog", "--series", "99"], "--series", "62"),
+    # clearance took a 1 km interference (operating clearance −832 m), 10⁶ rpm (static refuses it), 5000 °C, and a
+    # key given twice (the last one won silently)
+    (["clearance", "6205", "--shaft-fit", "1e9"], "--shaft-fit", "µm per mm"),
+    (["clearance", "6205", "--speed", "1e6 rpm"], "--speed", "n·d_m"),
+    (["clearance", "6205", "--temperatures", "inner=5000 degC"], "--temperatures inner", "500 °C"),
+    (["clearance", "6205", "--temperatures", "inner=70 degC,inner=80 degC"], "--temperatures", "twice"),
 ])
 def test_an_input_the_command_cannot_take_is_one_line_exit_2(args, field, words, tmp_path):
     p = run(*args, *(["--out", tmp_path / "o"] if args[0] == "reproduce" else []))

@@ -43,6 +43,15 @@ _TEMPERATURES = {"inner": "inner_ring_temperature", "outer": "outer_ring_tempera
                  "reference": "reference_temperature"}
 
 
+#: the largest diametral interference a fit option takes: 5 µm per mm of the seat's diameter (the tightest ISO 286
+#: classes for bearing seats give ≈ 1 µm/mm), or 1 mm where the file gives no seat diameter [m]
+MAX_FIT_PER_DIAMETER = 5e-3
+MAX_FIT = 1e-3
+#: the temperatures ``--temperatures`` takes [K]: −100 … 500 °C (past every bearing steel's service range)
+T_MIN = 173.15
+T_MAX = 773.15
+
+
 def _fit(value: str, option: str, bearing) -> tuple[float, dict | None]:
     """A fit option → (diametral interference [m], the tolerance-class details or None): an ISO 286 class
     (:func:`bearingsim.catalogue.fit_interference`, mean of its limits), a bare number in µm, or a length."""
@@ -64,9 +73,18 @@ def _fit(value: str, option: str, bearing) -> tuple[float, dict | None]:
         lo, mean, hi = fit_interference(text, size, seat)
         return mean, {"class": text, "min_m": lo, "mean_m": mean, "max_m": hi}
     try:
-        return float(text) * 1e-6, None
+        v = float(text) * 1e-6
     except ValueError:
-        return parse_quantity(text, "length", option), None
+        v = parse_quantity(text, "length", option)
+    seat = "shaft" if option == "--shaft-fit" else "housing"
+    row = bearing.rows[0].bearing
+    size = row.bore if seat == "shaft" else row.outside_diameter
+    limit = MAX_FIT_PER_DIAMETER * size if size and size > 0 else MAX_FIT
+    if not abs(v) <= limit:
+        raise InputError(option, f"an interference of {v * 1e6:.4g} µm is past any mounting fit (at most "
+                         f"{limit * 1e6:.4g} µm here, {MAX_FIT_PER_DIAMETER * 1e3:.0f} µm per mm of the seat)",
+                         "give a tolerance class (e.g. k5) or the interference in µm, e.g. 10")
+    return v, None
 
 
 def parse_temperatures(text: str) -> dict:
@@ -84,7 +102,13 @@ def parse_temperatures(text: str) -> dict:
             raise InputError("--temperatures", f"{part!r} is not KEY=TEMPERATURE with a known key",
                              f"keys: {', '.join(k for k in _TEMPERATURES if k != 'ball')}, e.g. "
                              '"inner=70 degC,outer=55 degC"')
-        out[_TEMPERATURES[key]] = parse_quantity(value.strip(), "temperature", f"--temperatures {key}")
+        if _TEMPERATURES[key] in out:
+            raise InputError("--temperatures", f"{key} is given twice", 'give each part once, e.g. "inner=70 degC"')
+        t = parse_quantity(value.strip(), "temperature", f"--temperatures {key}")
+        if not T_MIN <= t <= T_MAX:
+            raise InputError(f"--temperatures {key}", f"{t - 273.15:.6g} °C is outside {T_MIN - 273.15:.0f} … "
+                             f"{T_MAX - 273.15:.0f} °C (past any bearing steel's service range)", 'e.g. "70 degC"')
+        out[_TEMPERATURES[key]] = t
     return out
 
 
@@ -103,7 +127,10 @@ def operating_conditions(bearing, shaft_fit=None, housing_fit=None, temperatures
     if temperatures:
         kw.update(parse_temperatures(temperatures))
     if speed is not None:
+        from ..limits import check_speed
+
         kw["speed"] = parse_quantity(speed, "speed", "--speed")
+        check_speed(kw["speed"], bearing.rows[0].bearing.pitch_diameter, "--speed")
     if shaft_bore is not None:
         kw["shaft_bore"] = parse_quantity(shaft_bore, "length", "--shaft-bore", require_unit=True)
     if housing_od is not None:
