@@ -118,3 +118,33 @@ def test_simulate_says_when_its_start_is_past_a_physical_limit(tmp_path):
     assert any("contact pressure" in w for w in ws), ws
     said = [ln for ln in error_lines(p) if ln.startswith("warning: the quasi-static start at t = 0: ")]
     assert len(said) == len(ws), p.stderr
+
+
+@pytest.mark.parametrize("args, start", [
+    # the library's argument names had reached the user instead of the options typed
+    (["map", "6205", "--fr", "abc"], "error: --fr: "),
+    (["map", "6205", "--fr", "1000:2000:2", "--chunk", "0"], "error: --chunk: "),
+    (["static", "6205", "--fr", "1000", "--control", "bogus"], "error: --control: "),
+    (["export", "ross", "6205", "--fr", "1000", "--speed", "0:100:2", "--node", "-1", "--out", "{d}/x.toml"],
+     "error: --node: "),
+    # an empty name was "'.' is a directory"
+    (["static", ""], "error: bearing: the name is empty"),
+])
+def test_errors_name_the_option_the_user_typed(args, start, tmp_path):
+    p = run(*[a.replace("{d}", str(tmp_path)) for a in args])
+    assert p.returncode == 2, p.stderr
+    err = error_lines(p)
+    assert len(err) == 1 and err[0].startswith(start), p.stderr
+
+
+def test_a_pasted_value_is_shortened_not_the_fix():
+    """A 5,000-character bearing name: the line was cut at 400 characters, the fix lost (and an OSError 'file name
+    too long' underneath); now the value is shortened and the fix kept; an unknown designation gets its neighbours
+    (the full catalogue list had been cut mid-list)."""
+    p = run("static", "x" * 5000)
+    err = error_lines(p)
+    assert p.returncode == 2 and len(err) == 1 and len(err[0]) < 400, p.stderr
+    assert "(5000 characters)" in err[0] and err[0].endswith("or give a path to a .toml file)"), err[0]
+    p = run("static", "6299")
+    assert error_lines(p) == ["error: bearing: '6299' is neither a catalogue name nor a TOML file (did you mean 6219 "
+                              "or 6209?)"], p.stderr

@@ -194,18 +194,15 @@ def catalog(
     as_json: JsonOpt = False,
 ):
     """List the built-in bearing catalogue (filters --series, --bore, --type), or show one entry with its sources."""
-    import difflib
 
     from ..errors import InputError
     from ..io import catalog_entries, catalog_names
+    from ..io.bearing import unknown_bearing_fix
 
     if name is not None:
         names = catalog_names()
         if name not in names and not name.lower().endswith(".toml"):
-            close = difflib.get_close_matches(name, names, n=5, cutoff=0.6)
-            fix = (f"did you mean {' or '.join(close)}?" if close else
-                   "bearingsim catalog lists the entries")
-            raise InputError("bearing", f"{name!r} is not in the catalogue", fix)
+            raise InputError("bearing", f"{name!r} is not in the catalogue", unknown_bearing_fix(name))
         d = entry_details(name)
         if as_json:
             typer.echo(json.dumps(d))

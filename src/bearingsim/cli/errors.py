@@ -69,6 +69,31 @@ def _os_error_line(exc: OSError) -> str:
     return _one_line(f"error: {name}: {what}" if name else f"error: {what}")
 
 
+#: the library's argument names whose command-line option is spelled otherwise
+OPTION_OF = {"chunk_points": "--chunk", "n": "--node"}
+
+
+def _option_of(field: str, argv: list[str]) -> str:
+    """The command-line option for an :class:`InputError`'s field: the library names its arguments (``fr``,
+    ``control``, ``workers``, ``chunk_points``), the user typed options (``--fr``, ``--chunk``) — the option when the
+    command line holds it, else the field as it is."""
+    if field.startswith("-") or not field.isidentifier():
+        return field
+    given = {a.split("=", 1)[0] for a in argv if a.startswith("--")}
+    for opt in (OPTION_OF.get(field), "--" + field.replace("_", "-")):
+        if opt is not None and opt in given:
+            return opt
+    return field
+
+
+def _input_line(exc: InputError, argv: list[str] | None = None) -> str:
+    """``error: FIELD: PROBLEM (FIX)`` on one line; a long problem (it may quote a pasted value) is shortened, never
+    the field or the fix."""
+    field = _option_of(str(exc.field), list(sys.argv[1:] if argv is None else argv))
+    fix = f" ({' '.join(str(exc.fix).split())})" if exc.fix else ""
+    return f"error: {field}: {_one_line(exc.problem, limit=240)}{fix}"
+
+
 def error_message(exc: BaseException) -> tuple[str | None, int]:
     """The one line (None: already shown, e.g. help) and the exit status for an exception that ended a command.
 
@@ -98,7 +123,7 @@ def error_message(exc: BaseException) -> tuple[str | None, int]:
             return None, code
         return _usage_line(exc), (ExitCode.USAGE if code == ExitCode.USAGE else code)
     if isinstance(exc, InputError):
-        return _one_line(f"error: {exc}"), ExitCode.USAGE
+        return _input_line(exc), ExitCode.USAGE
     if isinstance(exc, BearingSimError):
         return _one_line(f"error: {exc}"), ExitCode.FAILED
     if isinstance(exc, OSError):

@@ -104,13 +104,34 @@ def resolve_bearing_data(spec: str | Path) -> dict:
                          f"{type(spec).__name__} {spec!r}"[:200], f"use one of {', '.join(catalog_names())} "
                          "or a path to a .toml file")
     spec_s = str(spec)
+    if not spec_s.strip():
+        raise InputError("bearing", "the name is empty", "give a catalogue designation, e.g. 6205 (bearingsim catalog "
+                         "lists them), or a path to a .toml file")
     if spec_s in catalog_names():
         return _read_catalog(spec_s)
     p = Path(spec_s)
-    if p.suffix.lower() == ".toml" or p.exists():
+    try:
+        a_file = p.suffix.lower() == ".toml" or p.exists()
+    except OSError:  # e.g. a name longer than the system allows for a path
+        a_file = False
+    if a_file:
         return read_toml(p, "bearing")
-    raise InputError("bearing", f"{spec_s!r} is neither a catalogue name nor a TOML file",
-                     f"use one of {', '.join(catalog_names())} or a path to a .toml file")
+    shown = repr(spec_s) if len(spec_s) <= 80 else repr(spec_s[:80]) + f"… ({len(spec_s)} characters)"
+    raise InputError("bearing", f"{shown} is neither a catalogue name nor a TOML file", unknown_bearing_fix(spec_s))
+
+
+def unknown_bearing_fix(name: str) -> str:
+    """The fix for a bearing name the catalogue does not hold: its closest designations, else where the list is."""
+    import difflib
+
+    names = catalog_names()
+    close = difflib.get_close_matches(name, names, n=5, cutoff=0.6) if len(name) <= 80 else []
+    if not close:  # the designations that share the longest start with it (at least 3 characters)
+        common = [(len(os.path.commonprefix([name.lower(), n.lower()])), n) for n in names]
+        best = max((k for k, _ in common), default=0)
+        close = [n for k, n in common if k == best][:5] if best >= 3 else []
+    return (f"did you mean {' or '.join(close)}?" if close else
+            "bearingsim catalog lists the catalogue; or give a path to a .toml file")
 
 
 def load_bearing(spec: str | Path):
