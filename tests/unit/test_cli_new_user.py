@@ -148,3 +148,26 @@ def test_a_pasted_value_is_shortened_not_the_fix():
     p = run("static", "6299")
     assert error_lines(p) == ["error: bearing: '6299' is neither a catalogue name nor a TOML file (did you mean 6219 "
                               "or 6209?)"], p.stderr
+
+
+def test_a_report_refuses_another_bearings_map(tmp_path):
+    """`report 6205 --map M` with M made for the 7011 drew the 7011's stiffness under the 6205's name (exit 0): now
+    one line naming --map, exit 2, before anything is written; the same map with its own bearing still works."""
+    m = tmp_path / "m7011.nc"
+    assert run("map", "skf-7011-cdga-hc", "--fa", "1000:2000:2", "--speed", "0:6000:3", "--out", m).returncode == 0
+    p = run("report", "6205", "--fr", "1000", "--map", m, "--out", tmp_path / "rep")
+    assert p.returncode == 2, p.stderr
+    err = error_lines(p)
+    assert len(err) == 1 and err[0].startswith("error: --map: m7011.nc is a map of SKF 7011"), p.stderr
+    assert not (tmp_path / "rep" / "report.html").exists()
+    ok = run("report", "skf-7011-cdga-hc", "--fa", "1000", "--map", m, "--out", tmp_path / "rep2")
+    assert ok.returncode == 0 and (tmp_path / "rep2" / "report.html").is_file(), ok.stderr
+
+
+def test_the_spindle_study_says_when_it_compares_two_bearings(tmp_path):
+    """`reproduce spindle-axial-stiffness --bearing 6205` printed "deviation" columns against the paper's 7011
+    values without a word; now a note says so (and none for the paper's own bearing)."""
+    other = run("reproduce", "spindle-axial-stiffness", "--bearing", "6205", "--out", tmp_path / "a")
+    own = run("reproduce", "spindle-axial-stiffness", "--out", tmp_path / "b")
+    assert other.returncode == 0 and own.returncode == 0, other.stderr + own.stderr
+    assert "they compare two bearings" in other.stdout and "they compare two bearings" not in own.stdout

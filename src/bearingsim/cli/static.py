@@ -301,9 +301,13 @@ def print_static(res, friction=None) -> None:
 SpindleOut = out_option("Folder for the CSV and the Fig. 5 plot")
 
 
+#: the bearing of [S0] (the reference values of ``reproduce spindle-axial-stiffness``)
+PAPER_BEARING = "skf-7011-cdga-hc"
+
+
 def reproduce_spindle(
     out: SpindleOut = Path("out"),
-    bearing: str = typer.Option("skf-7011-cdga-hc", "--bearing", help="Bearing to use (catalogue or TOML)"),
+    bearing: str = typer.Option(PAPER_BEARING, "--bearing", help="Bearing to use (catalogue or TOML)"),
     rings: str = typer.Option("rigid", "--rings", help="rigid, or fe: adds the axial stiffness with elastic (FE) "
                               "rings next to the paper's FEM column (T3)"),
 ):
@@ -319,6 +323,9 @@ def reproduce_spindle(
     study = run_study(load_bearing(bearing), rings=rings)
     con = make_console()
     study.print_tables(con)
+    if bearing != PAPER_BEARING:
+        con.print(f"[yellow]note:[/] the paper's columns and the deviations are [S0]'s values for its SKF 7011 CDGA/HC "
+                  f"({PAPER_BEARING}), not for {bearing}: they compare two bearings")
     csv, png = write_study(study, out, "spindle_axial_stiffness.csv", "spindle_axial_stiffness_fig5.png")
     con.print(f"wrote {csv} and {png}")
 

@@ -170,6 +170,23 @@ def _figures(res, d: dict, out: Path, stem: str) -> list[tuple[str, str]]:
     return figs
 
 
+def _check_map_bearing(map_file: Path, bearing) -> None:
+    """An :class:`InputError` when the map file was made for another bearing (its ``bearing`` attribute, written by
+    :func:`bearingsim.sweep.map_grid`): the report had drawn another bearing's stiffness under this one's name.
+    Checked before anything is computed; a file that cannot be read is :func:`_map_figure`'s to report."""
+    import xarray as xr
+
+    try:
+        with xr.open_dataset(map_file) as ds:
+            made_for = ds.attrs.get("bearing")
+    except (OSError, ValueError):
+        return
+    name = getattr(bearing, "name", None)
+    if made_for is not None and name is not None and str(made_for) != str(name):
+        raise InputError("map", f"{map_file.name} is a map of {made_for}, not of {name}",
+                         "make the map of this bearing: bearingsim map BEARING --speed … --out FILE.nc")
+
+
 def _map_figure(map_file: Path, out: Path, stem: str):
     """Axial and radial stiffness against speed per axial load, from a map file (``bearingsim map``)."""
     import matplotlib
@@ -231,6 +248,8 @@ def bearing_report(bearing, loads, speed: float = 0.0, *, out_dir, lubricant=Non
     from ..statics.jones_harris import solve
 
     b = load_bearing(bearing)
+    if map_file is not None:
+        _check_map_bearing(Path(map_file), b)
     out = Path(out_dir)
     if lubricant is not None and temperature is None:
         raise InputError("temperature", "a lubricant needs its operating temperature", 'e.g. --temperature "60 degC"')
