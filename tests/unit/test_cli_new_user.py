@@ -171,3 +171,16 @@ def test_the_spindle_study_says_when_it_compares_two_bearings(tmp_path):
     own = run("reproduce", "spindle-axial-stiffness", "--out", tmp_path / "b")
     assert other.returncode == 0 and own.returncode == 0, other.stderr + own.stderr
     assert "they compare two bearings" in other.stdout and "they compare two bearings" not in own.stdout
+
+
+@pytest.mark.parametrize("args, field", [
+    # 100,000 elements per pitch ran out of memory ("error: out of memory", exit 1)
+    (["cage-modes", "6205", "--elements-per-pitch", "100000"], "--elements-per-pitch"),
+    # a 1 mm pocket for a 7.9 mm ball gave modes, exit 0
+    (["cage-modes", "6205", "--pocket-diameter", "1 mm"], "--pocket-diameter"),
+])
+def test_cage_inputs_past_sense_are_refused(args, field):
+    p = run(*args)
+    assert p.returncode == 2, p.stderr
+    err = error_lines(p)
+    assert len(err) == 1 and err[0].startswith(f"error: {field}: "), p.stderr
