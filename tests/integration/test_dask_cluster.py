@@ -221,6 +221,6 @@ def test_cli_unreachable_scheduler_is_one_line_exit_2(tmp_path):
     rc, _, err = _finish(_map(["--scheduler", "tcp://127.0.0.1:1"], tmp_path / "m.nc"), timeout=30)
     assert rc == 2
     lines = err.strip().splitlines()
-    assert len(lines) == 1 and lines[0].startswith("error: scheduler:"), err
+    assert len(lines) == 1 and lines[0].startswith("error: --scheduler:"), err
     assert time.monotonic() - t0 < 20
     assert list(tmp_path.iterdir()) == []
