@@ -355,7 +355,7 @@ def test_cli_map_on_a_full_disk_is_one_line_exit_2_and_leaves_nothing(tmp_path):
     out.parent.mkdir()
     r = subprocess.run(args + [str(out)], capture_output=True, timeout=120, preexec_fn=limit)
     lines = r.stderr.decode().strip().splitlines()
-    assert r.returncode == 2 and len(lines) == 1 and lines[0].startswith("error: out:"), r.stderr.decode()
+    assert r.returncode == 2 and len(lines) == 1 and lines[0].startswith("error: --out:"), r.stderr.decode()
     assert list(out.parent.iterdir()) == []
 
 
