@@ -24,6 +24,9 @@ class ExitCode(enum.IntEnum):
     USAGE = 2
     #: interrupted by the user (Ctrl-C)
     INTERRUPTED = 130
+    #: the reader of standard output closed it early (``| head``): 128 + SIGPIPE, as shell tools end then — not
+    #: FAILED, which a script would read as "not converged"
+    BROKEN_PIPE = 141
 
 
 class BearingSimError(Exception):

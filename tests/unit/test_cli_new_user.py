@@ -184,3 +184,18 @@ def test_cage_inputs_past_sense_are_refused(args, field):
     assert p.returncode == 2, p.stderr
     err = error_lines(p)
     assert len(err) == 1 and err[0].startswith(f"error: {field}: "), p.stderr
+
+
+@pytest.mark.parametrize("args", [["static", "6205", "--fr", "1000", "--speed", "1500"],
+                                  ["static", "6205", "--fr", "1000", "--speed", "1500", "--json"],
+                                  ["catalog"]])
+def test_a_closed_stdout_ends_with_141_not_the_status_of_not_converged(args):
+    """`bearingsim static … | head -1` ended with status 1 (rich's handling of a broken pipe), which the command
+    line reserves for "not converged": now 141 (128 + SIGPIPE, as shell tools), nothing on stderr.  The reader
+    here closes the pipe before the command writes, so every write meets the broken pipe."""
+    env = {k: v for k, v in os.environ.items() if k != "BEARINGSIM_DEBUG"}
+    p = subprocess.Popen([SCRIPT, *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    p.stdout.close()
+    err = p.stderr.read().decode()
+    assert p.wait(timeout=600) == 141, err
+    assert error_lines(type("P", (), {"stderr": err})()) == [], err

@@ -69,9 +69,20 @@ def main(argv: list[str] | None = None) -> None:
 
     try:
         rc = app(args=argv, prog_name="bearingsim", standalone_mode=False)
-    except SystemExit:
+    except SystemExit as exc:
         finish_compilation_note()
+        if exc.code == 1 and type(sys.stdout).__name__ == "PacifyFlushWrapper":
+            # click's own handling of a broken stdout (typer.echo): status 1 with stdout wrapped to write nothing
+            from .console import quiet_stdout
+
+            quiet_stdout()
+            sys.exit(ExitCode.BROKEN_PIPE)
         raise
+    except BrokenPipeError:  # stdout's reader has gone (`| head`): end quietly, as shell tools do
+        from .console import quiet_stdout
+
+        quiet_stdout()
+        sys.exit(ExitCode.BROKEN_PIPE)
     except BaseException as exc:  # noqa: BLE001 - the one place where an error becomes a line and a status
         finish_compilation_note()
         sys.exit(report_error(exc))

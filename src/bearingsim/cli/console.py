@@ -11,10 +11,33 @@ def make_console(stderr: bool = False):
     so that tables are not truncated to 80 columns."""
     from rich.console import Console
 
-    con = Console(stderr=stderr)
+    class _Console(Console):
+        def on_broken_pipe(self) -> None:
+            """stdout's reader has gone (``| head``): rich's own handling ends with status 1, which this command
+            line reserves for "not converged"; end with :attr:`~bearingsim.errors.ExitCode.BROKEN_PIPE` instead."""
+            from ..errors import ExitCode
+
+            self.quiet = True
+            quiet_stdout()
+            raise SystemExit(ExitCode.BROKEN_PIPE)
+
+    con = _Console(stderr=stderr)
     if not con.is_terminal:
-        con = Console(stderr=stderr, width=160)
+        con = _Console(stderr=stderr, width=160)
     return con
+
+
+def quiet_stdout() -> None:
+    """Point stdout at the null device (its reader has gone), so that nothing written later, nor Python's flush at
+    exit, fails again (the recipe of the Python docs' note on SIGPIPE)."""
+    import os
+    import sys
+
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError, AttributeError):
+        pass
 
 
 class _CompileNote:
