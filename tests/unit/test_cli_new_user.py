@@ -198,4 +198,4 @@ def test_a_closed_stdout_ends_with_141_not_the_status_of_not_converged(args):
     p.stdout.close()
     err = p.stderr.read().decode()
     assert p.wait(timeout=600) == 141, err
-    assert error_lines(type("P", (), {"stderr": err})()) == [], err
+    assert [ln for ln in err.splitlines() if ln.strip() and not ln.startswith(("compiling ", "compiled "))] == [], err

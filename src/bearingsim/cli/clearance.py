@@ -62,10 +62,10 @@ def _fit(value: str, option: str, bearing) -> tuple[float, dict | None]:
     from ..units import parse_quantity
 
     text = value.strip()
+    seat = "shaft" if option == "--shaft-fit" else "housing"
+    row = bearing.rows[0].bearing
+    size = row.bore if seat == "shaft" else row.outside_diameter
     if re.fullmatch(r"[a-zA-Z]{1,2}\d", text):
-        seat = "shaft" if option == "--shaft-fit" else "housing"
-        row = bearing.rows[0].bearing
-        size = row.bore if seat == "shaft" else row.outside_diameter
         if not size > 0:
             what = "bore" if seat == "shaft" else "outside_diameter"
             raise InputError(option, f"a tolerance class needs the bearing's {what}, which the file does not give",
@@ -76,9 +76,6 @@ def _fit(value: str, option: str, bearing) -> tuple[float, dict | None]:
         v = float(text) * 1e-6
     except ValueError:
         v = parse_quantity(text, "length", option)
-    seat = "shaft" if option == "--shaft-fit" else "housing"
-    row = bearing.rows[0].bearing
-    size = row.bore if seat == "shaft" else row.outside_diameter
     limit = MAX_FIT_PER_DIAMETER * size if size and size > 0 else MAX_FIT
     if not abs(v) <= limit:
         raise InputError(option, f"an interference of {v * 1e6:.4g} µm is past any mounting fit (at most "

@@ -13,6 +13,7 @@ from typing import Optional
 import typer
 
 from ..errors import InputError
+from ..life import hours_text
 from . import options
 from .console import announce_compilation, make_console
 from .options import (
@@ -192,12 +193,6 @@ def _kn(v) -> str:
     return "—" if v is None else f"{v / 1e3:.4g} kN"
 
 
-def _hours(v) -> str:
-    from ..life import hours_text
-
-    return hours_text(v)
-
-
 def print_rating(con, res, friction=None) -> None:
     """The ratings, lives (hours), static safety and friction of a result, estimates flagged (trade units)."""
     r = getattr(res, "rating", None)
@@ -221,16 +216,16 @@ def print_rating(con, res, friction=None) -> None:
                                   ("reference rating life L10r", l10r, r["reference_rating_life_hours"],
                                    "ISO/TS 16281")):
         if rev is not None:
-            head = f"{_hours(hours)}{at} ({rev:.4g} × 10⁶ rev" if hours is not None else f"{rev:.4g} × 10⁶ rev ("
+            head = f"{hours_text(hours)}{at} ({rev:.4g} × 10⁶ rev" if hours is not None else f"{rev:.4g} × 10⁶ rev ("
             con.print(f"{name} = {head}, {std})".replace("(, ", "("))
     f = r.get("life_factors", {})
     if r.get("modified_rating_life_hours") is not None or r.get("modified_reference_rating_life_hours") is not None:
         con.print(f"modified rating life (reliability {f['reliability_percent']:g} %, a1 = {f['a1']:.3g}, "
                   f"κ = {f['kappa']:.3g} (ν = {f['viscosity_m2_s'] * 1e6:.3g} mm²/s, ν1 = "
                   f"{f['rated_viscosity_m2_s'] * 1e6:.3g} mm²/s), e_C = {f['e_C']:.2g}): "
-                  f"L_nm = {_hours(r['modified_rating_life_hours'])}"
+                  f"L_nm = {hours_text(r['modified_rating_life_hours'])}"
                   + (f" (a_ISO = {f['a_ISO']:.3g})" if "a_ISO" in f else "")
-                  + f", L_nmr = {_hours(r['modified_reference_rating_life_hours'])}"
+                  + f", L_nmr = {hours_text(r['modified_reference_rating_life_hours'])}"
                   + (f" (a_ISO = {f['a_ISO_reference']:.3g})" if "a_ISO_reference" in f else ""))
     s0, s0p = r.get("static_safety_factor"), r.get("static_safety_factor_pressure")
     con.print("static safety: s0 = C0/P0 = " + ("—" if s0 is None else f"{s0:.3g}") + flag("static_load_rating_N")
@@ -240,7 +235,7 @@ def print_rating(con, res, friction=None) -> None:
         lr, s0r = row["reference_rating_life_million_revolutions"], row["static_safety_factor_pressure"]
         lh = row["reference_rating_life_hours"]
         con.print(f"  row {row['row']}: L10r = " + ("—" if lr is None else f"{lr:.4g} × 10⁶ rev")
-                  + ("" if lh is None else f" = {_hours(lh)}") + ", s0 from p_max = "
+                  + ("" if lh is None else f" = {hours_text(lh)}") + ", s0 from p_max = "
                   + ("—" if s0r is None else f"{s0r:.3g}"))
     if friction is not None:
         tq, pw = friction.get("friction_torque_N_m"), friction.get("power_loss_W")

@@ -25,6 +25,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import InputError
+from ..life import hours_text
 from ..units import display_unit
 from . import html as H
 
@@ -41,12 +42,6 @@ def _show(value, si_unit: str, spec: str = ".4g") -> str:
         return "—"
     unit, f = display_unit(si_unit)
     return f"{format(float(value) * f, spec)} {unit}"
-
-
-def _hours(v) -> str:
-    from ..life import hours_text
-
-    return hours_text(v)
 
 
 def _stiffness_unit(i: int, j: int) -> str:
@@ -296,9 +291,9 @@ def bearing_report(bearing, loads, speed: float = 0.0, *, out_dir, lubricant=Non
                  if d["tilt"]["mode"] == "fixed" and d["tilt"].get("reaction_moment_N_m") else []),
                ["axial stiffness K_xx", _show(d["axial_stiffness_N_per_m"], "N/m", ".4g")],
                ["cage speed", _show(d.get("cage_speed_rad_s"), "rad/s", ".5g")],
-               ["basic rating life L10h (ISO 281)", _hours(d.get("basic_rating_life_hours"))],
-               ["modified rating life L_nmh (ISO 281)", _hours(d.get("modified_rating_life_hours"))],
-               ["reference rating life L10rh (ISO/TS 16281)", _hours(d.get("reference_rating_life_hours"))],
+               ["basic rating life L10h (ISO 281)", hours_text(d.get("basic_rating_life_hours"))],
+               ["modified rating life L_nmh (ISO 281)", hours_text(d.get("modified_rating_life_hours"))],
+               ["reference rating life L10rh (ISO/TS 16281)", hours_text(d.get("reference_rating_life_hours"))],
                ["static safety s₀ = C₀/P₀ (ISO 76)", H.fmt(d.get("static_safety_factor"), ".3g")],
                ["static safety from p_max vs 4200 MPa", H.fmt(d.get("static_safety_factor_pressure"), ".3g")]]
     if fr is not None:
