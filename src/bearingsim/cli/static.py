@@ -13,7 +13,6 @@ from typing import Optional
 import typer
 
 from ..errors import InputError
-from ..life import hours_text
 from . import options
 from .console import announce_compilation, make_console
 from .options import (
@@ -195,6 +194,8 @@ def _kn(v) -> str:
 
 def print_rating(con, res, friction=None) -> None:
     """The ratings, lives (hours), static safety and friction of a result, estimates flagged (trade units)."""
+    from ..life import hours_text  # (here, not at the top: `bearingsim --help` loads no numerics)
+
     r = getattr(res, "rating", None)
     if not r:
         return
