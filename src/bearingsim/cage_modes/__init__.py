@@ -68,7 +68,8 @@ uniform ring, its breathing and uniform-twist modes, and Roark's diametral-load 
 (static_deflection).
 """
 
-from .beam import CageFE, assemble, element_matrices
+from ..beam import element_matrices
+from .beam import CageFE, assemble
 from .modes import CageModes, cage_modes
 from .section import (
     NODE_DOF,

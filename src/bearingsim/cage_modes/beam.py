@@ -1,4 +1,5 @@
-"""Frame elements of the cage ring and their assembly (the model: :mod:`bearingsim.cage_modes`)."""
+"""Assembly of the cage ring from the frame elements of :mod:`bearingsim.beam` (the model:
+:mod:`bearingsim.cage_modes`)."""
 
 from __future__ import annotations
 
@@ -7,67 +8,9 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..beam import element_matrices
 from ..errors import InputError
 from .section import CageRing, cowper_shear_coefficient, section_properties
-
-# ---------------------------------------------------------------------------------------------
-# element matrices (local frame: x' along the element, y' in the ring plane, z' = cage x)
-# ---------------------------------------------------------------------------------------------
-# local DOF order per node: u, v, w, θx', θy', θz'; element DOFs 0-5 node a, 6-11 node b
-_BEND_XY = (1, 5, 7, 11)  # v1, θz1, v2, θz2 (bending in the x'-y' plane, about z')
-_BEND_XZ = (2, 4, 8, 10)  # w1, θy1, w2, θy2 (bending in the x'-z' plane, about y')
-_FLIP = np.diag([1.0, -1.0, 1.0, -1.0])  # θy' = −dw/dx' : x'-z' matrices from the x'-y' ones
-
-
-def _bend_k(ei: float, L: float, phi: float) -> np.ndarray:
-    """Shear-deformable bending stiffness (v1, θ1, v2, θ2), θ = dv/dx (Przemieniecki 1968, ch. 5)."""
-    c = ei / ((1.0 + phi) * L**3)
-    return c * np.array([[12.0, 6 * L, -12.0, 6 * L],
-                         [6 * L, (4 + phi) * L**2, -6 * L, (2 - phi) * L**2],
-                         [-12.0, -6 * L, 12.0, -6 * L],
-                         [6 * L, (2 - phi) * L**2, -6 * L, (4 + phi) * L**2]])
-
-
-def _bend_m(rho_a: float, rho_i: float, L: float) -> np.ndarray:
-    """Consistent bending mass (v1, θ1, v2, θ2): Hermite translational + rotary inertia
-    (Przemieniecki 1968, ch. 11, with Φ = 0)."""
-    mt = rho_a * L / 420.0 * np.array([[156.0, 22 * L, 54.0, -13 * L],
-                                       [22 * L, 4 * L**2, 13 * L, -3 * L**2],
-                                       [54.0, 13 * L, 156.0, -22 * L],
-                                       [-13 * L, -3 * L**2, -22 * L, 4 * L**2]])
-    mr = rho_i / (30.0 * L) * np.array([[36.0, 3 * L, -36.0, 3 * L],
-                                        [3 * L, 4 * L**2, -3 * L, -L**2],
-                                        [-36.0, -3 * L, 36.0, -3 * L],
-                                        [3 * L, -L**2, -3 * L, 4 * L**2]])
-    return mt + mr
-
-
-def element_matrices(L: float, sec: dict, E: float, G: float, rho: float, kappa: float,
-                     shear: bool, rotary: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """Local 12 × 12 stiffness and consistent mass of a straight frame element [SI].
-
-    Local axes: x' element axis, y' in the ring plane (radial), z' parallel to the cage axis;
-    I_z' = sec["I_in"] (in-plane bending), I_y' = sec["I_out"] (out-of-plane bending).
-    """
-    A, i_in, i_out, J, ip = sec["A"], sec["I_in"], sec["I_out"], sec["J"], sec["I_p"]
-    r = 1.0 if rotary else 0.0
-    k = np.zeros((12, 12))
-    m = np.zeros((12, 12))
-    bar = np.array([[1.0, -1.0], [-1.0, 1.0]])
-    lin = np.array([[2.0, 1.0], [1.0, 2.0]]) / 6.0
-    ax, tw = [0, 6], [3, 9]
-    k[np.ix_(ax, ax)] = E * A / L * bar
-    k[np.ix_(tw, tw)] = G * J / L * bar
-    m[np.ix_(ax, ax)] = rho * A * L * lin
-    m[np.ix_(tw, tw)] = r * rho * ip * L * lin
-    phi_y = 12.0 * E * i_in / (kappa * G * A * L**2) if shear else 0.0
-    phi_z = 12.0 * E * i_out / (kappa * G * A * L**2) if shear else 0.0
-    ixy, ixz = list(_BEND_XY), list(_BEND_XZ)
-    k[np.ix_(ixy, ixy)] = _bend_k(E * i_in, L, phi_y)
-    k[np.ix_(ixz, ixz)] = _FLIP @ _bend_k(E * i_out, L, phi_z) @ _FLIP
-    m[np.ix_(ixy, ixy)] = _bend_m(rho * A, r * rho * i_in, L)
-    m[np.ix_(ixz, ixz)] = _FLIP @ _bend_m(rho * A, r * rho * i_out, L) @ _FLIP
-    return k, m
 
 
 # ---------------------------------------------------------------------------------------------

@@ -6,8 +6,9 @@ import math
 
 import numpy as np
 
+from ..beam import element_matrices
 from ..errors import InputError
-from .beam import CageFE, element_matrices
+from .beam import CageFE
 from .modes import CageModes
 from .section import cowper_shear_coefficient, rect_torsion_constant
 
