@@ -96,6 +96,89 @@ def assemble_at(rows: np.ndarray, q: np.ndarray, omega: float, control: str, bal
     return res, kmat, lam
 
 
+@dataclass
+class ReactionState:
+    """The ball unknowns of :func:`bearing_reaction` kept between calls (the warm start of a shaft Newton):
+    ``rows`` the row parameters, ``xb`` float[nrow, zmax, 8] ball positions and their tangents dX/dA, ``lam`` the
+    raceway control per ball, ``ballout`` the last ball table; ``converged`` every ball's own balance met at
+    the last call, ``iterations`` its worst ball's iteration count."""
+
+    rows: np.ndarray
+    xb: np.ndarray
+    lam: np.ndarray
+    ballout: np.ndarray
+    converged: bool = True
+    iterations: int = 0
+
+
+def bearing_reaction(bearing, q, speed: float = 0.0, control: str = "outer", state: ReactionState | None = None):
+    """The force of ``bearing`` on its inner ring and its tangent stiffness at the prescribed displacement ``q``
+    = (δx, δy, δz, γy, γz) [m, rad] of the inner ring relative to the outer (from the centred position), at the
+    inner-ring ``speed`` [rad/s] (centrifugal and gyroscopic terms on), without a ring equilibrium: the seam
+    between a bearing and the shaft it sits on.
+
+    Returns (f float[5] = Σ ball forces on the inner ring (Fx, Fy, Fz, My, Mz) about the bearing's load point
+    [N, N·m] — the force the bearing applies to the shaft; the load the bearing carries is −f —, K float[5, 5] =
+    −df/dq [N/m, N/rad, N·m/m, N·m/rad], state :class:`ReactionState`).  Pass the returned ``state`` back to
+    warm start every ball from its last solution (first-order predictor, :func:`._kernels.ring_assemble`); the
+    answer is the same ball equilibrium, found in fewer iterations.  ``state.converged`` is False when a ball's
+    own balance failed (the force is then not an equilibrium of that ball)."""
+    _check_bearing(bearing)
+    _check_control(control)
+    qv = _check_initial(q)
+    omega = float(abs(_number(speed, "speed")))
+    if state is None:
+        rows = bearing.row_vectors()
+        nrow, zmax = rows.shape[0], int(rows[:, kn.P_Z].max())
+        state = ReactionState(rows, np.zeros((nrow, zmax, 8)),
+                              np.full((nrow, zmax), 1 if control == "inner" else 0, dtype=np.int64),
+                              np.zeros((nrow, zmax, 12)))
+    f = np.zeros(5)
+    kmat = np.zeros((5, 5))
+    conv, its = kn.ring_assemble(state.rows, qv, omega, CONTROLS[control], state.lam, state.xb, np.zeros(5), f,
+                                 kmat, state.ballout, TOL_BALL, MAXIT_BALL)
+    state.converged, state.iterations = bool(conv), int(its)
+    return f, kmat, state
+
+
+def result_at(bearing, q, speed: float = 0.0, control: str = "outer") -> StaticResult:
+    """The :class:`StaticResult` of ``bearing`` held at the ring displacement ``q`` [m, rad] (inner ring relative
+    to the outer) at inner-ring ``speed`` [rad/s]: every ball solved from a cold start (:func:`assemble_at`),
+    ``loads`` the loads the bearing carries there (−Σ ball forces on the inner ring, so that the ring is in
+    equilibrium under them), then the ball table, row loads, warnings, lives and static safety of :func:`solve`.
+    ``converged`` is every ball's own balance; ``residual`` 0 (the ring position is imposed); status 8 when no
+    ball carries load at the inner raceway."""
+    from ..limits import static_warnings
+
+    _check_bearing(bearing)
+    _check_control(control)
+    qv = _check_initial(q)
+    speed = _number(speed, "speed")
+    rows = bearing.row_vectors()
+    nrow, zmax = rows.shape[0], int(rows[:, kn.P_Z].max())
+    lam = np.full((nrow, zmax), 1 if control == "inner" else 0, dtype=np.int64)
+    xb = np.zeros((nrow, zmax, 2))
+    ballout = np.zeros((nrow, zmax, 12))
+    f = np.zeros(5)
+    kmat = np.zeros((5, 5))
+    bconv, its = kn.ring_assemble(rows, qv, float(abs(speed)), CONTROLS[control], lam, xb, np.zeros(5), f, kmat,
+                                  ballout, TOL_BALL, MAXIT_BALL)
+    loads = Loads(*(-f))
+    status = 0 if bconv else 4
+    if status == 0 and _free_ring(ballout, rows, _scale(loads, rows)):
+        status = 8
+    res = StaticResult(bearing=bearing, loads=loads, speed=float(speed), control=control, converged=status == 0,
+                       status=STATUS.get(status, f"status {status}"), iterations=int(its), residual=0.0,
+                       displacement=qv.copy(), stiffness=kmat.copy(), balls=ball_table(rows, ballout, xb, lam,
+                                                                                        float(speed)),
+                       rows_params=rows, status_code=int(status))
+    res.row_forces = np.zeros((nrow, 5))
+    _row_loads(rows, qv, ballout, lam, res.row_forces)
+    res.warnings = static_warnings(res)
+    _report(res)
+    return res
+
+
 def _number(value, field: str) -> float:
     """A real number (not bool, not str) → float; InputTypeError/InputError naming ``field`` otherwise."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
