@@ -212,10 +212,11 @@ class ShaftResult:
                 return s
         raise KeyError(name)
 
-    def stiffness_at(self, position: float) -> np.ndarray:
-        """The 5×5 linearised stiffness of the whole system at the node at ``position`` [m], order
-        [x, y, z, γy, γz] [N/m, N/rad, N·m/m, N·m/rad]: the inverse of the node's 5×5 block of the compliance
-        K_t⁻¹ (static condensation of every other DOF, bearings on their tangents at the solution)."""
+    def compliance_at(self, position: float) -> np.ndarray:
+        """The 5×5 block of the linearised compliance K_t⁻¹ at the node at ``position`` [m] (order [x, y, z, γy,
+        γz]; [m/N, rad/N, m/(N·m), rad/(N·m)]): the node's displacement per unit force or moment there, every
+        other DOF free, the bearings on their tangents at the solution.  1/C_yy is the tool-tip radial
+        stiffness [N/m], 1/C_xx the axial, 1/C_γzγz the tilt stiffness [N·m/rad]."""
         from ..errors import InputError
 
         i = self.system.mesh.node_at(float(position), "stiffness_at")
@@ -224,11 +225,25 @@ class ShaftResult:
         e[idx, np.arange(5)] = 1.0
         try:
             c = np.linalg.solve(self.tangent, e)[idx]
-            k = np.linalg.inv(c)
         except np.linalg.LinAlgError:
             raise InputError("stiffness_at", "the system's tangent stiffness is singular at this equilibrium",
                              "add support stiffness (preload, or a bearing that carries load)") from None
+        return 0.5 * (c + c.T)
+
+    def stiffness_at(self, position: float) -> np.ndarray:
+        """The 5×5 linearised stiffness of the whole system at the node at ``position`` [m], order
+        [x, y, z, γy, γz] [N/m, N/rad, N·m/m, N·m/rad]: the inverse of :meth:`compliance_at` (static condensation
+        of every other DOF; each entry holds the node's other four DOF at zero — the direct stiffness of one
+        DOF with the others free is 1 / compliance_at[i, i])."""
+        k = np.linalg.inv(self.compliance_at(position))
         return 0.5 * (k + k.T)
+
+    def direct_stiffness_at(self, position: float) -> dict:
+        """{"radial_N_per_m": 1/C_yy, "radial_z_N_per_m": 1/C_zz, "axial_N_per_m": 1/C_xx,
+        "tilt_N_m_per_rad": 1/C_γzγz} at ``position`` [m] (:meth:`compliance_at`; the tool-tip figures)."""
+        c = np.diag(self.compliance_at(position))
+        return {"radial_N_per_m": float(1 / c[1]), "radial_z_N_per_m": float(1 / c[2]),
+                "axial_N_per_m": float(1 / c[0]), "tilt_N_m_per_rad": float(1 / c[4])}
 
     def to_dict(self, stiffness_at: float | None = None) -> dict:
         """JSON-ready dictionary (SI): converged, status, residual, nodes, deflection per node, supports (each
@@ -244,7 +259,8 @@ class ShaftResult:
         if stiffness_at is not None:
             k = self.stiffness_at(stiffness_at)
             out["stiffness_at"] = {"position_m": float(stiffness_at),
-                                   "stiffness_matrix": [[float(v) for v in r] for r in k]}
+                                   "stiffness_matrix": [[float(v) for v in r] for r in k],
+                                   **self.direct_stiffness_at(stiffness_at)}
         return out
 
 
@@ -309,6 +325,37 @@ def _load_scale(lm: LinearModel) -> float:
     return max(s, 1.0)
 
 
+def _seed_stiffness(lm: LinearModel, speed: float, scale: float) -> np.ndarray:
+    """The regularising matrix of the Levenberg–Marquardt shift: each bearing's tangent at the start the
+    single-bearing solver uses under an axial and a radial load of the load scale
+    (:func:`bearingsim.statics.jones_harris.initial_guess`) plus that at its axial mirror, in
+    the support's place (shaft frame), plus 1e-6 of
+    the beam's diagonal — a matrix of the physical scale of the contacts, so that μ = 1 is the linear problem
+    with bearings as springs (a start inside a clearance, where the tangents vanish)."""
+    from ..statics.jones_harris import Loads, initial_guess
+
+    n = len(lm.F)
+    d = np.zeros((n, n))
+    kd = np.diag(lm.K)
+    base = 1e-6 * np.where(kd > 0, kd, np.max(kd))
+    for k, s in enumerate(lm.system.supports):
+        if not isinstance(s, BearingSupport):
+            continue
+        q0 = np.asarray(initial_guess(s.bearing, Loads(fa=scale, fr_y=scale)), dtype=float)
+        kb = np.zeros((5, 5))
+        for sign in (1.0, -1.0):  # the start's axial sense depends on the row's orientation: both senses
+            _, kq, _ = bearing_reaction(s.bearing, q0 * np.array([sign, 1.0, 1.0, 1.0, 1.0]), speed, s.control)
+            kb += 0.5 * (kq + kq.T)
+        kb += np.diag(np.maximum(np.abs(np.diag(kb)), 1e-3 * np.max(np.abs(np.diag(kb))) + 1.0)) * 1e-3
+        ks = s.transform @ kb @ s.transform
+        a, b = lm.node_dofs(lm.support_node[k]), lm.outer_dofs(k)
+        d[np.ix_(a, a)] += ks
+        d[np.ix_(a, b)] -= ks
+        d[np.ix_(b, a)] -= ks
+        d[np.ix_(b, b)] += ks
+    return d + np.diag(base)
+
+
 def solve_shaft(system: ShaftSystem, speed: float | None = None, initial: np.ndarray | None = None,
                 tol: float = TOL, maxiter: int = MAXIT, bearing_results: bool = True) -> ShaftResult:
     """Static equilibrium of ``system`` at ``speed`` [rad/s] (default ``system.speed``).
@@ -332,7 +379,7 @@ def solve_shaft(system: ShaftSystem, speed: float | None = None, initial: np.nda
     w[lm.fixed] = lm.prescribed[lm.fixed]
     sup = _Supports(lm, speed)
     scale = _load_scale(lm)
-    kdiag = np.where(np.diag(lm.K)[free] > 0, np.diag(lm.K)[free], np.max(np.diag(lm.K)))
+    dreg = _seed_stiffness(lm, speed, scale)[np.ix_(free, free)]
 
     def residual(wv):
         fs, kt, per, ok = sup.evaluate(wv)
@@ -353,13 +400,13 @@ def solve_shaft(system: ShaftSystem, speed: float | None = None, initial: np.nda
         its += 1
         accepted = False
         for _ in range(40):
-            a = kt + mu * np.diag(kdiag)
+            a = kt + mu * dreg
             try:
                 dw = np.linalg.solve(a, r)
             except np.linalg.LinAlgError:
                 dw = None
             if dw is None or not np.all(np.isfinite(dw)):
-                mu = max(1e-8, 10.0 * mu)
+                mu = max(0.1, 10.0 * mu)
                 continue
             full = np.zeros(n)
             full[free] = dw
@@ -379,9 +426,9 @@ def solve_shaft(system: ShaftSystem, speed: float | None = None, initial: np.nda
                 step *= 0.5
             if accepted:
                 w, r, kt, per, ok, nr = w1, r1, kt1, per1, ok1, n1
-                mu = 0.0 if step == 1.0 else max(mu * 0.3, 0.0)
+                mu = 0.0 if step == 1.0 else mu * 0.3
                 break
-            mu = max(1e-10, 10.0 * mu)
+            mu = max(0.1, 10.0 * mu)
             if mu > 1e6:
                 break
         if not accepted:
