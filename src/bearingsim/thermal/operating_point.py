@@ -148,7 +148,7 @@ def build_network(result, setup: ThermalSetup, heat: dict, temperatures: dict, l
     b = result.bearing
     lub = get_lubricant(lubricant)
     dw, dm, di, do, bore, od, width, dh, wh = _ring_dims(b, setup)
-    t_oil = temperatures["oil"]
+    t_oil = min(max(temperatures["oil"], lub.min_temperature), lub.max_temperature)  # properties inside the range
     rho, eta, k_oil = lub.density(t_oil), lub.dynamic_viscosity(t_oil), lub.thermal_conductivity
     omega = abs(float(result.speed))
     balls = result.balls
