@@ -20,10 +20,11 @@ Limits and their sources:
 * :data:`MAX_NDM` = 1e7 mm·rpm — a speed factor n·d_m an order of magnitude beyond the fastest hybrid
   spindle bearings (≈ 3.5e6 mm·rpm, SKF super-precision catalogue speed ratings): the quasi-static model
   is not asked to answer there; :func:`check_speed` raises :class:`~bearingsim.errors.InputError`.
-* lift-off — at speed, a ball without load at the inner raceway while other balls carry load: it is
-  held against the outer ring by its centrifugal force alone and is driven by the cage, not by rolling
-  (skidding risk; Harris & Kotzalas 2007 vol. 2 ch. 3).  At rest a partial load zone is the normal state
-  of a bearing with clearance and is not flagged.
+* lift-off — at speed, balls without load at the inner raceway that carry load at rest under the same
+  loads (:func:`lift_off_count`: the count of unloaded balls at speed beyond the count at rest): they are
+  held against the outer ring by their centrifugal force alone and are driven by the cage, not by rolling
+  (skidding risk; Harris & Kotzalas 2007 vol. 2 ch. 3).  A partial load zone that the loads give at rest
+  as well (a radial load with clearance, a hub row under a moment) is the normal state and is not flagged.
 
 Flag bits of ``warning_flags`` (CF convention ``flag_masks``/``flag_meanings``, :func:`cf_attributes`):
 """
@@ -105,8 +106,10 @@ def flags_from_summary(p_inner, p_outer, alpha_extremes, speed, lift_off, conver
     return flags
 
 
-def static_warnings(result) -> list[str]:
-    """Readable warnings of a :class:`~bearingsim.statics.jones_harris.StaticResult` past the limits above."""
+def static_warnings(result, rest_inner_load=None) -> list[str]:
+    """Readable warnings of a :class:`~bearingsim.statics.jones_harris.StaticResult` past the limits above;
+    ``rest_inner_load`` : float[n_balls] the inner-raceway ball loads [N] of the equilibrium at rest under the
+    same loads (lift-off is judged against it; None: no lift-off warning)."""
     out = []
     b = result.balls
     if not len(b.get("azimuth_rad", ())):
@@ -129,7 +132,16 @@ def static_warnings(result) -> list[str]:
         out.append(f"speed {abs(result.speed) * 30 / math.pi:.0f} rpm exceeds the bearing's limiting speed "
                    f"{vlim * 30 / math.pi:.0f} rpm")
     qi = b["inner_load_N"]
-    nfree = int(np.sum(~(qi > 0)))
-    if result.speed != 0 and nfree and np.any(qi > 0):
-        out.append(f"{nfree} of {len(qi)} balls carry no load at the inner raceway (lift-off: partial load zone)")
+    if rest_inner_load is not None and result.speed != 0 and np.any(qi > 0):
+        nlift = lift_off_count(int(np.sum(~(qi > 0))), int(np.sum(~(np.asarray(rest_inner_load) > 0))))
+        if nlift:
+            out.append(f"{nlift} of {len(qi)} balls lifted off the inner raceway by their centrifugal force: "
+                       f"loaded at rest under the same loads, unloaded at {abs(result.speed) * 30 / math.pi:.0f} "
+                       "rpm (driven by the cage, skidding risk)")
     return out
+
+
+def lift_off_count(free_at_speed, free_at_rest):
+    """Balls lifted off by speed: balls without inner-raceway load at speed beyond those without it at rest
+    under the same loads (the partial load zone of a radial load with clearance), ≥ 0 (ints or int arrays)."""
+    return np.maximum(np.asarray(free_at_speed) - np.asarray(free_at_rest), 0)

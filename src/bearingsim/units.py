@@ -228,6 +228,26 @@ def parse_quantity(value, dimension: str, field: str, *, require_unit: bool | No
     return _to_si(number, _parse_unit(unit_text, text, field, example), text, dimension, field)
 
 
+def api_quantity(value, dimension: str, field: str):
+    """A value given to a public function → SI: a Python or numpy number (or array) is already SI and is returned
+    as it is (the caller checks it); a string with a unit (``"1500 rpm"``, ``"2 kN"``) goes through
+    :func:`parse_quantity` with the unit required (a bare ``"1500"`` names the unit to add: in the API a bare
+    number is SI, on the command line it is the default unit); a pint ``Quantity`` (any registry: read through
+    the name of its unit) is converted by the factor of one of its units, its magnitude may be an array.
+    A wrong dimension raises :class:`InputError` naming ``field``."""
+    if isinstance(value, str):
+        return parse_quantity(value, dimension, field, require_unit=True)
+    units = getattr(value, "units", None)
+    if units is not None and hasattr(value, "magnitude"):
+        factor = parse_quantity(f"1 {units}", dimension, field, require_unit=True)
+        if dimension == "temperature":
+            zero = parse_quantity(f"0 {units}", dimension, field, require_unit=True)
+            return zero + (factor - zero) * value.magnitude
+        mag = value.magnitude
+        return float(mag) * factor if isinstance(mag, numbers.Real) else mag * factor
+    return value
+
+
 def _bare(number: float, shown: str, dimension: str, field: str, require_unit: bool) -> float:
     """A number without a unit: an error where a unit is required, else the default unit."""
     dim, si, default = DIMENSIONS[dimension]

@@ -359,6 +359,7 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
 
     loads = np.ascontiguousarray(np.asarray(loads, dtype=float).reshape(-1, 5))
     n = loads.shape[0]
+    loads_in = loads
     speeds = np.broadcast_to(np.asarray(omega, dtype=float), (n,)).copy()
     omega = np.ascontiguousarray(np.abs(speeds))
     rows = np.ascontiguousarray(bearing.row_vectors())
@@ -390,9 +391,15 @@ def run_batch(bearing, loads: np.ndarray, omega: np.ndarray, control: str = "out
     out["converged"] = out["status"] == 0
     for j, name in enumerate(SUMMARY_FIELDS):
         out[name] = out["summary"][:, j]
-    from ..limits import flags_from_summary, limiting_speed
+    from ..limits import flags_from_summary, lift_off_count, limiting_speed
 
     lift = (out["n_lift_off"] > 0) & (speeds != 0)
+    if lift.any():
+        # lift-off only beyond the load zone of the same loads at rest (limits.lift_off_count; a partial load zone
+        # at rest is no lift-off); a point whose rest equilibrium is not found is not flagged, as in solve
+        idx = np.flatnonzero(lift)
+        rest = run_batch(bearing, loads_in[idx], np.zeros(idx.size), control, fallback=False)
+        lift[idx] = (lift_off_count(out["n_lift_off"][idx], rest["n_lift_off"]) > 0) & rest["converged"]
     out["warning_flags"] = flags_from_summary(out["p_inner"], out["p_outer"],
                                               [out[k] for k in SUMMARY_FIELDS[2:6]], speeds, lift, out["converged"],
                                               limiting_speed(bearing))
@@ -418,6 +425,8 @@ def _fallback_points(bearing, rows, loads, omega, control, out) -> None:
             out["residual"][i] = np.nan
             out["summary"][i] = np.nan
             continue
+        if not r.converged and r.status_code in (3, 6, 9) and out["status"][i] >= 0:
+            out["status"][i] = r.status_code  # the single path's reason (not enough axial load, past capacity)
         if r.converged or out["status"][i] < 0:
             out["status"][i] = r.status_code
             out["q"][i] = r.displacement

@@ -549,6 +549,11 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
                 da2 = a2 - xb[r, j, 3]
                 xl[0] += xb[r, j, 4] * da1 + xb[r, j, 5] * da2
                 xl[1] += xb[r, j, 6] * da1 + xb[r, j, 7] * da2
+            if control == CONTROL_AUTO and omega != 0.0:
+                # auto control is decided from the outer-control solution of the ball at this displacement,
+                # whatever the ball's state before: the ring forces are then a function of q alone (the cold
+                # re-solve of equilibrium_residual gives the same balls), see the criterion below
+                lam_state[r, j] = 0
             for _pass in range(4):
                 inner_ctrl = lam_state[r, j]
                 lam_i, lam_o = control_weights(inner_ctrl)
@@ -561,8 +566,14 @@ def ring_assemble(rows, qv, omega, control, lam_state, xb, loads, res, kmat, bal
                     # the inner contact is open: it transmits neither load nor the friction that would
                     # hold the gyroscopic moment, so the outer raceway controls the ball (λ_i = 0)
                     want = 0
-                elif control == CONTROL_INNER:
+                elif control == CONTROL_INNER or inner_ctrl == 1:
+                    # inner control, or an auto ball that the criterion at its outer-control solution
+                    # gave to the inner raceway (decided once: a ball whose criterion flips with its own
+                    # control keeps that first decision instead of alternating between the two states)
                     want = 1
+                elif _pass > 0:
+                    # an auto ball back at outer control because its inner contact opened: final
+                    want = 0
                 else:
                     # raceway control criterion (Jones 1960; Harris & Kotzalas 2007 vol. 2 ch. 2):
                     # outer control when Q_o a_o E(κ_o) cos(α_i − α_o) > Q_i a_i E(κ_i)

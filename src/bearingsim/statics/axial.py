@@ -19,6 +19,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import InputError
+from ..units import api_quantity
 
 
 @dataclass(frozen=True)
@@ -86,13 +87,15 @@ def axial_stiffness_closed_form(alpha: float, free_angle: float, z: int, kn: flo
 
 
 def solve_thrust(bearing, fa: float, method: str = "bracketed") -> ThrustSolution:
-    """Contact angle, deflection and axial stiffness of ``bearing`` under thrust ``fa`` [N].
+    """Contact angle, deflection and axial stiffness of ``bearing`` under thrust ``fa`` [N] (a float in N, a string
+    with its unit or a pint Quantity: :func:`bearingsim.units.api_quantity`).
 
     ``method`` is ``"bracketed"`` (Brent, always converges) or ``"fixed_point"`` ([S0] eq. 4).
     K_n is evaluated at α₀ (see :attr:`BallBearing.contact_constants`).
     """
     import numbers
 
+    fa = api_quantity(fa, "force", "fa")
     if isinstance(fa, bool) or not isinstance(fa, numbers.Real):
         from ..errors import InputTypeError
 

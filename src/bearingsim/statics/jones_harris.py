@@ -23,9 +23,10 @@ from numba import njit
 from ..contact import hertz
 from ..errors import InputError, InputTypeError
 from ..geometry import BallBearing
+from ..units import api_quantity
 from . import _kernels as kn
 from .axial import solve_thrust
-from .layout import STATUS  # the one table of status codes (jones_harris.STATUS stays importable)
+from .layout import STATUS, STATUS_PAST_CAPACITY  # the one table of status codes (jones_harris.STATUS stays importable)
 
 CONTROLS = {"outer": kn.CONTROL_OUTER, "inner": kn.CONTROL_INNER, "auto": kn.CONTROL_AUTO}
 DOF = ("x", "y", "z", "gamma_y", "gamma_z")
@@ -182,8 +183,7 @@ def result_at(bearing, q, speed: float = 0.0, control: str = "outer") -> StaticR
 def _number(value, field: str) -> float:
     """A real number (not bool, not str) → float; InputTypeError/InputError naming ``field`` otherwise."""
     if isinstance(value, bool) or not isinstance(value, numbers.Real):
-        hint = 'parse units at the edge (bearingsim.units.parse_quantity) and pass SI floats' \
-            if isinstance(value, str) else "pass a float in SI units"
+        hint = "pass a float in SI units, a string with its unit or a pint Quantity"
         raise InputTypeError(field, f"must be a real number, got {type(value).__name__} {value!r}", hint)
     v = float(value)
     if not math.isfinite(v):
@@ -193,7 +193,10 @@ def _number(value, field: str) -> float:
 
 @dataclass(frozen=True)
 class Loads:
-    """External loads on the inner ring [N, N·m]; M about y and z at the bearing centre."""
+    """External loads on the inner ring [N, N·m]; M about y and z at the bearing centre.
+
+    Each load is a float in SI units [N, N·m], a string with its unit (``"2 kN"``, ``"5 N*m"``) or a pint
+    ``Quantity`` (:func:`bearingsim.units.api_quantity`); it is stored as a float [N, N·m]."""
 
     fa: float = 0.0
     fr_y: float = 0.0
@@ -203,8 +206,9 @@ class Loads:
 
     def __post_init__(self):
         for name in ("fa", "fr_y", "fr_z", "m_y", "m_z"):
-            # numbers only (a str, bool, None or list is refused naming the field), stored as float
-            object.__setattr__(self, name, _number(getattr(self, name), name))
+            # quantities converted to SI, then numbers only (a bool, None or list is refused naming the field)
+            dim = "moment" if name.startswith("m_") else "force"
+            object.__setattr__(self, name, _number(api_quantity(getattr(self, name), dim, name), name))
 
     def as_array(self) -> np.ndarray:
         return np.array([self.fa, self.fr_y, self.fr_z, self.m_y, self.m_z], dtype=float)
@@ -535,17 +539,22 @@ def _attempt(rows, la, omega, control, q, scale) -> list:
     return [status, q, its, rn, lam, xb, kmat, ballout]
 
 
-def _alternative_starts(bearing, loads, speed, control, initial, q_first, rows, la, omega, scale):
-    """Callables giving further starts of :func:`solve` (see there), cheapest first."""
+def _alternative_starts(bearing, loads, speed, control, initial, q_first, rows, la, omega, scale, reasons):
+    """Callables giving further starts of :func:`solve` (see there), cheapest first; a fixed-control solve that
+    ends with status 3 or 6 is noted in ``reasons`` (status code → control)."""
     if initial is not None:
         yield lambda: np.array(initial_guess(bearing, loads), dtype=float)
     for q_dg in _deep_groove_starts(bearing, loads):
         yield lambda q_dg=q_dg: q_dg
     if control != "outer" and omega > 0:
-        def outer_solution():
-            r = solve(bearing, loads, speed, "outer")
+        def fixed_solution(fixed):
+            r = solve(bearing, loads, speed, fixed)
+            if r.status_code in (3, 6):
+                reasons.setdefault(r.status_code, fixed)
             return r.displacement if r.converged else None
-        yield outer_solution
+        yield lambda: fixed_solution("outer")
+        if control == "auto":
+            yield lambda: fixed_solution("inner")
 
     def continuation():
         q1 = np.array(q_first, dtype=float)
@@ -703,16 +712,18 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
     Parameters
     ----------
     bearing : BallBearing or BearingSystem (the rows protocol, :mod:`bearingsim.geometry`)
-    loads : Loads  [N, N·m]
+    loads : Loads  [N, N·m] (each load a float in SI, a string with its unit or a pint Quantity)
     speed : float  [rad/s]  inner-ring speed (outer ring fixed); the sign gives the sense of rotation of
-        the balls and cage (the equilibrium depends on |speed| only)
+        the balls and cage (the equilibrium depends on |speed| only).  A bare number is rad/s (157.08 is
+        1500 rpm); ``"1500 rpm"`` or a pint Quantity is converted (:func:`bearingsim.units.api_quantity`)
     control : ``"outer"``, ``"inner"`` or ``"auto"`` raceway control (auto: Jones' criterion per ball)
     initial : optional start for (δx, δy, δz, γy, γz) [m, rad], float[5], finite
     tilt : ``"free"`` (default: the inner ring tilts until the moments balance — a single bearing carries no
         moment beyond ``loads``) or ``"fixed"``: the tilt (γy, γz) is held at ``misalignment`` (default 0: a
         single bearing on a stiff shaft in a stiff housing; ISO/TS 16281 takes the tilt or the moment as an
         input, docs/life.md) and the moment that holds it is returned as ``reaction_moment``
-    misalignment : (γy, γz) [rad] of the inner ring relative to the outer for ``tilt="fixed"``
+    misalignment : (γy, γz) [rad] of the inner ring relative to the outer for ``tilt="fixed"`` (floats in rad,
+        or strings with a unit such as ``"2 arcmin"``)
 
     Returns a :class:`StaticResult`; ``converged`` is False (with ``status`` and ``residual``)
     when no equilibrium was found — never a silently wrong number.  A result is called converged
@@ -729,7 +740,10 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
         raise InputTypeError("loads", f"expected a Loads, got {type(loads).__name__}",
                              "e.g. Loads(fa=1000.0, fr_y=500.0) [N, N·m]")
     _check_control(control)
-    speed = _number(speed, "speed")
+    speed = _number(api_quantity(speed, "speed", "speed"), "speed")
+    if misalignment is not None and not isinstance(misalignment, np.ndarray):
+        misalignment = [api_quantity(g, "angle", "misalignment") for g in misalignment] \
+            if isinstance(misalignment, list | tuple) else api_quantity(misalignment, "angle", "misalignment")
     tilt, gamma = _check_tilt(tilt, misalignment)
     if tilt == "fixed":
         return _solve_fixed_tilt(bearing, loads, speed, control, initial, gamma)
@@ -740,13 +754,16 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
     omega = float(abs(speed))
     scale = _scale(loads, rows)
     state = _attempt(rows, la, omega, control, q, scale)
+    reasons = {}  # fixed-control answers met on the way (status code → control), for the reason of a failure
     if state[0] not in (0, 8):
         # other starts before giving up (the first answer's status is kept when none converges): the default
         # start (when the caller gave one); for inner/auto control at speed the outer-control equilibrium (a
         # ball switches to outer control where its inner contact opens, a kink that can stall the line
-        # search); a continuation in the load from a tenth of it; the batch loop along a load ramp (tangent
-        # predictor, coupled ring–ball Newton), so that a point the batch path converges is not refused here
-        for make in _alternative_starts(bearing, loads, speed, control, initial, q, rows, la, omega, scale):
+        # search), and for auto the inner-control one; a continuation in the load from a tenth of it; the batch
+        # loop along a load ramp (tangent predictor, coupled ring–ball Newton), so that a point the batch path
+        # converges is not refused here
+        for make in _alternative_starts(bearing, loads, speed, control, initial, q, rows, la, omega, scale,
+                                        reasons):
             q1 = make()
             if q1 is None or not np.all(np.isfinite(q1)):
                 continue
@@ -755,21 +772,100 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
                 st1[2] += state[2]
                 state = st1
                 break
+            if st1[0] in (3, 6):
+                reasons.setdefault(st1[0], control)
             state[2] += st1[2]
     status, q, its, rn, lam, xb, kmat, ballout = state
     if status in (0, 3, 6) and _free_ring(ballout, rows, scale):
         status = 8
+    text = STATUS.get(status, f"status {status}")
+    if status not in (0, 3, 6, 8):
+        status, text, its = _failure_reason(bearing, loads, control, rows, la, omega, scale, state, reasons)
+    if status == STATUS_PAST_CAPACITY:
+        # no state to report: the last iterate is outside the model (balls past the groove-curvature centres)
+        q, kmat, ballout, xb = (np.full_like(a, np.nan) for a in (q, kmat, ballout, xb))
     converged = status == 0
     balls = ball_table(rows, ballout, xb, lam, float(speed))
     res = StaticResult(bearing=bearing, loads=loads, speed=float(speed), control=control, converged=converged,
-                       status=STATUS.get(status, f"status {status}"), iterations=int(its), residual=float(rn),
+                       status=text, iterations=int(its), residual=float(rn),
                        displacement=q.copy(), stiffness=kmat.copy(), balls=balls, rows_params=rows,
                        status_code=int(status))
     res.row_forces = np.zeros((rows.shape[0], 5))
     _row_loads(rows, q, ballout, lam, res.row_forces)
-    res.warnings = static_warnings(res)
+    res.warnings = static_warnings(res, _rest_inner_loads(bearing, loads, res, rows, la, control, scale))
     _report(res)
     return res
+
+
+def _rest_inner_loads(bearing, loads, res, rows, la, control, scale):
+    """The inner-raceway ball loads [N] of the equilibrium at rest under the same loads, when ``res`` (at speed)
+    has balls without inner load while others carry load — the reference of the lift-off rule of
+    :func:`bearingsim.limits.static_warnings`; None otherwise (or when the rest equilibrium is not found)."""
+    qi = res.balls["inner_load_N"]
+    if res.speed == 0 or not res.converged or np.all(qi > 0) or not np.any(qi > 0):
+        return None
+    rest = _attempt(rows, la, 0.0, control, res.displacement, scale)
+    if rest[0] != 0:
+        rest = _attempt(rows, la, 0.0, control, np.array(initial_guess(bearing, loads), dtype=float), scale)
+    if rest[0] != 0:
+        return None
+    ballout = rest[7]
+    return np.concatenate([ballout[r, :int(z), 2] for r, z in enumerate(rows[:, kn.P_Z])])
+
+
+def _failure_reason(bearing, loads, control, rows, la, omega, scale, state, reasons):
+    """(status code, status text, iterations) of a point no start converged, from what was met on the way:
+
+    * a NaN residual: the load is past what the bearing carries in equilibrium at this speed (status 9); the
+      largest fraction of the loads that converges is estimated by :func:`_carried_fraction` and named;
+    * an angular contact row whose fixed-control solve (or, at speed, whose equilibrium at rest under the same
+      loads) puts a loaded contact past the groove bottom: the reason of status 3 (not enough axial load);
+    * else the kernel's status."""
+    status, its, rn = state[0], state[2], state[3]
+    text = STATUS.get(status, f"status {status}")
+    if not math.isfinite(rn):
+        frac = _carried_fraction(bearing, rows, la, omega, control)
+        text = STATUS[STATUS_PAST_CAPACITY]
+        if frac > 0:
+            carried = ", ".join(f"{n} {frac * v:.4g} {u}" for n, v, u in
+                                zip(("Fa", "Fr_y", "Fr_z", "M_y", "M_z"), la, ("N",) * 3 + ("N·m",) * 2) if v)
+            text += (f"; at this speed about {frac:.3g} × these loads ({carried}) is the most carried (the largest "
+                     "fraction of them that converges along a load ramp)")
+        return STATUS_PAST_CAPACITY, text, its
+    if not np.any(rows[:, kn.P_DX0] > 0):
+        return status, text, its
+    for code in (3, 6):
+        if code in reasons:
+            return code, f"{STATUS[code]} (found with {reasons[code]} control)", its
+    if omega > 0:
+        rest = _attempt(rows, la, 0.0, control, np.array(initial_guess(bearing, loads), dtype=float), scale)
+        its += rest[2]
+        if rest[0] == 3:
+            return 3, f"{STATUS[3]} (found at rest under the same loads; at speed no equilibrium was found)", its
+    return status, text, its
+
+
+def _carried_fraction(bearing, rows, la, omega, control) -> float:
+    """The largest factor f ≤ 1 [-] for which f × ``la`` converges at ``omega`` along a load ramp of the batch
+    loop (:func:`._batch.run_batch`, warm starts, no single-point fallback): 50 factors 0.02 … 1, then 50
+    between the last one that converges and the next (f to 0.04 %) → f; 0 when 0.02 × ``la`` fails."""
+    from ._batch import run_batch
+
+    lo, hi = 0.0, 1.0
+    for ramp in (np.linspace(0.02, 1.0, 50), None):
+        if ramp is None:
+            ramp = np.linspace(lo, hi, 51)[1:]
+        st = run_batch(bearing, ramp[:, None] * la[None, :], np.full(len(ramp), omega), control,
+                       fallback=False)["status"]
+        bad = np.flatnonzero(st != 0)
+        k = int(bad[0]) if bad.size else len(ramp)
+        if k == 0:
+            return lo
+        lo = float(ramp[k - 1])
+        if k == len(ramp):
+            return lo
+        hi = float(ramp[k])
+    return lo
 
 
 def _report(res: StaticResult) -> None:
@@ -853,7 +949,7 @@ def solve_many(bearing, loads: np.ndarray, speeds: np.ndarray, control: str = "o
     Parameters
     ----------
     loads : float[n, 5]  (Fa, Fr_y, Fr_z, M_y, M_z) [N, N·m] per point
-    speeds : float[n]  inner-ring speeds [rad/s]
+    speeds : float[n]  inner-ring speeds [rad/s] (bare numbers), or a pint Quantity array / strings with units
     control : raceway control as in :func:`solve`
 
     Neighbouring points in the order given share their solutions as starting points (the
@@ -869,6 +965,10 @@ def solve_many(bearing, loads: np.ndarray, speeds: np.ndarray, control: str = "o
 
     _check_bearing(bearing)
     _check_control(control)
+    if isinstance(speeds, list | tuple) and any(isinstance(v, str) for v in speeds):
+        speeds = [api_quantity(v, "speed", "speeds") for v in speeds]
+    elif not isinstance(speeds, str):
+        speeds = api_quantity(speeds, "speed", "speeds")
     for name, v in (("loads", loads), ("speeds", speeds)):
         if v is None or isinstance(v, str | bytes | bool):
             raise InputTypeError(name, f"expected an array of numbers, got {type(v).__name__}",

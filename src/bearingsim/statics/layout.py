@@ -51,7 +51,7 @@ Status codes
 :data:`STATUS` is the one table of solver status codes with their messages, used by
 :func:`bearingsim.statics.jones_harris.solve` / ``solve_many``, the results' ``status`` text and the map
 files' ``status`` variable (:data:`STATUS_SHORT`, its CF ``flag_values``/``flag_meanings``).  Codes 0, 1, 2, 3
-and 6 come from the ring kernels; 4, 5, 7 and 8 are added by the callers.
+and 6 come from the ring kernels; 4, 5, 7, 8 and 9 are added by the callers.
 """
 
 from __future__ import annotations
@@ -96,6 +96,7 @@ STATUS_NOT_CONFIRMED = 5
 STATUS_PAST_GROOVE_EDGE = 6
 STATUS_INTERNAL_ERROR = 7
 STATUS_FREE_RING = 8
+STATUS_PAST_CAPACITY = 9
 
 #: status code → message (results' ``status`` text, CLI output)
 STATUS = {
@@ -115,6 +116,9 @@ STATUS = {
     STATUS_INTERNAL_ERROR: "the solver failed on this point (internal error); see the log",
     STATUS_FREE_RING: "no ball carries load at the inner raceway (no load, or every ball lifted off by its "
                       "centrifugal force): the inner ring is free and its position is not determined",
+    STATUS_PAST_CAPACITY: "load past what the bearing can carry in equilibrium: the ring displacement it calls "
+                          "for carries a ball past the groove-curvature centres, where the contact and rolling "
+                          "relations have no solution (residual NaN)",
 }
 
 #: status code → (short description for the map file's long_name, CF flag meaning)
@@ -128,6 +132,7 @@ STATUS_SHORT = {
     STATUS_PAST_GROOVE_EDGE: ("contact angle of 90 deg or more", "contact_past_groove_edge"),
     STATUS_INTERNAL_ERROR: ("internal error at this point", "internal_error"),
     STATUS_FREE_RING: ("free inner ring (no ball loaded)", "free_inner_ring"),
+    STATUS_PAST_CAPACITY: ("load past capacity", "load_past_capacity"),
 }
 
 #: ``long_name`` of a map file's ``status`` variable
