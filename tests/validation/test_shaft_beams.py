@@ -128,3 +128,25 @@ def test_simply_supported_frequencies(shear):
         ref.append(math.sqrt(w2) / (2 * math.pi))
     src = "Han, Benaroya & Wei 1999: simply supported " + ("Timoshenko" if shear else "Rayleigh") + " beam"
     assert_allclose(f, ref, rtol=3e-4 if shear else 2e-5, err_msg=src)
+
+
+def test_spinning_simply_supported_whirl():
+    """Spinning simply supported Rayleigh shaft: (ρA + ρIα²) ω² ∓ 2ρIα²Ω ω − EIα⁴ = 0, α = nπ/L, forward (−)
+    above and backward (+) below the standstill frequency (Lalanne & Ferraris, Rotordynamics Prediction in
+    Engineering, 2nd ed. 1998, ch. 3, simply supported uniform rotor; polar I_p = 2I)."""
+    L, d, spin = 1.0, 0.02, 3000.0
+    pin = [1e12, 1e12, 1e12, 0.0, 0.0]
+    roller = [0.0, 1e12, 1e12, 0.0, 0.0]
+    s = ShaftSystem((Section(L, d),), (SpringSupport("a", 0.0, pin), SpringSupport("b", L, roller)), elements=40,
+                    shear=False, speed=spin)
+    m = modes(solve_shaft(s), 6, gyroscopic=True)
+    A, I, _ = _props(d)
+    ref, whirl = [], []
+    for n in (1, 2, 3):
+        a = n * math.pi / L
+        for sgn in (-1, 1):
+            c = [RHO * A + RHO * I * a * a, -sgn * 2 * RHO * I * a * a * spin, -E * I * a**4]
+            ref.append(max(np.roots(c).real) / (2 * math.pi))
+            whirl.append(sgn)
+    assert_allclose(m.frequency_hz, ref, rtol=1e-5, err_msg="Lalanne & Ferraris: spinning simply supported shaft")
+    assert list(m.whirl) == whirl, "backward whirl below, forward above"

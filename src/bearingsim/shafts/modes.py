@@ -76,13 +76,19 @@ def modes(result: ShaftResult, n_modes: int = 6, gyroscopic: bool = False) -> Mo
         freq = np.sqrt(np.maximum(w2, 0.0)) / (2 * np.pi)
         shapes = np.array([_normalise(vec[:, j], nn) for j in range(n_modes)])
         return ModalResult(freq, shapes, omega, result.nodes.copy(), False, np.zeros(n_modes, dtype=int))
-    minv_k = np.linalg.solve(m, k)
-    minv_g = np.linalg.solve(m, omega * g1)
-    a = np.zeros((2 * n, 2 * n))
-    a[:n, n:] = np.eye(n)
-    a[n:, :n] = -minv_k
-    a[n:, n:] = -minv_g
-    lam, vec = np.linalg.eig(a)
+    # first-order form B ż = A z, z = (q, q̇): A = [[0, I], [−K, −ΩG₁]], B = diag(I, M); the eigenvalues nearest
+    # to a small negative shift (shift-invert Arnoldi) are the lowest whirl frequencies ±iω
+    from scipy.sparse import bmat, csc_matrix, identity
+    from scipy.sparse.linalg import eigs
+
+    eye = identity(n, format="csc")
+    a = bmat([[None, eye], [csc_matrix(-k), csc_matrix(-omega * g1)]], format="csc")
+    bm = bmat([[eye, None], [None, csc_matrix(m)]], format="csc")
+    nev = min(2 * n_modes + 4, 2 * n - 2)
+    if 2 * n > 80:
+        lam, vec = eigs(a, k=nev, M=bm, sigma=-1.0)
+    else:
+        lam, vec = sla.eig(a.toarray(), bm.toarray())
     keep = lam.imag > -1e-9 * np.max(np.abs(lam))
     lam, vec = lam[keep], vec[:n, keep]
     order = np.argsort(np.abs(lam.imag))[:n_modes]

@@ -95,16 +95,20 @@ def linear_model(system: ShaftSystem) -> LinearModel:
     x = mesh.nodes
     g = next((ld.acceleration for ld in system.loads if isinstance(ld, Gravity)), None)
     dist = [ld for ld in system.loads if isinstance(ld, DistributedLoad)]
+    cache = {}
     for e in range(mesh.n_nodes - 1):
         sec = system.sections[mesh.element_section[e]]
         L = float(x[e + 1] - x[e])
         mat = sec.material
-        ke, me, ge = shaft_element_matrices(L, mat.youngs_modulus, sec.shear_modulus, mat.density, sec.area,
-                                            sec.second_moment, sec.shear_coefficient, system.shear)
-        idx = np.arange(5 * e, 5 * e + 10)
-        K[np.ix_(idx, idx)] += ke
-        M[np.ix_(idx, idx)] += me
-        G1[np.ix_(idx, idx)] += ge
+        key = (int(mesh.element_section[e]), round(L, 15))
+        if key not in cache:  # equal elements of one section share their matrices
+            cache[key] = shaft_element_matrices(L, mat.youngs_modulus, sec.shear_modulus, mat.density, sec.area,
+                                                sec.second_moment, sec.shear_coefficient, system.shear)
+        ke, me, ge = cache[key]
+        idx = slice(5 * e, 5 * e + 10)
+        K[idx, idx] += ke
+        M[idx, idx] += me
+        G1[idx, idx] += ge
         mid = 0.5 * (x[e] + x[e + 1])
         if g is not None:
             F[idx] += _element_load(L, mat.density * sec.area * g)
@@ -301,10 +305,11 @@ class _Supports:
                 fs = -ks @ rel
             f[a] += fs
             f[b] -= fs
-            kt[np.ix_(a, a)] += ks
-            kt[np.ix_(a, b)] -= ks
-            kt[np.ix_(b, a)] -= ks
-            kt[np.ix_(b, b)] += ks
+            a0, b0 = a[0], b[0]
+            kt[a0:a0 + 5, a0:a0 + 5] += ks
+            kt[a0:a0 + 5, b0:b0 + 5] -= ks
+            kt[b0:b0 + 5, a0:a0 + 5] -= ks
+            kt[b0:b0 + 5, b0:b0 + 5] += ks
             per.append((fs, ks, q))
         return f, kt, per, ok
 
@@ -323,6 +328,22 @@ def _load_scale(lm: LinearModel) -> float:
         if isinstance(sup, BearingSupport):
             s = max(s, abs(sup.preload_force or 0.0), float(getattr(sup.bearing, "preload", 0.0) or 0.0))
     return max(s, 1.0)
+
+
+def _sparse_solve(a: np.ndarray, r: np.ndarray) -> np.ndarray | None:
+    """a⁻¹ r by sparse LU (the tangent is banded along the shaft plus the support couplings); None when a is
+    singular."""
+    import warnings
+
+    from scipy.sparse import csc_matrix
+    from scipy.sparse.linalg import splu
+
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            return splu(csc_matrix(a)).solve(r)
+    except RuntimeError:  # "Factor is exactly singular"
+        return None
 
 
 def _seed_stiffness(lm: LinearModel, speed: float, scale: float) -> np.ndarray:
@@ -401,10 +422,7 @@ def solve_shaft(system: ShaftSystem, speed: float | None = None, initial: np.nda
         accepted = False
         for _ in range(40):
             a = kt + mu * dreg
-            try:
-                dw = np.linalg.solve(a, r)
-            except np.linalg.LinAlgError:
-                dw = None
+            dw = _sparse_solve(a, r)
             if dw is None or not np.all(np.isfinite(dw)):
                 mu = max(0.1, 10.0 * mu)
                 continue
