@@ -67,6 +67,8 @@ def test_natural_convection_cylinder_limits():
     """Churchill & Chu: Nu → 0.60² = 0.36 as Ra → 0 (conduction limit); h grows with ΔT (Ra^(1/6) term)."""
     d = 0.1
     _, _, k, _ = C.air_properties(300.0)
-    assert C.natural_convection_cylinder(d, 300.0 + 1e-9, 300.0 - 1e-9) == pytest.approx(0.36 * k / d, rel=1e-3)
+    small = 1e-4
+    assert C.natural_convection_cylinder(small, 300.0 + 1e-9, 300.0 - 1e-9) == pytest.approx(0.36 * k / small,
+                                                                                        rel=1e-2)
     hs = [C.natural_convection_cylinder(d, 300.0 + dt, 300.0) for dt in (1.0, 10.0, 100.0)]
     assert hs[0] < hs[1] < hs[2]
