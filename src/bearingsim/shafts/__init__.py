@@ -2,8 +2,8 @@
 bearings' full Jones–Harris response, the linearised stiffness at any node, natural frequencies and the export
 to ROSS.
 
-Modules: :mod:`.model` (inputs and mesh), :mod:`.solve` (assembly and Newton), :mod:`.modes` (eigenproblem,
-Campbell), :mod:`.ross` (ROSS rotor).
+Modules: :mod:`.model` (inputs and mesh), :mod:`.solve` (assembly, Newton, stiffness at a node), :mod:`.modes`
+(eigenproblem, Campbell), :mod:`.sweep` (speed and preload sweeps), :mod:`.ross` (ROSS rotor).
 """
 
 from .model import (
