@@ -57,6 +57,10 @@ def static(
     misalignment: Optional[str] = typer.Option(
         None, "--misalignment", help='With --tilt fixed: tilt of the inner ring about z (the axis of --moment), '
         'e.g. "0.5 mrad" (default 0)'),
+    thermal: bool = typer.Option(
+        False, "--thermal", help="Thermal operating point (bearingsim.thermal): ring, ball and oil temperatures, the "
+        "operating clearance and the lives at them; oil jet at --temperature (default 40 degC) of --lubricant "
+        "(default iso-vg-68), 0.6 L/min, estimated cage land"),
     as_json: JsonOpt = False,
 ):
     """Quasi-static equilibrium (Jones–Harris with centrifugal force and gyroscopic moment), with the ISO 281
@@ -74,7 +78,20 @@ def static(
     reliability_factor(reliability, "--reliability")
     rings = _ring_model(rings, b)
     tilt, gamma = _tilt_options(tilt, misalignment)
-    if rings == "fe":
+    op = None
+    if thermal:
+        if rings == "fe" or tilt != "free" or len(b.rows) != 1:
+            raise InputError("--thermal", "the thermal operating point takes one row with rigid rings and a free tilt",
+                             "drop --rings fe / --tilt fixed, or give a single-row bearing")
+        from ..lubricants import get_lubricant
+        from ..thermal import ThermalSetup, thermal_operating_point
+
+        lub = lub if lub is not None else get_lubricant("iso-vg-68")
+        op = thermal_operating_point(b, loads, omega, lub, ThermalSetup() if t is None else
+                                     ThermalSetup(oil_inlet_temperature=t), control=control)
+        res, t = op.result, op.temperatures["oil"]
+        res.converged = bool(res.converged and op.converged)
+    elif rings == "fe":
         if tilt != "free":
             raise InputError("--tilt", "a held tilt is not available with --rings fe", "use --rings rigid")
         from ..rings.coupling import solve as solve_fe
@@ -95,12 +112,22 @@ def static(
             d["friction"] = friction
             d["friction_torque_N_m"] = friction.get("friction_torque_N_m")
             d["power_loss_W"] = friction.get("power_loss_W")
+        if op is not None:
+            d["thermal"] = op.to_dict()
         typer.echo(json.dumps(d))
     else:
         if rings == "fe":
             make_console().print(f"rings: elastic (finite elements, docs/rings.md): {res.ring_iterations} offset "
                                  f"iterations, last change {res.ring_residual * 1e9:.2g} nm")
         print_static(res, friction)
+        if op is not None:
+            temps = ", ".join(f"{k.replace('_', ' ')} {v - 273.15:.1f} degC" for k, v in op.temperatures.items())
+            make_console().print(f"thermal operating point: {op.status} ({op.iterations} iterations, residual "
+                                 f"{op.residual:.2g} K)\n  {temps}\n  operating diametral clearance change "
+                                 f"{op.clearance_change * 1e6:+.2f} um; heat {sum(op.heat_removed.values()):.0f} W "
+                                 f"(to the oil {op.heat_removed.get('oil_inlet', 0):.0f} W, ambient "
+                                 f"{op.heat_removed.get('ambient', 0):.0f} W)" + "".join(f"\n  warning: {w}"
+                                                                                    for w in op.warnings))
     if not res.converged:
         raise typer.Exit(1)
 

@@ -237,13 +237,16 @@ def thermal_operating_point(bearing, loads, speed: float, lubricant, setup: Ther
         def mechanics(temps):
             return solve(bearing_at_temperatures(bearing, temps, speed, setup), loads, speed, control)
     temps = {n: setup.oil_inlet_temperature for n in NODES}
-    temps["shaft"] = temps["housing"] = 0.5 * (setup.oil_inlet_temperature + setup.ambient_temperature)
     status, converged, residual, warnings = "maximum iterations reached", False, math.inf, []
     res = summary = sol = None
     history = []
     it = over = 0
     for it in range(1, max_iterations + 1):
-        res = mechanics(temps)
+        try:
+            res = mechanics(temps)
+        except InputError as e:  # the operating clearance leaves the bearing model's domain
+            status = f"no fixed point: at the temperatures of iteration {it} the bearing is refused ({e})"
+            break
         if not res.converged:
             status = f"load distribution did not converge at the temperatures of iteration {it}: {res.status}"
             break
@@ -268,6 +271,8 @@ def thermal_operating_point(bearing, loads, speed: float, lubricant, setup: Ther
             status = "no fixed point (thermal runaway): the temperature change grows from iteration to iteration"
             break
     change = operating_clearance(bearing, temps, speed, setup).change(bearing)["diametral_clearance_change_m"]
+    if res is None or summary is None:
+        raise InputError("thermal", status, "check the cooling (oil flow, inlet temperature) and the clearance")
     sources = {k[:-2]: summary.get(k) for k in ("rolling_W", "spin_W", "sliding_W", "drag_W", "cage_land_W",
                                                   "cage_pocket_W", "jet_momentum_W")} if summary else {}
     if summary and summary.get("cage_land_estimated"):
