@@ -537,7 +537,8 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
     ``basic_rating_life_million_revolutions``, ``basic_rating_life_hours``, ``modified_rating_life_hours``,
     ``reference_rating_life_million_revolutions``, ``reference_rating_life_hours``,
     ``modified_reference_rating_life_hours``, ``static_safety_factor`` (C₀/P₀, ISO 76),
-    ``static_safety_factor_pressure`` ((4200 MPa / p_max)³, :mod:`bearingsim.safety`), for a set ``row_ratings``
+    ``static_safety_factor_pressure`` ((4200 MPa / p_max)³, :mod:`bearingsim.safety`), ``iso281_factors`` (X, Y, e
+    of table 3 and the relative axial load used, or None), for a set ``row_ratings``
     (per row: reference life in 10⁶ rev and hours, pressure-based s₀), ``life_factors``
     (a1, a_ISO, κ, ν, ν1, e_C), ``estimated`` (the names of figures estimated, not from the bearing file)
     and ``life_notes`` (why a figure is absent).  ``lubricant`` (a :class:`~bearingsim.lubricants.Lubricant`)
@@ -565,11 +566,15 @@ def rating_summary(result, lubricant=None, temperature: float | None = None, con
             notes.append(f"relative axial load (i)·f0·Fa/C0 = {rel:.3g} exceeds ISO 281 table 3 ({rel_max:.3g}): the "
                          "bearing is loaded beyond its permissible axial load; factors of the last row used")
         p = equivalent_dynamic_load(fr, fa, alpha, i_table, kind, rel)
+        xye = xy_factors(fr, fa, alpha, i_table, kind, rel)
+        out["iso281_factors"] = None if xye is None else {"X": xye[0], "Y": xye[1], "e": xye[2],
+                                                          "relative_axial_load": rel}
         if p is None:
             notes.append(f"ISO 281 table 3 has no factors for a {math.degrees(alpha):.3g}° {kind} bearing")
         p0 = equivalent_static_load(fr, fa, alpha, i_table, kind)
     if math.hypot(result.loads.m_y, result.loads.m_z) > 0:
         notes.append("ISO 281 P ignores the moment load; the reference rating life (ISO/TS 16281) includes it")
+    out.setdefault("iso281_factors", None)  # X, Y, e of ISO 281 table 3 and f0·Fa/C0r (None: no table 3 answer)
     out["equivalent_dynamic_load_N"] = p
     out["equivalent_static_load_N"] = p0
     l10 = None

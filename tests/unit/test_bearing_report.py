@@ -40,7 +40,7 @@ def test_page_has_sections_figures_and_tables(spindle_report):
     for ident in ("inputs", "results", "figures"):
         assert f'id="{ident}"' in s
     figs = _figures(s)
-    assert len(figs) == 3
+    assert len(figs) == 4  # load distribution, angles and pressure, ellipse vs shoulder, stiffness vs speed
     for f in figs:
         assert "/" not in f, "figures are linked by a relative name beside the page"
         assert (page.parent / f).stat().st_size > 5000
@@ -71,7 +71,7 @@ def test_estimates_are_flagged_with_their_source(spindle_report):
 def test_a_unit_gets_one_polar_panel_per_row(tmp_path):
     page = bearing_report("hub-seed001", Loads(fa=1890.0, fr_y=3750.0, m_z=600.0), 87.5, out_dir=tmp_path)
     s = page.read_text()
-    assert len(_figures(s)) == 3
+    assert len(_figures(s)) == 4
     assert re.search(r"\b1\s+ball diameter D", _text(s)), "the second row's inputs are listed"
 
 
@@ -80,7 +80,7 @@ def test_cli_report_and_its_errors(tmp_path):
     r = subprocess.run(["bearingsim", "report", "skf-7011-cdga-hc", "--fa", "1 kN", "--speed", "3000 rpm",
                         "--out", str(out)], capture_output=True, text=True, timeout=300)
     assert r.returncode == 0, r.stderr
-    assert (out / "report.html").is_file() and len(list(out.glob("*.png"))) == 3
+    assert (out / "report.html").is_file() and len(list(out.glob("*.png"))) == 4
     # a map file that is not one: one line, exit 2, nothing written
     bad = tmp_path / "notamap.nc"
     bad.write_bytes(b"\x00\x01binary")
@@ -102,4 +102,4 @@ def test_report_with_a_map_plots_stiffness_against_speed(tmp_path):
     json.loads(r.stdout)
     page = bearing_report("skf-7011-cdga-hc", Loads(fa=1000.0), 500.0, out_dir=tmp_path / "r", map_file=m)
     figs = _figures(page.read_text())
-    assert len(figs) == 4 and figs[-1].endswith("_map_stiffness.png")
+    assert len(figs) == 4 and figs[-1].endswith("_map_stiffness.png")  # the map replaces the speed sweep
