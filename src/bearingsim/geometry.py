@@ -244,6 +244,7 @@ class BallBearing:
             if not (math.isfinite(v) and v >= 0):
                 raise InputError(fname, f"must be positive (or 0 when unknown), got {v!r}",
                                  f"give {what} > 0 with its unit, or leave it out")
+        self._check_ratings()
         f0 = self.geometry_factor_f0
         if not (math.isfinite(f0) and (f0 == 0.0 or 5.0 <= f0 <= 30.0)):
             raise InputError("geometry_factor_f0", f"{f0!r} is not an ISO 76 factor f0 (radial ball bearings: "
@@ -275,6 +276,21 @@ class BallBearing:
                              f"{math.degrees(a_max):.0f}° (over the groove shoulder): the groove geometry allows at "
                              f"most {pd_max * 1e6:.4g} µm (2A(cos α₀ − cos 80°), A = (f_i+f_o−1)·D)",
                              "check the clearance, its unit and the conformities")
+
+    def _check_ratings(self):
+        """The load ratings C and C₀ [N] at most ten times the largest the ball set can have by ISO 281 / ISO 76:
+        C₀ = f₀ Z D_w² cos α with f₀ ≤ 17 [N, mm]; C = b_m f_c (cos α)^0.7 Z^(2/3) D_w^1.8 (D_w ≤ 25.4 mm, else
+        3.647 f_c … D_w^1.4) with b_m = 1.3, f_c ≤ 65 (ISO 281:2007 eqs. 1–2, table 1; ISO 76:2006 eq. 2)."""
+        dw = self.ball_diameter * 1e3
+        z = self.ball_count
+        c_max = 10.0 * 1.3 * 65.0 * z ** (2.0 / 3.0) * (dw ** 1.8 if dw <= 25.4 else 3.647 * dw ** 1.4)
+        c0_max = 10.0 * 17.0 * z * dw * dw
+        for fname, top, what in (("dynamic_load_rating", c_max, "ISO 281"), ("static_load_rating", c0_max, "ISO 76")):
+            v = getattr(self, fname)
+            if v > top:
+                raise InputError(fname, f"{v / 1e3:.4g} kN is more than ten times what {z} balls of {dw:.4g} mm can "
+                                 f"be rated ({what}: at most {top / 10e3:.4g} kN)", "check the value and its unit "
+                                 "(N or kN)")
 
     def _check_types(self):
         """API boundary: every field of the right type, else InputError naming it."""

@@ -40,6 +40,9 @@ from .errors import InputError
 STATIC_PRESSURE_LIMIT = 4.2e9  #: [Pa] ISO 76:2006 (ball bearings other than self-aligning)
 CONTACT_ANGLE_LIMIT = math.radians(80.0)  #: [rad] contact ellipse at the shoulder (Harris & Kotzalas vol. 1 ch. 2)
 MAX_NDM = 1.0e7  #: [mm·rpm] speed factor beyond any rolling bearing
+#: [rad] a clearance that turns an angular contact row's free contact angle by more than 10° is implausible (the
+#: clearances of angular contact rows are a few µm: the contact angle is the designed one)
+FREE_ANGLE_SHIFT = math.radians(10.0)
 
 #: bit constants of ``warning_flags`` (int32 bitmask); the names are the CF ``flag_meanings``
 FLAG_PRESSURE = 1  #: maximum contact pressure above STATIC_PRESSURE_LIMIT
@@ -131,6 +134,18 @@ def static_warnings(result, rest_inner_load=None) -> list[str]:
     if vlim > 0 and abs(result.speed) > vlim:
         out.append(f"speed {abs(result.speed) * 30 / math.pi:.0f} rpm exceeds the bearing's limiting speed "
                    f"{vlim * 30 / math.pi:.0f} rpm")
+    for row in getattr(result.bearing, "rows", ()):
+        rb = row.bearing
+        if rb.kind == "angular_contact" and rb.diametral_clearance > 0:
+            # free contact angle of the row with its clearance: cos α_f = cos α₀ − P_d / (2A) (Harris & Kotzalas
+            # 2007 vol. 1 eq. 2.10 about the nominal angle)
+            big_a = rb.total_curvature_distance
+            af = math.acos(max(-1.0, min(1.0, math.cos(rb.contact_angle) - rb.diametral_clearance / (2 * big_a))))
+            if af - rb.contact_angle > FREE_ANGLE_SHIFT:
+                out.append(f"the diametral clearance {rb.diametral_clearance * 1e6:.4g} µm of the angular contact row "
+                           f"{rb.name} turns its free contact angle from {math.degrees(rb.contact_angle):.1f}° to "
+                           f"{math.degrees(af):.1f}°: an implausible clearance (check the value and its unit)")
+                break
     qi = b["inner_load_N"]
     if rest_inner_load is not None and result.speed != 0 and np.any(qi > 0):
         nlift = lift_off_count(int(np.sum(~(qi > 0))), int(np.sum(~(np.asarray(rest_inner_load) > 0))))

@@ -148,7 +148,7 @@ def test_catalogue_entries_work_with_static_solver():
 
 
 @pytest.mark.parametrize("data, field", [
-    ({"arrangement": "DB", "row": "skf-7011-cdga-hc", "row_spacing": "5 mm"}, "rows"),
+    ({"arrangement": "DB", "row": "skf-7011-cdga-hc", "row_spacing": "5 mm"}, "row_spacing"),
     ({"arrangement": "DB", "row": "skf-7011-cdga-hc", "preload_offset": "500 um"}, "preload"),
     ({"arrangement": "DB", "row": "skf-7011-cdga-hc", "preload": "1 MN"}, "preload"),
     ({"arrangement": "DT", "row": "skf-7011-cdga-hc", "preload": "100 N"}, "preload"),

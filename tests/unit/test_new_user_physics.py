@@ -182,3 +182,75 @@ def test_auto_has_the_verdicts_of_the_fixed_controls(name, fr, fa, v):
         assert not auto.converged
         if 3 in (outer.status_code, inner.status_code):
             assert auto.status_code == 3, auto.status
+
+
+# ---- item 12: inputs out of the domain -----------------------------------------------------------------------
+
+_ROW = """name = "t"
+type = "angular_contact"
+ball_diameter = "11.5 mm"
+ball_count = 17
+pitch_diameter = "72.5 mm"
+inner_conformity = 0.52
+outer_conformity = 0.53
+contact_angle = "15 deg"
+dynamic_load_rating = "23.4 kN"
+ball_material = "bearing_steel"
+ring_material = "bearing_steel"
+"""
+
+
+def _file(tmp_path, text, name="b.toml"):
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+@pytest.mark.parametrize("old, new, field", [
+    ('"23.4 kN"', '"1e300 kN"', "dynamic_load_rating"),
+    ('ring_material = "bearing_steel"', 'ring_material = "bearing_steel"\nstatic_load_rating = "1e12 kN"',
+     "static_load_rating"),
+    ('"11.5 mm"', '"11.5 km"', "ball_diameter"),
+])
+def test_implausible_row_numbers_name_the_field(tmp_path, old, new, field):
+    with pytest.raises(InputError) as e:
+        load_bearing(str(_file(tmp_path, _ROW.replace(old, new))))
+    assert e.value.field == field
+
+
+@pytest.mark.parametrize("extra, field", [('row_spacing = "5 mm"', "row_spacing"),
+                                          ('row_spacing = "1e30 mm"', "row_spacing"),
+                                          ('row_spacing = "18 mm"\nload_point = "1e30 mm"', "load_point")])
+def test_implausible_set_numbers_name_the_field(tmp_path, extra, field):
+    row = _file(tmp_path, _ROW, "row.toml")
+    text = f'name = "s"\ntype = "bearing_set"\narrangement = "DB"\nrow = "{row}"\npreload = "100 N"\n{extra}\n'
+    with pytest.raises(InputError) as e:
+        load_bearing(str(_file(tmp_path, text, "set.toml")))
+    assert e.value.field == field
+
+
+def test_possible_but_implausible_inputs_are_warned(tmp_path):
+    wide = load_bearing(str(_file(tmp_path, _ROW + 'diametral_clearance = "0.5 mm"\n')))
+    r = jh.solve(wide, jh.Loads(fa=1000.0))
+    assert any("diametral clearance 500 µm" in w and "free contact angle" in w for w in r.warnings)
+    steep = load_bearing(str(_file(tmp_path, _ROW.replace('"15 deg"', '"88.9 deg"'), "s.toml")))
+    r = jh.solve(steep, jh.Loads(fa=1000.0))
+    assert any("contact angle" in w and "past 80°" in w for w in r.warnings)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(d=st.floats(1e-3, 1e6), c=st.floats(1e-3, 1e300), c0=st.floats(1e-3, 1e300),
+       pd=st.floats(-1e3, 1e3), angle=st.floats(0.0, 89.5))
+def test_bearing_file_domain_loads_or_names_a_field(tmp_path, d, c, c0, pd, angle):
+    """Over the numbers of a bearing file (ball diameter [mm], C and C0 [kN], clearance [µm], angle [deg]): the
+    file either loads and solves, or ends in an InputError naming a field — never another exception."""
+    text = (_ROW.replace('"11.5 mm"', f'"{d!r} mm"').replace('"23.4 kN"', f'"{c!r} kN"')
+            .replace('"15 deg"', f'"{angle!r} deg"')
+            + f'static_load_rating = "{c0!r} kN"\ndiametral_clearance = "{pd!r} um"\n')
+    try:
+        b = load_bearing(str(_file(tmp_path, text)))
+    except InputError as e:
+        assert e.field
+        return
+    r = jh.solve(b, jh.Loads(fa=100.0, fr_y=100.0))
+    assert isinstance(r.status, str)

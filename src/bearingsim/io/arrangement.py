@@ -12,7 +12,7 @@ import dataclasses
 
 from ..errors import InputError
 from ..geometry import BallBearing
-from ..statics.arrangements import BearingSystem, Row, make_system, offset_for_preload
+from ..statics.arrangements import MAX_SPAN_PER_PITCH, BearingSystem, Row, make_system, offset_for_preload
 from ..units import parse_quantity
 from .bearing import bearing_from_dict, check_sleeves, load_bearing, rings_from_dict
 from .clearance import operating_clearance_from_dict
@@ -128,6 +128,11 @@ def arrangement_from_dict(data: dict) -> BearingSystem:
         b = _row_bearing(spec, "row")
         spacing = parse_quantity(data["row_spacing"], "length", "row_spacing") if "row_spacing" in data else None
         system = make_system(b, data["arrangement"], spacing, preload, offset, load_point, name, rating, notes)
+    dm = max(r.bearing.pitch_diameter for r in system.rows)
+    if abs(load_point) > MAX_SPAN_PER_PITCH * dm:
+        raise InputError("load_point", f"{load_point * 1e3:.4g} mm from the set's centre is more than "
+                         f"{MAX_SPAN_PER_PITCH:g} pitch diameters away", "check the value and its unit (e.g. "
+                         "\"10.4 mm\"); give a far load as the force and moment it puts at the set")
     if "rings" in notes:
         spec = notes["rings"]
         od = spec.outer_ring[0] or max(r.bearing.outside_diameter for r in system.rows)

@@ -306,6 +306,12 @@ def _offset_limits(b: BallBearing) -> tuple[float, float]:
     return max(lo, 0.0), hi
 
 
+#: the largest row spacing or load-point distance of a bearing set, in pitch diameters of its rows [-]: beyond it
+#: the rows are two supports of a shaft, not one set (the ring equilibrium of a set then is ill-conditioned:
+#: moments of 1e30 mm arms)
+MAX_SPAN_PER_PITCH = 100.0
+
+
 def make_system(row_bearing: BallBearing, arrangement: str = "DB", row_spacing: float | None = None,
                 preload: float | None = None, preload_offset: float | None = None, load_point: float = 0.0,
                 name: str | None = None, dynamic_load_rating: float | None = None,
@@ -332,6 +338,15 @@ def make_system(row_bearing: BallBearing, arrangement: str = "DB", row_spacing: 
     if not (math.isfinite(row_spacing) and row_spacing > 0):
         raise InputError("row_spacing", f"must be positive, got {row_spacing!r} m",
                          'e.g. row_spacing = "18.2 mm" (needed when the row has no width)')
+    if row_spacing < row_bearing.ball_diameter:
+        raise InputError("row_spacing", f"{row_spacing * 1e3:.4g} mm is less than the ball diameter "
+                         f"{row_bearing.ball_diameter * 1e3:.4g} mm: the two rows of balls would overlap",
+                         "give the distance between the row planes (at least the ball diameter; the bearing width "
+                         "for two separate bearings)")
+    if row_spacing > MAX_SPAN_PER_PITCH * row_bearing.pitch_diameter:
+        raise InputError("row_spacing", f"{row_spacing * 1e3:.4g} mm is more than {MAX_SPAN_PER_PITCH:g} pitch "
+                         "diameters: not one bearing set (model two supports of a shaft instead)",
+                         "check the value and its unit, e.g. row_spacing = \"18.2 mm\"")
     if preload is not None and preload_offset is not None:
         raise InputError("preload", "both preload and preload_offset are given", "give only one of them")
     s1, s2 = ARRANGEMENTS[arr]
