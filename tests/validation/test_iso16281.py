@@ -15,14 +15,14 @@ angle (0° for deep groove) with its rounded constants 0.407, 0.389, 1.044: all 
 difference of the two programs' Hertz constants (the displacements agree to 1e-4, and L10r goes with the cube
 of the ball loads).
 
-Not tested here: the moment-only case of the same source (tilt 3.6957 mrad, L10r 785 145); bearingsim gives
-3.6468 mrad and L10r 808 919 (+3.0 %).  That difference is in the load distribution, not in the life: the
+The moment-only case of the same source (tilt 3.6957 mrad, L10r 785 145) is tested in test_iso16281_moment.py;
+bearingsim gives 3.6472 mrad and L10r 804 177 (+2.4 %).  That difference is in the load distribution, not in the life: the
 reference tilts the ring about the pitch radius D_pw/2 (its tilt, 3.6952 mrad, is reproduced by the planar
 ISO/TS 16281 model with the groove-centre radius replaced by D_pw/2), while the Jones–Harris model rotates the
 rigid inner ring, whose groove curvature centre lies at R_i = D_pw/2 + (f_i − 0.5) D_w = 21.98 mm, i.e. 1.06 %
 farther out: the moment arm and the axial shift per unit tilt are both larger, so the ball loads are smaller.
 With both radii set to D_pw/2 in a planar model (scratch check, same Hertz constants) the tilt is 3.6952 mrad and
-L10r 789 944 (+0.6 % from the reference): 2.4 of the 3.0 points are that modelling choice of the load
+L10r 789 944 (+0.6 % from the reference): most of the difference is that modelling choice of the load
 distribution, not a life term.
 """
 

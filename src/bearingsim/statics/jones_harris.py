@@ -716,7 +716,9 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
     speed : float  [rad/s]  inner-ring speed (outer ring fixed); the sign gives the sense of rotation of
         the balls and cage (the equilibrium depends on |speed| only).  A bare number is rad/s (157.08 is
         1500 rpm); ``"1500 rpm"`` or a pint Quantity is converted (:func:`bearingsim.units.api_quantity`)
-    control : ``"outer"``, ``"inner"`` or ``"auto"`` raceway control (auto: Jones' criterion per ball)
+    control : ``"outer"``, ``"inner"`` or ``"auto"`` raceway control (auto: Jones' criterion per ball, evaluated at
+        the ball's outer-control solution at the current displacement — inner control when it says so and the inner
+        contact stays closed — so that the ring forces depend on the displacement alone: ``_kernels.ring_assemble``)
     initial : optional start for (δx, δy, δz, γy, γz) [m, rad], float[5], finite
     tilt : ``"free"`` (default: the inner ring tilts until the moments balance — a single bearing carries no
         moment beyond ``loads``) or ``"fixed"``: the tilt (γy, γz) is held at ``misalignment`` (default 0: a
