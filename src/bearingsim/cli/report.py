@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import shlex
+import sys
 from pathlib import Path
 from typing import Optional
 
@@ -14,6 +16,7 @@ from .options import BearingArg, ControlOpt, FaOpt, FrOpt, FzOpt, MomentOpt, MyO
 
 
 def report(
+    ctx: typer.Context,
     bearing: BearingArg,
     out: options.out_option("Folder for report.html and its figures (created if missing)") = Path("report"),
     fa: FaOpt = None,
@@ -52,7 +55,9 @@ def report(
     announce_compilation()
     folder = output_folder(out)
     page = bearing_report(b, b_loads, omega, out_dir=folder, lubricant=lubricant, temperature=t, control=control,
-                          map_file=map_file, tilt=tilt_mode, misalignment=gamma)
+                          map_file=map_file, tilt=tilt_mode, misalignment=gamma,
+                          command=shlex.join(["bearingsim", *sys.argv[1:]]),  # shown in the report, with the
+                          given={p for p in ctx.params if ctx.get_parameter_source(p).name != "DEFAULT"})  # defaults
     make_console().print(f"report written: {page}")
 
 

@@ -349,15 +349,18 @@ _WORDS = {"fatigue_load_limit_N": "fatigue load limit P_u", "static_load_rating_
           "geometry_factor_f0": "factor f₀", "dynamic_load_rating_N": "dynamic load rating C",
           "ball_count": "ball count", "ball_diameter": "ball diameter", "diametral_clearance": "diametral clearance",
           "inner_conformity": "inner conformity", "outer_conformity": "outer conformity",
-          "pitch_diameter": "pitch diameter", "contact_angle": "contact angle", "fatigue_load_limit": "fatigue load limit",
+          "pitch_diameter": "pitch diameter", "contact_angle": "contact angle",
+          "fatigue_load_limit": "fatigue load limit",
           "static_load_rating": "static load rating", "dynamic_load_rating": "dynamic load rating",
           "bearing_steel": "bearing steel", "silicon_nitride": "silicon nitride", "palmgren": "Palmgren",
           "physical": "physics-based"}
 
 
 def human(text) -> str:
-    """``text`` with the library's identifiers (field and material names) replaced by words."""
-    out = str(text)
+    """``text`` with the library's identifiers (field and material names) replaced by words and module paths
+    dropped."""
+    out = re.sub(r"\s*\(bearingsim\.[\w.]+\)", "", str(text))  # module paths are for the code, not the page
+    out = re.sub(r"\bbearingsim(\.[a-z_]\w*){2,}", "bearingsim", out)
     for key in sorted(_WORDS, key=len, reverse=True):
         out = re.sub(rf"\b{re.escape(key)}\b", _WORDS[key], out)
     return out
@@ -467,7 +470,8 @@ def bearing_report(bearing, loads, speed: float | None = None, *, out_dir, lubri
         op_txt += (f"; {getattr(lubricant, 'name', lubricant)} at "
                    f"{_value(f'{temperature - 273.15:.0f} °C', 'temperature' in given)}")
     kr = np.asarray(d["stiffness_matrix"], dtype=float)
-    summary = [["bearing", f"{d['bearing']} ({'estimated data flagged below' if b.rows[0].bearing.estimated else 'catalogue data'})"],
+    data_kind = "estimated data flagged below" if any(r.bearing.estimated for r in b.rows) else "catalogue data"
+    summary = [["bearing", f"{d['bearing']} ({data_kind})"],
                ["operating point", op_txt],
                ["status", "converged" if d["converged"] else f"NOT CONVERGED: {d['status']}"],
                ["basic rating life L10h (ISO 281)", hours_text(d.get("basic_rating_life_hours"))],
@@ -476,7 +480,8 @@ def bearing_report(bearing, loads, speed: float | None = None, *, out_dir, lubri
                ["reference rating life L10rh (ISO/TS 16281)", hours_text(d.get("reference_rating_life_hours"))],
                ["static safety s₀ = C₀/P₀ (ISO 76)", H.fmt(d.get("static_safety_factor"), ".3g")],
                ["stiffness axial K_xx, radial K_yy", f"{_show(kr[0, 0], 'N/m')}, {_show(kr[1, 1], 'N/m')}"],
-               ["friction torque, power loss", (f"{fr['friction_torque_N_m'] * 1e3:.4g} N·mm, {fr['power_loss_W']:.4g} W"
+               ["friction torque, power loss", (f"{fr['friction_torque_N_m'] * 1e3:.4g} N·mm, "
+                                                f"{fr['power_loss_W']:.4g} W"
                                                 " (Palmgren)") if fr is not None else "— (needs a lubricant)"]]
     warn = [human(w) for w in (d.get("warnings") or [])]
     summary.append(["warnings", "; ".join(warn) if warn else "none"])
@@ -489,8 +494,10 @@ def bearing_report(bearing, loads, speed: float | None = None, *, out_dir, lubri
     def row_(label, value, key=None):
         return [label, value if key is None else _value(value, key in given)]
 
-    op = [row_("axial load Fa", _show(ld["fa_N"], "N"), "fa"), row_("radial load Fr (y)", _show(ld["fr_y_N"], "N"), "fr"),
-          row_("radial load Fr (z)", _show(ld["fr_z_N"], "N"), "fz"), row_("moment My", _show(ld["m_y_N_m"], "N m"), "my"),
+    op = [row_("axial load Fa", _show(ld["fa_N"], "N"), "fa"),
+          row_("radial load Fr (y)", _show(ld["fr_y_N"], "N"), "fr"),
+          row_("radial load Fr (z)", _show(ld["fr_z_N"], "N"), "fz"),
+          row_("moment My", _show(ld["m_y_N_m"], "N m"), "my"),
           row_("moment Mz", _show(ld["m_z_N_m"], "N m"), "moment"),
           row_("inner-ring speed", _show(d["speed_rad_s"], "rad/s"), "speed"),
           row_("raceway control", _CONTROL_LABELS.get(d["control"], d["control"]), "control"),
@@ -535,7 +542,8 @@ def bearing_report(bearing, loads, speed: float | None = None, *, out_dir, lubri
     if xye:
         ratio = abs(ld["fa_N"]) / math.hypot(ld["fr_y_N"], ld["fr_z_N"]) if (ld["fr_y_N"] or ld["fr_z_N"]) else math.inf
         fac = [["X", f"{xye['X']:.3g}"], ["Y", f"{xye['Y']:.3g}"], ["e", f"{xye['e']:.3g}"],
-               ["Fa/Fr", "∞" if not math.isfinite(ratio) else f"{ratio:.3g}" + (" > e" if ratio > xye["e"] else " ≤ e")],
+               ["Fa/Fr", ("∞" if not math.isfinite(ratio) else f"{ratio:.3g}")
+                + (" > e" if ratio > xye["e"] else " ≤ e")],
                ["relative axial load f₀·Fa/C₀r", H.fmt(xye.get("relative_axial_load"), ".3g")],
                ["P = X·Fr + Y·Fa", _show(d.get("equivalent_dynamic_load_N"), "N")]]
         body += H.table(["ISO 281 factor", "value"], fac, text_columns=(0, 1), ident="iso281-factors",
