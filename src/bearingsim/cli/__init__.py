@@ -24,11 +24,12 @@ import sys
 
 import typer
 
-from . import cage, catalog, clearance, dynamics, hysteresis, lubrication, report, static, sweep
+from . import cage, catalog, clearance, dynamics, hysteresis, lubrication, report, shaft, static, sweep
+from .options import SingleUseOptions
 
-app = typer.Typer(add_completion=False, no_args_is_help=True,
+app = typer.Typer(add_completion=False, no_args_is_help=True, cls=SingleUseOptions,
                   help="bearingsim: ball bearing statics, stiffness, lubrication and dynamics.")
-reproduce_app = typer.Typer(no_args_is_help=True,
+reproduce_app = typer.Typer(no_args_is_help=True, cls=SingleUseOptions,
                             help="Reproduce the published studies (references in docs/references.md).")
 app.add_typer(reproduce_app, name="reproduce")
 
@@ -58,6 +59,7 @@ sweep.register(app, reproduce_app)
 dynamics.register(app, reproduce_app)
 hysteresis.register(app, reproduce_app)
 report.register(app)
+shaft.register(app)
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
+from typer.core import TyperGroup
 
 BearingArg = Annotated[str, typer.Argument(help="Catalogue name or TOML file")]
 ControlOpt = Annotated[str, typer.Option("--control", help="Raceway control: outer, inner or auto")]
@@ -59,6 +60,33 @@ FaGrid, FrGrid, FzGrid, MomentGrid, MyGrid = load_options(grid=True)
 SpeedOpt = speed_option(grid=False)
 SpeedGrid = speed_option(grid=True)
 OutFolder = out_option("Folder for the CSV and the plot")
+
+
+def refuse_repeated_options(command, name: str, parent, args: list[str]) -> None:
+    """Raise a usage error (exit 2, one line) when ``args`` give one option of ``command`` more than once
+    (``--fr 2000 --fr 3000``): click keeps the last value silently.  Options declared to be repeated
+    (``multiple``, ``count``) and eager ones (``--help``) are let through.  ``args`` are parsed a first time here
+    with ``resilient_parsing`` (errors are left to the command's own parse)."""
+    ctx = command.context_class(command, info_name=name, parent=parent, resilient_parsing=True)
+    _, _, order = command.make_parser(ctx).parse_args(list(args))
+    seen = set()
+    for param in order:
+        if getattr(param, "param_type_name", "") != "option" or param.multiple or param.count or param.is_eager:
+            continue
+        if param.name in seen:
+            ctx.fail(f"Option '{param.opts[0]}' is given more than once; give it once.")
+        seen.add(param.name)
+
+
+class SingleUseOptions(TyperGroup):
+    """The command group of the app and its sub-groups (``typer.Typer(cls=SingleUseOptions)``): every command
+    resolved through it refuses an option given twice (:func:`refuse_repeated_options`)."""
+
+    def resolve_command(self, ctx, args):
+        name, cmd, rest = super().resolve_command(ctx, args)
+        if cmd is not None and not isinstance(cmd, TyperGroup):  # a sub-group checks its own commands
+            refuse_repeated_options(cmd, name, ctx, rest)
+        return name, cmd, rest
 
 
 def parse_loads(fa, fr, fz, moment, my):
