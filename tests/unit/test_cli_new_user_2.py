@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import pytest
-
 from _cli import run  # tests/unit/_cli.py: the installed console script
 
 
@@ -22,3 +21,35 @@ def test_a_repeated_option_is_a_usage_error(argv, option):
     lines = p.stderr.strip().splitlines()
     assert len(lines) == 1 and option in lines[0] and "more than once" in lines[0], p.stderr
     assert p.stdout == ""
+
+
+def test_designations_are_case_insensitive():
+    """`SKF-7011-CDGA-HC` is the catalogue's skf-7011-cdga-hc, for a command and for `catalog NAME` alike."""
+    upper = run("clearance", "SKF-7011-CDGA-HC", "--json", check=False)
+    lower = run("clearance", "skf-7011-cdga-hc", "--json")
+    assert upper.returncode == 0, upper.stderr
+    assert upper.stdout == lower.stdout
+    shown = run("catalog", "SKF-7011-CDGA-HC", "--json", check=False)
+    assert shown.returncode == 0, shown.stderr
+    assert '"skf-7011-cdga-hc"' in shown.stdout
+
+
+@pytest.mark.parametrize("name, expected", [
+    ("7011", ["7011-15", "7011-25", "7011-30"]),
+    ("7011-1", ["7011-15"]),
+    ("SKF-7011", ["skf-7011-cdga-hc"]),
+])
+def test_suggestions_put_the_series_first(name, expected):
+    """A designation without its contact-angle suffix is answered with the series it starts (prefix matches
+    before edit distance): `7011` suggests 7011-15/-25/-30, first."""
+    p = run("clearance", name, check=False)
+    assert p.returncode == 2
+    line = p.stderr.strip()
+    assert "did you mean" in line, line
+    suggested = line.split("did you mean", 1)[1].strip(" ?)").split(" or ")
+    assert suggested[:len(expected)] == expected, line
+
+
+def test_a_typo_is_still_answered_by_edit_distance():
+    line = run("clearance", "62o5", check=False).stderr
+    assert "6205" in line.split("did you mean", 1)[1], line

@@ -196,13 +196,15 @@ def catalog(
     """List the built-in bearing catalogue (filters --series, --bore, --type), or show one entry with its sources."""
 
     from ..errors import InputError
-    from ..io import catalog_entries, catalog_names
-    from ..io.bearing import unknown_bearing_fix
+    from ..io import catalog_entries
+    from ..io.bearing import catalog_name, unknown_bearing_fix
 
     if name is not None:
-        names = catalog_names()
-        if name not in names and not name.lower().endswith(".toml"):
-            raise InputError("bearing", f"{name!r} is not in the catalogue", unknown_bearing_fix(name))
+        if not name.lower().endswith(".toml"):
+            found = catalog_name(name)
+            if found is None:
+                raise InputError("bearing", f"{name!r} is not in the catalogue", unknown_bearing_fix(name))
+            name = found
         d = entry_details(name)
         if as_json:
             typer.echo(json.dumps(d))

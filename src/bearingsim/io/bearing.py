@@ -93,6 +93,12 @@ def catalog_summary(name: str, data: dict) -> dict:
     }
 
 
+def catalog_name(name: str) -> str | None:
+    """The catalogue designation ``name`` stands for, case-insensitively (``SKF-7011-CDGA-HC`` →
+    ``skf-7011-cdga-hc``); None when the catalogue holds none."""
+    return {n.lower(): n for n in catalog_names()}.get(str(name).strip().lower())
+
+
 def _read_catalog(name: str) -> dict:
     return read_toml(resources.files("bearingsim") / "catalog" / f"{name}.toml", "bearing")
 
@@ -116,20 +122,35 @@ def resolve_bearing_data(spec: str | Path) -> dict:
         a_file = False
     if a_file:
         return read_toml(p, "bearing")
+    folded = catalog_name(spec_s)
+    if folded is not None:
+        return _read_catalog(folded)
     shown = repr(spec_s) if len(spec_s) <= 80 else repr(spec_s[:80]) + f"… ({len(spec_s)} characters)"
     raise InputError("bearing", f"{shown} is neither a catalogue name nor a TOML file", unknown_bearing_fix(spec_s))
 
 
 def unknown_bearing_fix(name: str) -> str:
-    """The fix for a bearing name the catalogue does not hold: its closest designations, else where the list is."""
+    """The fix for a bearing name the catalogue does not hold: its closest designations, else where the list is.
+
+    Case-insensitive, in this order: the designations that start with the name (``7011`` → 7011-15, 7011-25,
+    7011-30), those that hold it (skf-7011-cdga-hc), then the closest by edit distance (:mod:`difflib`), then those
+    that share its longest start (at least 3 characters); at most six."""
     import difflib
 
     names = catalog_names()
-    close = difflib.get_close_matches(name, names, n=5, cutoff=0.6) if len(name) <= 80 else []
+    key = name.strip().lower()
+    lower = {n.lower(): n for n in names}
+    close: list[str] = []
+    if key and len(key) <= 80:
+        close += [n for n in names if n.lower().startswith(key)]
+        close += [n for n in names if key in n.lower() and n not in close]
+        close += [lower[m] for m in difflib.get_close_matches(key, list(lower), n=6, cutoff=0.6)
+                  if lower[m] not in close]
     if not close:  # the designations that share the longest start with it (at least 3 characters)
-        common = [(len(os.path.commonprefix([name.lower(), n.lower()])), n) for n in names]
+        common = [(len(os.path.commonprefix([key, n.lower()])), n) for n in names]
         best = max((k for k, _ in common), default=0)
-        close = [n for k, n in common if k == best][:5] if best >= 3 else []
+        close = [n for k, n in common if k == best] if best >= 3 else []
+    close = close[:6]
     return (f"did you mean {' or '.join(close)}?" if close else
             "bearingsim catalog lists the catalogue; or give a path to a .toml file")
 
