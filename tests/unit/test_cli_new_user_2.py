@@ -53,3 +53,15 @@ def test_suggestions_put_the_series_first(name, expected):
 def test_a_typo_is_still_answered_by_edit_distance():
     line = run("clearance", "62o5", check=False).stderr
     assert "6205" in line.split("did you mean", 1)[1], line
+
+
+def test_simulate_given_a_bearing_name_says_it_takes_a_case_file(tmp_path):
+    """`bearingsim simulate 6205` names 6205 as a catalogue bearing and says how to write a case file."""
+    p = run("simulate", "6205", "--out", str(tmp_path / "x.nc"), check=False)
+    assert p.returncode == 2
+    line = p.stderr.strip()
+    assert len(line.splitlines()) == 1
+    assert "'6205' is a bearing of the catalogue, not a case file" in line, line
+    assert "examples/spindle-7011.toml" in line and 'bearing = "6205"' in line, line
+    assert "catalogue name" not in line.split("(", 1)[1]  # no longer offered as what simulate takes
+    assert not (tmp_path / "x.nc").exists()

@@ -39,6 +39,7 @@ def simulate(case: CaseArg,
     from ..units import parse_quantity
     from .output import NETCDF_SUFFIXES, output_file, writing
 
+    _check_case_path(case)
     c = load_case(case)
     out = output_file(out, "--out", renamed=True, suffixes=NETCDF_SUFFIXES)
     if duration is not None:
@@ -80,6 +81,27 @@ def simulate(case: CaseArg,
                 con.print("elastic cage: largest pocket displacement "
                           f"{ss['cage_pocket_deformation_max'] * 1e6:.3g} µm, largest normal stress "
                           f"{ss['cage_peak_stress_max'] / 1e6:.3g} MPa")
+
+
+#: how to write a case file, for the message on a case that is not one
+CASE_HOWTO = ("simulate takes a case file: copy examples/spindle-7011.toml, set bearing = {bearing} and the "
+              "loads, speed and duration; every key is in the docstring of bearingsim.dynamics.case and "
+              "docs/dynamics.md")
+
+
+def _check_case_path(case: Path) -> None:
+    """Refuse a case argument that is not an existing file with the fix for ``simulate``: a bearing name
+    (``bearingsim simulate 6205``) is told that the command takes a case file and how to write one."""
+    from ..errors import InputError
+    from ..io.bearing import catalog_name
+
+    if case.exists():
+        return
+    name = catalog_name(str(case))
+    if name is not None:
+        raise InputError("case", f"{str(case)!r} is a bearing of the catalogue, not a case file",
+                         CASE_HOWTO.format(bearing=f'"{name}"') + f"; a quasi-static point: bearingsim static {name}")
+    raise InputError("case", f"{str(case)!r} does not exist", CASE_HOWTO.format(bearing="the bearing's name or file"))
 
 
 def register(app: typer.Typer, reproduce_app: typer.Typer | None = None) -> None:
