@@ -66,10 +66,7 @@ def simulate(case: CaseArg,
     if json_out:
         typer.echo(json.dumps(summary))
     else:
-        con.print(f"wrote {out}: {summary['simulated_seconds'] * 1e3:.4g} ms simulated in "
-                  f"{summary['wall_seconds']:.3g} s ({summary['wall_per_simulated_second']:.4g} wall s per "
-                  f"simulated s, {summary['steps']} steps, {summary['threads']} "
-                  + ("thread)" if summary['threads'] == 1 else "threads)"))
+        con.print(_run_line(out, summary))
         ss = summary.get("steady_state")
         if ss:
             con.print(f"last half of the run: heat {ss['heat_generation_total_W']:.4g} W (ball-inner "
@@ -81,6 +78,20 @@ def simulate(case: CaseArg,
                 con.print("elastic cage: largest pocket displacement "
                           f"{ss['cage_pocket_deformation_max'] * 1e6:.3g} µm, largest normal stress "
                           f"{ss['cage_peak_stress_max'] / 1e6:.3g} MPa")
+
+
+def _run_line(out: Path, summary: dict) -> str:
+    """The one-line summary of a run (:func:`bearingsim.dynamics.run.simulate`'s ``summary``): this call's
+    simulated time, wall time and steps, and for a resumed run the point it resumed at and the whole run's."""
+    threads = f"{summary['threads']} " + ("thread" if summary["threads"] == 1 else "threads")
+    rate = f"{summary['wall_per_simulated_second']:.4g} wall s per simulated s"
+    seg = (f"{summary['simulated_seconds'] * 1e3:.4g} ms simulated in {summary['wall_seconds']:.3g} s "
+           f"({rate}, {summary['steps']} steps, {threads})")
+    at = summary.get("resumed_at_seconds")
+    if at is None:
+        return f"wrote {out}: {seg}"
+    return (f"wrote {out}: resumed at {at * 1e3:.4g} ms, this run {seg}; whole run "
+            f"{summary['run_simulated_seconds'] * 1e3:.4g} ms simulated, {summary['run_steps']} steps")
 
 
 #: how to write a case file, for the message on a case that is not one

@@ -118,7 +118,10 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
         samples are interpolated in the steps, and the trajectory does not depend on the output interval (False:
         every output time is a step's end, as with the other integrators)
 
-    Returns :class:`Results`.  On a diverging step or when every ball has separated
+    Returns :class:`Results`; its ``summary`` holds this call's segment — ``simulated_seconds`` [s], ``steps``,
+    ``rejected_steps``, ``wall_seconds`` [s] and ``wall_per_simulated_second`` (a resumed call: from the
+    checkpoint at ``resumed_at_seconds`` [s], else None) — and the whole run's ``run_simulated_seconds`` [s],
+    ``run_steps`` and ``run_rejected_steps``.  On a diverging step or when every ball has separated
     the data so far are saved and :class:`SimulationError` is raised.
     """
     from .case import Case, load_case
@@ -181,6 +184,7 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
     if start == 0:
         buf.append(stepper.sample())
     t_wall0 = time.perf_counter()
+    steps0, rejected0 = stepper.steps, stepper.rejected  # the counts a resumed run starts from (checkpoint)
     first = start if start > 0 else 1
     prog = None
     task = None
@@ -255,10 +259,14 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
         ckpt.unlink(missing_ok=True)  # a completed run leaves no checkpoint behind
         _checkpoint_tmp(ckpt).unlink(missing_ok=True)  # (nor one half-saved when an earlier run was killed)
     wall = time.perf_counter() - t_wall0
-    summary = {"wall_seconds": wall, "simulated_seconds": t_out - t_sim0, "steps": stepper.steps,
+    # this call's segment (from the checkpoint when resumed) and the whole run, each labelled: the segment's
+    # time, steps and wall time belong together; the run's totals count every segment
+    summary = {"wall_seconds": wall, "simulated_seconds": t_out - t_sim0, "steps": stepper.steps - steps0,
                "threads": stepper.threads,
-               "rejected_steps": stepper.rejected,
+               "rejected_steps": stepper.rejected - rejected0,
                "wall_per_simulated_second": wall / max(t_out - t_sim0, 1e-30),
+               "resumed_at_seconds": t_sim0 if start > 0 else None,
+               "run_simulated_seconds": t_out, "run_steps": stepper.steps, "run_rejected_steps": stepper.rejected,
                "initial_static_converged": bool(static.converged),
                "initial_static_warnings": list(getattr(static, "warnings", ()))}
     res = Results(data=stack_samples(samples_mem) if writer is None else None, attrs=attrs,
