@@ -188,7 +188,7 @@ def _bubble_figure(study, path):
 def _sensitivity(study, folder):
     """Reduced-model W_H against the creep slope and μ_max at one cell ((html, figure name) or None, why)."""
     if not any(c.reduced for c in study.cells):
-        return None, "the reduced model (studies/hub_reduced.py) was not available"
+        return None, "the reduced model was not available"
     try:
         from . import hub_reduced
         from .hub_reduced import reduced_wh
@@ -240,8 +240,7 @@ def _dynamic_sensitivity(source, folder):
 
     runs = load_sensitivities(source)
     if not runs:
-        return H.paragraph(f"Dynamic sensitivities: no variant runs in {source} (python -m "
-                           "bearingsim.studies.hub_sensitivity CASE DIR).", "note")
+        return H.paragraph(f"Dynamic sensitivities: no variant runs in {source}.", "note")
     import matplotlib
 
     matplotlib.use("Agg", force=False)
@@ -284,7 +283,7 @@ def _dynamic_sensitivity(source, folder):
     return (H.figure("sensitivity_dynamic.png", "Dynamic W_H of one cell with one input changed (black: the case "
                      "as given; dotted: its W_H)")
             + H.table(header, rows, text_columns=(0, 1, 2), ident="sensitivity-dynamic", specs=specs)
-            + H.paragraph(f"Runs read from {source} (bearingsim/studies/hub_sensitivity.py: each variant is the cell's "
+            + H.paragraph(f"Runs read from {source} (each variant is the cell's "
                           "case with one change; the same estimator as the grid).  Paired: the mean of the per-cycle "
                           "differences variant − base over the same cycles, with its Student 95 % interval (the runs "
                           "share their start and most of their ringing, so the difference is resolved more finely "
@@ -391,8 +390,8 @@ def verdicts(study: HysteresisStudy) -> list[dict]:
         r2 = [c.wh / c.seed(SEED_FIG9_ALT) for c in seeded]
         bounded = [c for c in seeded if np.isfinite(c.bound())]
         over = [c for c in bounded if min(c.seed(), c.seed(SEED_FIG9_ALT)) > c.bound()]
-        ev = (f"ours / [S1] = {min(r1):.3g} … {max(r1):.3g} (SEED_FIG9), {min(r2):.3g} … {max(r2):.3g} "
-              f"(SEED_FIG9_ALT) over {len(seeded)} cells")
+        ev = (f"ours / [S1] = {min(r1):.3g} … {max(r1):.3g} (reading A), {min(r2):.3g} … {max(r2):.3g} "
+              f"(reading B) over {len(seeded)} cells")
         if bounded:
             ev += (f"; the paper's value exceeds the mechanism's bound (smaller of force and energy bounds) under "
                    f"both readings in {len(over)} of {len(bounded)} cells")
@@ -430,7 +429,7 @@ def _assumptions(study) -> list[str]:
     except BearingSimError as exc:  # the report still shows the results, and says why this line is missing
         items.append(f"groove curvature ratios: the case's bearing cannot be read again ({exc})")
     items.append("load path: Fa, Fr and M in phase, Fa = 1890 N · M/600 N·m, Fr = 2785 N + 965 N · M/600 N·m "
-                 "([S1] Table 2 ranges; the tie is our assumption, studies/hub_static.py)")
+                 "([S1] Table 2 ranges; the tie is our assumption)")
     items.append(f"tyre rolling radius {TYRE_RADIUS * 1e3:.1f} mm (M_max/Fa_max; assumed), which turns the vehicle "
                  "speed into the shaft speed")
     items.append(f"lubricant {d.get('lubricant')} at {d.get('temperature')}; traction "
@@ -450,7 +449,7 @@ def write_report(study: HysteresisStudy, folder, sensitivity=None) -> Path:
     body.append(H.paragraph(
         f"Case {study.case}; {len(study.cells)} cell(s); W_H is the tilt where the moment passes "
         f"{study.level / 1e3:g} kN·m falling minus rising ([S1] Fig. 8), from a harmonic fit per load cycle "
-        "(bearingsim.dynamics.analysis.hysteresis_estimate); positive = the tilt lags the moment.  Wall time of the "
+        "(the estimator's harmonic fit); positive = the tilt lags the moment.  Wall time of the "
         f"cells run now: {H.fmt(study.wall_seconds, '.0f')} s."))
     if study.notes:
         body.append(H.section("Notes", H.bullet_list(study.notes), "notes"))
@@ -463,7 +462,7 @@ def write_report(study: HysteresisStudy, folder, sensitivity=None) -> Path:
         "Rules: a lag is confirmed where the 95 % interval of W_H lies above 0; a trend step counts when W_H moves "
         "by more than the two intervals' half-widths together; the compliance is speed- and frequency-independent "
         f"when its spread is under {COMPLIANCE_SPREAD * 100:g} % of its mean; magnitudes are confirmed only within "
-        "a factor 2 of the paper (SEED_FIG9 reading)."), "verdicts-section"))
+        "a factor 2 of the paper (reading A of its Fig. 9)."), "verdicts-section"))
     # figures
     figs = []
     # [S1] Figs. 6 and 7: the loops at 50 Hz per vehicle speed, and at 10 km/h per load frequency
@@ -495,7 +494,7 @@ def write_report(study: HysteresisStudy, folder, sensitivity=None) -> Path:
     # table
     header = ["km/h", "Hz", "cycles used", "W_H [10⁻³ deg]", "95 % interval", "two-point mean", "loop area [mJ]",
               "phase lag [deg]", "compliance [deg/kN·m]", "quasi-static", "reduced W_H (film κ)",
-              "reduced W_H (spin-softened κ)", "bound", "[S1]", "[S1] alt", "wall [s]"]
+              "reduced W_H (spin-softened κ)", "bound", "[S1] reading A", "[S1] reading B", "wall [s]"]
     trows = []
     for r in study.rows():
         trows.append([r["speed_kmh"], r["frequency_hz"], r["cycles_used"], r["W_H_mdeg"],
@@ -506,12 +505,13 @@ def write_report(study: HysteresisStudy, folder, sensitivity=None) -> Path:
                       r["seed_fig9_mdeg"], r["seed_fig9_alt_mdeg"], r["wall_s"]])
     specs = ["g", "g", "g", ".3f", None, ".3f", ".4f", ".4f", ".5f", ".5f", ".3f", ".3f", ".3f", ".1f", ".1f", ".0f"]
     body.append(H.section("Cells", H.table(header, trows, ident="cells", specs=specs) + H.paragraph(
-        "Reduced W_H: the quasi-static model of the paper's mechanism (studies/hub_reduced.py) with the film-elastic "
+        "Reduced W_H: the quasi-static model of the paper's mechanism with the film-elastic "
         "creep slope, and with the spin-softened slope measured on the case's own traction kernel "
-        "(hub_reduced.kernel_creep_slope: the ball's spin saturates the traction, so a small transverse slip turns "
-        "it; docs/dynamics.md); bound: the smaller "
-        "of the mechanism's force and energy upper bounds; [S1], [S1] alt: the two readings of the paper's Fig. 9 "
-        "(studies/hub_dynamic.py).  Two-point mean: the raw reading at two instants per cycle (diagnostic only)."),
+        "(the ball's spin saturates the traction, so a small transverse slip turns "
+        "it); bound: the smaller "
+        "of the mechanism's force and energy upper bounds; [S1] reading A, B: the two readings of the paper's Fig. 9 "
+        "(reading A and reading B, the two placements of its printed labels that keep its stated trends).  "
+        "Two-point mean: the raw reading at two instants per cycle (diagnostic only)."),
         "cells-section"))
     # sensitivity
     fig, why = _sensitivity(study, folder)
@@ -522,8 +522,8 @@ def write_report(study: HysteresisStudy, folder, sensitivity=None) -> Path:
         sens.append(H.paragraph(f"Sensitivity to the creep slope and μ_max: not shown — {why}.", "note"))
     if sensitivity is None:
         sens.append(H.paragraph("Sensitivity of the dynamic W_H to the creep slope, μ_max, the slice count and the "
-                                "groove conformity: not run for this report (python -m "
-                                "bearingsim.studies.hub_sensitivity CASE DIR, then --sensitivity DIR).", "note"))
+                                "groove conformity: not run for this report (the sensitivity runs are shown with "
+                                "--sensitivity DIR).", "note"))
     else:
         sens.append(_dynamic_sensitivity(sensitivity, folder))
     body.append(H.section("Sensitivity", "".join(sens), "sensitivity"))
