@@ -168,9 +168,9 @@ def _bubble_figure(study, path):
 
     ours = {(c.speed_kmh, c.frequency_hz): (math.degrees(c.wh) * 1e3 if np.isfinite(c.wh) else None)
             for c in study.cells}
-    bubbles({(float(v), float(f)): w for (v, f), w in SEED_FIG9.items()}, -0.22, "C1", "[S1] Fig. 9 (SEED_FIG9)")
+    bubbles({(float(v), float(f)): w for (v, f), w in SEED_FIG9.items()}, -0.22, "C1", "[S1] Fig. 9, reading A")
     bubbles({(float(v), float(f)): w for (v, f), w in SEED_FIG9_ALT.items()}, 0.0, "C2",
-            "[S1] Fig. 9, other reading (SEED_FIG9_ALT)")
+            "[S1] Fig. 9, reading B")
     bubbles(ours, 0.22, "C0", "ours (hollow: negative)")
     ax.set_xticks(range(len(speeds)), [f"{v:g}" for v in speeds])
     ax.set_yticks(range(len(freqs)), [f"{f:g}" for f in freqs])
