@@ -27,9 +27,9 @@ def test_commands_are_module_level_functions():
     from bearingsim.cli import app
 
     callbacks = list(_commands(app))
-    # 10 top-level commands (catalog, clearance, static, cage-modes, lubrication, lubricants, traction-curve, map,
-    # simulate, report), export ross, three reproduce commands
-    assert len(callbacks) == 14
+    # 11 top-level commands (catalog, clearance, static, cage-modes, lubrication, lubricants, traction-curve, map,
+    # simulate, report, shaft), export ross, three reproduce commands
+    assert len(callbacks) == 15
     for f in callbacks:
         assert f.__module__.startswith("bearingsim.cli."), f
         assert f.__qualname__ == f.__name__, f"{f.__module__}.{f.__qualname__} is not a module-level function"

@@ -38,7 +38,7 @@ def lines(text: str) -> list[str]:
     (("--bogus",), "No such option: --bogus"),                                   # unknown option (top level)
     (("static", "skf-7011-cdga-hc", "--bogus"), "No such option: --bogus"),      # unknown option (command)
     (("static",), "Missing argument"),                                             # missing argument
-    (("statc",), "Did you mean 'static'?"),                                        # misspelled command
+    (("statc",), "Did you mean 'static'"),                                        # misspelled command
     (("reproduce", "hub-statc"), "Did you mean 'hub-static'?"),                    # misspelled sub-command
     (("static", "skf-7011-cdga-hc", "--fx", "3"), "--fa"),                        # misspelled option: the hint
     (("static", "skf-7011-cdga-hc", "--fa"), "'--fa' requires an argument"),       # option without its value

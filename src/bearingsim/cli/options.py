@@ -58,6 +58,8 @@ def out_option(help: str, *aliases: str, optional: bool = False):
 FaOpt, FrOpt, FzOpt, MomentOpt, MyOpt = load_options(grid=False)
 FaGrid, FrGrid, FzGrid, MomentGrid, MyGrid = load_options(grid=True)
 SpeedOpt = speed_option(grid=False)
+ShaftSpeedOpt = Annotated[Optional[str], typer.Option(
+    "--speed", help='Shaft speed instead of the file\'s, e.g. "8000 rpm" (bare number: rpm)')]
 SpeedGrid = speed_option(grid=True)
 OutFolder = out_option("Folder for the CSV and the plot")
 

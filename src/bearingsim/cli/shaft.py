@@ -16,14 +16,14 @@ from typing import Optional
 import typer
 
 from .console import announce_compilation, make_console
-from .options import JsonOpt
+from .options import JsonOpt, ShaftSpeedOpt
 
 ShaftArg = typer.Argument(..., help='Shaft-system file (TOML, type = "shaft_system"; docs/user-guide/shafts.md)')
 
 
 def shaft(
     file: Path = ShaftArg,
-    speed: Optional[str] = typer.Option(None, "--speed", help='Shaft speed instead of the file\'s, e.g. "8000 rpm"'),
+    speed: ShaftSpeedOpt = None,
     as_json: JsonOpt = False,
     stiffness_at: Optional[str] = typer.Option(
         None, "--stiffness-at", help='Axial position where the system stiffness is reported, e.g. "0 mm" (default: '
