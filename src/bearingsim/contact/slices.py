@@ -1275,7 +1275,7 @@ def nearest_slip_zero(sig0, sig1, sig2, a, curv):
     aa /= scale  # (the zeros do not change with the field's scale; σ1² cannot underflow, as in rolling_slip_zeros)
     sig1 /= scale
     sig0 /= scale
-    if abs(aa) <= 1e-12 * scale:
+    if abs(aa) <= 1e-12:  # (of the normalised coefficients' sum, 1: linear, as rolling_slip_zeros)
         if sig1 != 0.0:
             r = -sig0 / sig1
             xb = min(1.0, max(-1.0, r))
