@@ -58,7 +58,19 @@ import os
 from pathlib import Path
 
 from ..errors import InputError
+from ..shafts import (
+    BearingSupport,
+    DistributedLoad,
+    Gravity,
+    HelicalGear,
+    PointLoad,
+    PointMass,
+    Section,
+    ShaftSystem,
+    SpringSupport,
+)
 from ..units import file_input, parse_quantity
+from .bearing import _material, bearing_from_dict, catalog_names, load_bearing
 from .files import read_toml
 
 _KEYS = {"type", "name", "description", "speed", "material", "elements", "shear", "start", "stiffness_at",
@@ -179,7 +191,6 @@ def _stiffness(value, field: str):
 
 def _bearing(spec, field: str, folder: Path | None):
     """A support's bearing: catalogue name, path (relative to the shaft file's folder) or an inline table."""
-    from .bearing import bearing_from_dict, catalog_names, load_bearing
 
     try:
         if isinstance(spec, dict):
@@ -234,7 +245,6 @@ def _orientation(t: dict, field: str) -> int:
 
 
 def _support(t, i: int, folder: Path | None):
-    from ..shafts import BearingSupport, SpringSupport
 
     field = f"supports[{i}]"
     t = _table(t, field, "write [[supports]] tables")
@@ -264,7 +274,6 @@ def _support(t, i: int, folder: Path | None):
 
 
 def _load(t, i: int):
-    from ..shafts import DistributedLoad, Gravity, HelicalGear, PointLoad
 
     field = f"loads[{i}]"
     t = _table(t, field, "write [[loads]] tables")
@@ -305,7 +314,6 @@ def _load(t, i: int):
 
 
 def _mass(t, i: int):
-    from ..shafts import PointMass
 
     field = f"masses[{i}]"
     t = _table(t, field, "write [[masses]] tables")
@@ -317,8 +325,6 @@ def _mass(t, i: int):
 
 
 def _section(t, i: int, default_material):
-    from ..shafts import Section
-    from .bearing import _material
 
     field = f"sections[{i}]"
     t = _table(t, field, "write [[sections]] tables with length and outer_diameter")
@@ -352,8 +358,6 @@ def shaft_system_from_dict(data: dict, folder: Path | str | None = None) -> Shaf
 
 
 def _from_dict(data: dict, folder: Path | None) -> ShaftFile:
-    from ..shafts import PointLoad, ShaftSystem
-    from .bearing import _material
 
     if data.get("type") != "shaft_system":
         raise InputError("type", f"expected type = \"shaft_system\", got {data.get('type')!r}",
@@ -402,7 +406,6 @@ def load_shaft_system(path) -> ShaftFile:
 def with_probe(shaft: ShaftFile, position: float, field: str = "--stiffness-at") -> ShaftFile:
     """``shaft`` with a node at ``position`` [m] (a zero point load) where the stiffness is reported; an
     :class:`InputError` naming ``field`` when the position is off the shaft."""
-    from ..shafts import PointLoad
 
     lo, hi = shaft.system.span
     if not lo - 1e-9 <= position <= hi + 1e-9:

@@ -19,6 +19,9 @@ from pathlib import Path
 import numpy as np
 
 from ..life import hours_text
+from ..shafts import BearingSupport, DistributedLoad, Gravity
+from ..shafts.modes import modes
+from ..shafts.sweep import shaft_sweep
 from . import html as H
 
 #: speeds of the report's stiffness-against-speed figure, as fractions of the operating speed
@@ -72,7 +75,6 @@ def _radius_at(system, x: float) -> float:
 
 
 def _layout_figure(sf, out: Path):
-    from ..shafts import BearingSupport, DistributedLoad, Gravity
 
     plt = _plt()
     system = sf.system
@@ -198,7 +200,6 @@ def shaft_report(sf, res, out_dir, sweep=True, n_modes: int = REPORT_MODES) -> P
     """Write ``out_dir/report.html`` and its figures for the equilibrium ``res`` of the shaft file ``sf``
     (:class:`bearingsim.io.shaft_system.ShaftFile`); ``sweep``: add the stiffness at the tool tip against speed
     (:data:`SWEEP_FRACTIONS` of the operating speed; needs a tool tip or ``stiffness_at``); returns the page."""
-    from ..shafts.modes import modes
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
@@ -252,7 +253,6 @@ def shaft_report(sf, res, out_dir, sweep=True, n_modes: int = REPORT_MODES) -> P
     if any(v is not None for _, a, b in lives for v in (a, b)):
         figs.append(_lives_figure(lives, out))
     if sweep and sf.stiffness_at is not None and res.speed != 0.0:
-        from ..shafts.sweep import shaft_sweep
 
         ds = shaft_sweep(system, SWEEP_FRACTIONS * abs(res.speed), sf.stiffness_at, lives=False)
         plot_sweep(ds, out / "shaft_stiffness_speed.png")

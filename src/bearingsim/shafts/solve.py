@@ -11,10 +11,11 @@ K_b = −df/dq from :func:`bearingsim.statics.jones_harris.bearing_reaction` (sh
     R(u, o) = F_ext − K_beam u + Σ_supports (f_s on n, −f_s on o) − K_h o + F_preload = 0,
 
 solved by Newton's method on the free DOF with the tangent K_t = −dR/d(u, o) (beam + bearing tangents +
-springs), a Levenberg–Marquardt shift μ·diag(K_beam) where K_t is singular (a bearing inside its clearance)
-and a backtracking line search on the scaled residual.  A result is called converged only when the residual,
-recomputed with every bearing re-solved from a cold start at the returned ring positions, is within
-:data:`TOL_VERIFY` times the load scale.  Units: SI (module :mod:`.model`).
+springs), a Levenberg–Marquardt shift μ·D where K_t is singular (a bearing inside its clearance; D the
+bearings' tangents at their single-bearing starts, :func:`_seed_stiffness`), and a backtracking line search
+on the scaled residual.  A result is called converged only when the residual, recomputed with every bearing
+re-solved from a cold start at the returned ring positions, is within :data:`TOL_VERIFY` times
+the load scale.  Units: SI (module :mod:`.model`).
 """
 
 from __future__ import annotations
@@ -23,9 +24,12 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.sparse import csc_matrix
+from scipy.sparse.linalg import splu
 
 from ..beam import shaft_element_matrices
-from ..statics.jones_harris import bearing_reaction, result_at
+from ..errors import InputError
+from ..statics.jones_harris import Loads, bearing_reaction, initial_guess, result_at
 from .model import NODE_DOF, BearingSupport, DistributedLoad, Gravity, HelicalGear, PointLoad, ShaftSystem
 
 #: Newton tolerance on the scaled residual (forces [N], moments divided by the reference length), relative to
@@ -221,7 +225,6 @@ class ShaftResult:
         γz]; [m/N, rad/N, m/(N·m), rad/(N·m)]): the node's displacement per unit force or moment there, every
         other DOF free, the bearings on their tangents at the solution.  1/C_yy is the tool-tip radial
         stiffness [N/m], 1/C_xx the axial, 1/C_γzγz the tilt stiffness [N·m/rad]."""
-        from ..errors import InputError
 
         i = self.system.mesh.node_at(float(position), "stiffness_at")
         idx = np.searchsorted(self.free, 5 * i + np.arange(5))
@@ -335,8 +338,6 @@ def _sparse_solve(a: np.ndarray, r: np.ndarray) -> np.ndarray | None:
     singular."""
     import warnings
 
-    from scipy.sparse import csc_matrix
-    from scipy.sparse.linalg import splu
 
     try:
         with warnings.catch_warnings():
@@ -353,8 +354,6 @@ def _seed_stiffness(lm: LinearModel, speed: float, scale: float) -> np.ndarray:
     the support's place (shaft frame), plus 1e-6 of
     the beam's diagonal — a matrix of the physical scale of the contacts, so that μ = 1 is the linear problem
     with bearings as springs (a start inside a clearance, where the tangents vanish)."""
-    from ..statics.jones_harris import Loads, initial_guess
-
     n = len(lm.F)
     d = np.zeros((n, n))
     kd = np.diag(lm.K)
@@ -386,7 +385,6 @@ def solve_shaft(system: ShaftSystem, speed: float | None = None, initial: np.nda
     for sweeps that need only reactions and stiffness.  Returns a :class:`ShaftResult`; ``converged`` False
     with the reason in ``status`` when no equilibrium was found (e.g. a load past the bearings' capacity).
     """
-    from ..errors import InputError
 
     speed = system.speed if speed is None else float(speed)
     if not math.isfinite(speed):

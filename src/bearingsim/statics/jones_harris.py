@@ -168,15 +168,22 @@ def result_at(bearing, q, speed: float = 0.0, control: str = "outer") -> StaticR
     status = 0 if bconv else 4
     if status == 0 and _free_ring(ballout, rows, _scale(loads, rows)):
         status = 8
-    res = StaticResult(bearing=bearing, loads=loads, speed=float(speed), control=control, converged=status == 0,
-                       status=STATUS.get(status, f"status {status}"), iterations=int(its), residual=0.0,
-                       displacement=qv.copy(), stiffness=kmat.copy(), balls=ball_table(rows, ballout, xb, lam,
-                                                                                        float(speed)),
-                       rows_params=rows, status_code=int(status))
-    res.row_forces = np.zeros((nrow, 5))
-    _row_loads(rows, qv, ballout, lam, res.row_forces)
+    res = _packaged(bearing, loads, speed, control, rows, status, STATUS.get(status, f"status {status}"), its, 0.0,
+                    qv, kmat, ballout, xb, lam)
     res.warnings = static_warnings(res)
     _report(res)
+    return res
+
+
+def _packaged(bearing, loads, speed, control, rows, status, text, its, rn, q, kmat, ballout, xb, lam) -> StaticResult:
+    """The :class:`StaticResult` of a ring displacement ``q`` [m, rad] and its ball solution (``ballout``, ``xb``,
+    ``lam``): the ball table and the per-row loads; warnings and ratings are the caller's next steps."""
+    res = StaticResult(bearing=bearing, loads=loads, speed=float(speed), control=control, converged=status == 0,
+                       status=text, iterations=int(its), residual=float(rn), displacement=q.copy(),
+                       stiffness=kmat.copy(), balls=ball_table(rows, ballout, xb, lam, float(speed)),
+                       rows_params=rows, status_code=int(status))
+    res.row_forces = np.zeros((rows.shape[0], 5))
+    _row_loads(rows, q, ballout, lam, res.row_forces)
     return res
 
 
@@ -786,14 +793,7 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
     if status == STATUS_PAST_CAPACITY:
         # no state to report: the last iterate is outside the model (balls past the groove-curvature centres)
         q, kmat, ballout, xb = (np.full_like(a, np.nan) for a in (q, kmat, ballout, xb))
-    converged = status == 0
-    balls = ball_table(rows, ballout, xb, lam, float(speed))
-    res = StaticResult(bearing=bearing, loads=loads, speed=float(speed), control=control, converged=converged,
-                       status=text, iterations=int(its), residual=float(rn),
-                       displacement=q.copy(), stiffness=kmat.copy(), balls=balls, rows_params=rows,
-                       status_code=int(status))
-    res.row_forces = np.zeros((rows.shape[0], 5))
-    _row_loads(rows, q, ballout, lam, res.row_forces)
+    res = _packaged(bearing, loads, speed, control, rows, status, text, its, rn, q, kmat, ballout, xb, lam)
     res.warnings = static_warnings(res, _rest_inner_loads(bearing, loads, res, rows, la, control, scale))
     _report(res)
     return res

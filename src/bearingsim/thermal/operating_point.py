@@ -31,7 +31,12 @@ import dataclasses
 import math
 from dataclasses import dataclass
 
+from ..contact import hertz
 from ..errors import InputError
+from ..friction import friction_summary
+from ..lubricants import get_lubricant
+from ..statics.clearance import OperatingClearance
+from ..statics.jones_harris import solve
 from . import correlations as C
 from .network import ThermalNetwork, axial_conduction, convection, radial_conduction
 
@@ -112,7 +117,6 @@ class ThermalOperatingPoint:
 
 def operating_clearance(bearing, temperatures: dict, speed: float, setup: ThermalSetup):
     """The clearance model (:class:`bearingsim.statics.clearance.OperatingClearance`) at these temperatures."""
-    from ..statics.clearance import OperatingClearance
 
     return OperatingClearance(
         shaft_interference=setup.shaft_interference, housing_interference=setup.housing_interference,
@@ -142,8 +146,6 @@ def _ring_dims(bearing, setup):
 def build_network(result, setup: ThermalSetup, heat: dict, temperatures: dict, lubricant) -> ThermalNetwork:
     """The network of one single-row bearing (module docstring) with the heat per node ``heat`` [W] and the
     convection evaluated at ``temperatures`` [K]."""
-    from ..contact import hertz
-    from ..lubricants import get_lubricant
 
     b = result.bearing
     lub = get_lubricant(lubricant)
@@ -221,9 +223,6 @@ def thermal_operating_point(bearing, loads, speed: float, lubricant, setup: Ther
     mechanics : callable(temperatures dict [K]) -> static result (None: :func:`bearingsim.solve` of the bearing
     with its operating clearance); tol [K] on max |ΔT|.  Not converged with status "no fixed point (thermal
     runaway)" when the temperatures leave the lubricant's range or keep rising past ``max_iterations``."""
-    from ..friction import friction_summary
-    from ..lubricants import get_lubricant
-    from ..statics.jones_harris import solve
 
     setup = setup or ThermalSetup()
     lub = get_lubricant(lubricant)
