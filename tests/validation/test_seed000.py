@@ -134,7 +134,7 @@ def test_t1_high_loads_deviation(seed, ours):
     assert np.all(np.diff(np.diff(o)) < 0), "our Ca(Fa) should be concave"
     dev = o / s - 1
     assert np.all(dev > 0), SRC_T1 + ": deviation expected one-sided (ours stiffer)"
-    assert dev[3] > 0.10 and dev[4] > 0.10, "deviation now within 10 %: update this docstring and the README"
+    assert dev[3] > 0.10 and dev[4] > 0.10, "deviation now within 10 %: update this docstring and docs/validation.md"
 
 
 def test_t1_with_inertia_at_rest_is_the_axial_model(ours):
