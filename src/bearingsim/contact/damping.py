@@ -4,7 +4,7 @@ Why: the dynamic model's normal force is Q = K δ^1.5 (1 + 1.5 α δ̇) (Hunt & 
 dashpot c = 1.5 α Q in parallel with the Hertz spring k = 1.5 Q/δ.  The default α = 0.05 s/m was *chosen* for
 steel-on-steel impacts (restitution e ≈ 1 − α v ≈ 0.95 at 1 m/s; docs/dynamics.md); it has no lubricated-contact
 source, and it gives a loaded contact c/k = α δ ≈ 0.5 µs, i.e. a damping ratio ζ = ω α δ/2 ≈ 2·10⁻³ for the hub's
-1.2 kHz tilt mode: the ring rings for seconds (issue 13).  A lubricated contact loses more: the oil around the
+1.2 kHz tilt mode: the ring rings for seconds.  A lubricated contact loses more: the oil around the
 Hertz zone is squeezed when the bodies approach.
 
 Model "ehl" (this module; derived here from Reynolds' equation, not a fit from the literature — the fitted EHL

@@ -54,8 +54,8 @@ slice loads, centroids and areas from running differences of their primitives F,
 j and n−1−j are mirror images: one table entry per pair); the strips (and the Gauss rule's nodes) go
 through the film law eight at a time, one per lane, with the exponentials and logarithms of the film
 law and of the contact's film taken on all eight lanes by glibc's vector math library
-(:mod:`.vecmath`, :func:`_film_lanes`; results within a few ulp of the scalar functions, issue 14
-tenth pass: hub step −20 %, Gauss rule −28 %); the velocity
+(:mod:`.vecmath`, :func:`_film_lanes`; results within a few ulp of the scalar functions; the lanes take 20 %
+off a hub step and 28 % off the Gauss rule against one slice at a time); the velocity
 fields moved from the centre to each slice with constant cross-product matrices; the
 Hamrock–Dowson films, regime map and Zhu–Cheng factor from shared logarithms, powers as
 exp(c ln x); the Eyring argument x = ηγ̇/τ₀ carried as ln 2x = ln u_s + ln η(p̄) + const only
@@ -64,24 +64,25 @@ exp(c ln x); the Eyring argument x = ηγ̇/τ₀ carried as ln 2x = ln u_s + ln
 called), the same for the heat-balance step's
 asinh(x e^(−βΔT)) with ln 2x − βΔT; tanh z = (e^(2z) − 1)/(e^(2z) + 1) for
 1e-3 ≤ z ≤ 20 (≤ ~1e-13 relative).  No allocation.  Of fastmath only ``contract``: LLVM may fuse a
-multiplication and an addition into one FMA instruction (one rounding instead of two; results move by rounding
-only, and no longer bit for bit equal those of a CPU without FMA; no reassociation, no approximate functions,
-NaN and infinities kept): hub right-hand side −5 to −7 %, same accuracy (issue 14).  The heat-balance secant
+multiplication and an addition into one FMA instruction (one rounding instead of two; results differ by rounding
+only from those of a CPU without FMA, not bit for bit; no reassociation, no approximate functions, NaN and
+infinities kept): it takes 5–7 % off the hub right-hand side at the same accuracy.  The heat-balance secant
 step stays per slice: solving it once on the central slice would change results by far
 more than 1e-10 (each slice has its own pressure and sliding speed).  Strip counts n ≤ 64 take their load
 shares, centroids, areas and (load share)^0.246 from tables built at import; the rolling resistance's u^0.648
 is u₀^0.648 (u/u₀)^0.648 with the second factor by its binomial series when |u/u₀ − 1| ≤ 1/16 (:func:`_pow_0648`,
 < 5e-15); the contact type's film constants (ln αE′, ellipticity terms, the regime map's isoviscous-rigid
 film) are stored in ``lub`` by :func:`pack_lubrication_parameters` and used while α E′ and R_y/R_x still match
-(:func:`film_constants`).  Issue 14: kernel −12 %, hub right-hand side −10 %, forces equal to ~1e-15.
+(:func:`film_constants`); the tables and stored constants take 12 % off the kernel and 10 % off the hub
+right-hand side, forces equal to ~1e-15.
 The Gauss rule (n_slices < 0) sets up the film law's contact-level constants once per call (ln η₀, 1/h_c,
 the limiting-stress denominator, the film-elasticity factors) and integrates the rolling resistance on its own
 ROLL_NODES Gauss–Jacobi nodes (its line-load factor (1 − ξ²)^0.246 as the weight, u^0.648 as in the strip
 loop); :func:`contact_traction_reference` evaluates the same rule one point at a time with the model functions
-(tests at 1e-10).  Issue 14, fifth pass: Gauss kernel −21 % (docs/dynamics.md).
+(tests at 1e-10); the per-call constants take 21 % off the Gauss kernel.
 The log rule (n_slices = LOG_BASE + n, n = 6…8 nodes in all) takes the Gauss rule's path with other nodes
 (:func:`_log_node`): generalized Gauss rules exact for the logarithm of the rolling slip's zeros, where μ(s)·ŝ grows
-as that logarithm; 7 nodes within 1 % of the strip limit on the hub states (issue 14, twentieth pass).
+as that logarithm; 7 nodes are within 1 % of the strip limit on the hub states.
 """
 
 from __future__ import annotations
@@ -293,7 +294,7 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
                 crx, cry, crz, vrx, vry, vrz, wrx, wry, wrz, lub, n_slices, out):
     """:func:`contact_traction` with its vectors as their components (the same numbers): the dynamic engine's
     contacts call this form, so that no array is passed nor viewed per contact (numba counts a reference for
-    each, with an atomic increment and decrement: 17.5 % of the hub right-hand side's samples, issue 14).
+    each, with an atomic increment and decrement, which would be 17.5 % of the hub right-hand side's samples).
     out[0:10] ← as :func:`contact_traction`; out needs TRACTION_OUT floats: out[10:] is the work space of the
     lanes (ValueError otherwise)."""
     for i in range(10):
@@ -362,7 +363,7 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     s0 = math.sqrt(sx * sx + sy * sy + sz * sz)
 
     # ---- contact-level film (at the ellipse centre): Hamrock-Dowson with shared logarithms.  The contact's eight
-    # logarithms in one vlog and the film's eight exponentials in one vexp (:mod:`.vecmath`; issue 14): they are
+    # logarithms in one vlog and the film's eight exponentials in one vexp (:mod:`.vecmath`): they are
     # taken for every contact and used where the formulae below need them (the unused lanes' values are ignored)
     if out.shape[0] < TRACTION_OUT:
         raise ValueError("traction_at: out needs TRACTION_OUT floats (out[10:] is the lanes' work space)")
@@ -482,7 +483,7 @@ def traction_at(q, a, b, r_dev, c0x, c0y, c0z, nx, ny, nz, mx, my, mz, cbx, cby,
     bex, bey, bez = wey * nz - wez * ny, wez * nx - wex * nz, wex * ny - wey * nx
     d0bx, d0by, d0bz = c0x - cbx, c0y - cby, c0z - cbz
     d0rx, d0ry, d0rz = c0x - crx, c0y - cry, c0z - crz
-    # The strips go through the film law eight at a time (issue 14, tenth pass): (A) each strip's load, point and
+    # The strips go through the film law eight at a time: (A) each strip's load, point and
     # velocities, one lane per strip (strip s of the pair j = min(s, n−1−s): the pair's mirror images share load,
     # area and mean pressure, at ±x̄); (B) the traction coefficient on all eight lanes, with the exponentials and
     # logarithms of the film law taken by vexp / vlog (glibc's vector math library where this CPU has it:
@@ -666,8 +667,8 @@ def _lane_kinematics(lw, curv, nx, ny, nz, mx, my, mz, s0x, s0y, s0z, bsx, bsy, 
     :func:`slice_point_offset`), sliding and entraining velocities and the local normal (:func:`_slice_velocities`;
     centre values s0, e0 [m/s] and their rates along the normal (bs, be) and the major axis (as, ae) [1/s]), |s|, u,
     1/|s|, 1/u and the slide–roll ratio.  Square roots and reciprocals are taken for all eight lanes in packed
-    instructions (:func:`.vecmath.vsqrt`, :func:`.vecmath.vrecip`: exactly the scalar ones): one by one they held
-    8 % of a hub step (docs/dynamics.md, eleventh pass)."""
+    instructions (:func:`.vecmath.vsqrt`, :func:`.vecmath.vrecip`: exactly the scalar ones): one by one they take
+    8 % of a hub step."""
     for i in range(LANES):
         cx = curv * lw[LX + i]
         lw[LA + i] = max(0.0, 1.0 - cx * cx)
@@ -746,7 +747,7 @@ def _film_lanes(lw, need_b, need_f, fluid_kind, film, wfl, lub, b, hc, theta, ln
     :func:`traction.fluid_shear_stress` (Roelands viscosity at the mean pressure, Eyring stress limited by the
     limiting shear stress, the heat balance's secant step when θ = theta > 0 [K/(Pa m/s)], the elastic–plastic film
     when lub's film elasticity is on) in the fast forms of the module docstring, every exponential and logarithm
-    taken on all eight lanes by :func:`.vecmath.vexp` / :func:`.vecmath.vlog` (issue 14).  Per lane: mean pressure
+    taken on all eight lanes by :func:`.vecmath.vexp` / :func:`.vecmath.vlog`.  Per lane: mean pressure
     LP [Pa], sliding speed LSM [m/s], slide–roll ratio LSR, entraining speed LU [m/s] and the film's chord LCHORD
     [m] (its length along rolling, for the film elasticity); b [m] the ellipse's rolling semi-axis, hc [m] the
     central film, ln_eta0 = ln η0 (η0 [Pa s]).  The strips (:func:`traction_at`) and the Gauss nodes
@@ -989,17 +990,16 @@ def _asinh_l2x(l2x):
     (−1)^(n+1) C(2n, n) wⁿ/(4ⁿ 2n), w = 1/x² = 4e^(−2 ln 2x) (Abramowitz & Stegun 4.6.31: w/4 − 3w²/32 + 5w³/96
     − 35w⁴/1024 + …), eight terms (at x = 10 the ninth is 1e-20); below, asinh(e^(ln 2x − ln 2)).  The film law
     never needs x itself, so the viscosity η(p̄) = e^(ln η) is not formed, and no asinh call is made where x ≥ 10
-    (the loaded EHL contact's usual range; the switch moved down from x = 100 in issue 14's twelfth pass: the lanes
-    near the slip's zeros between 10 and 100 skip glibc's asinh and the exponential before it; hub (b) −2 to −3 %
-    per step)."""
+    (the loaded EHL contact's usual range; with the switch at 10 rather than 100 the lanes near the slip's zeros
+    between 10 and 100 skip glibc's asinh and the exponential before it, 2–3 % of a hub (b) step)."""
     return _asinh_l2x_e(l2x, math.exp(-2.0 * l2x) if _LN_20 <= l2x < _LN_2E6 else 0.0)
 
 
 @njit(cache=True, error_model="numpy", fastmath={"contract"})
 def _asinh_l2x_e(l2x, e):
     """:func:`_asinh_l2x` with e = e^(−2 ln 2x) given (used only where 10 ≤ x < 1e6; the strip lanes take it from
-    :func:`.vecmath.vexp`).  Below x = 10 the scalar asinh (a vector asinh on all eight lanes cost more than
-    the one or two lanes near a zero of the slip that need it: docs/dynamics.md, tenth pass)."""
+    :func:`.vecmath.vexp`).  Below x = 10 the scalar asinh (a vector asinh on all eight lanes costs more than
+    the one or two lanes near a zero of the slip that need it)."""
     if l2x >= _LN_2E6:
         return l2x
     if l2x >= _LN_20:
@@ -1092,8 +1092,8 @@ def rolling_slip_zeros(sig0, sig1, sig2, a, curv):
     σ2 = (ω_s × n)·r [m/s].  Roots of the quadratic with δ ≈ c x²/2 (the classical two points
     of pure rolling of a conforming groove, Heathcote), polished by two Halley steps on the
     exact g (cubic convergence: |g| ≤ 1.2e-16 of |σ0| + |σ1| + |σ2 c| a² from the quadratic's roots
-    over 20,000 random fields with c a ≤ 0.54, as three Newton steps gave, for two thirds of their
-    square roots and divisions; issue 14).  Returns (count, ξ1, ξ2) with ξ1 < ξ2 (unused entries 0).
+    over 20,000 random fields with c a ≤ 0.54, as three Newton steps give, for two thirds of their
+    square roots and divisions).  Returns (count, ξ1, ξ2) with ξ1 < ξ2 (unused entries 0).
     """
     aa = 0.5 * sig2 * curv * a * a
     scale = abs(aa) + abs(sig1) + abs(sig0)
@@ -1180,7 +1180,7 @@ def _gauss_node(m, ng, nroot, z1, z2):
 
     The nodes are graded towards the zeros of the rolling slip (t² maps, smoothstep with zeros at both ends): μ(s)
     rises steeply from 0 there (measured: graded 0.25 %, 2.4 %, 0.5 % error at 4 nodes on the hub states against
-    plain Gauss 0.64 %, 2.5 %, 1.6 %; grading towards ξ = ±1 instead was worse, 1.3 %, 5.8 %, 2.3 %)."""
+    plain Gauss 0.64 %, 2.5 %, 1.6 %; grading towards ξ = ±1 gives 1.3 %, 5.8 %, 2.3 %)."""
     k = m // ng
     i = m - k * ng
     lo = -1.0 if k == 0 else (z1 if k == 1 else z2)
@@ -1208,7 +1208,7 @@ def _gauss_node(m, ng, nroot, z1, z2):
 #
 # Next to a zero of the rolling slip, μ(s)·ŝ rises from 0 over a core of width ~1e-3 of the axis (the film's linear
 # response), then grows about as the logarithm of the distance to the zero (the Eyring stress, asinh of the shear rate)
-# until it levels off: measured on the hub states (issue 14, docs/dynamics.md, twentieth pass).  Gauss–Legendre nodes
+# until it levels off (measured on the hub states).  Gauss–Legendre nodes
 # converge slowly on such an integrand even graded towards the zero; rules built to integrate the logarithm exactly
 # take it with few nodes (the generalized Gaussian quadratures of Ma, Rokhlin & Wandzura 1996, here with one log term):
 #   one-sided, t ∈ [0, 1] from the zero: exact for 1, t, …, t^(2n−2) and ln t (n nodes, 2n unknowns);
@@ -1251,8 +1251,8 @@ def _log_counts(n, nroot):
     """Nodes (n0, n1, n2) [-] of the log rule (LOG_MIN ≤ n ≤ LOG_MAX, as the entry points check) on the stretches of
     ξ ∈ [−1, 1] between the nroot zeros of the rolling slip: all n on the axis without a zero; n − n // 2 below one
     zero and n // 2 above it; two on each outer stretch and n − 4 between two zeros.  Fixed per count of zeros, so the
-    nodes move continuously with the zeros (dealing by length made the force jump where a node changed stretch: 24
-    times the steps on the hub, issue 14).  Unused stretches: 0."""
+    nodes move continuously with the zeros (dealing the nodes by length makes the force jump where a node changes
+    stretch: 24 times the steps on the hub).  Unused stretches: 0."""
     if nroot == 0:
         return n, 0, 0
     if nroot == 1:

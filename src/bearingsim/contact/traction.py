@@ -270,7 +270,7 @@ def film_creep_stiffness(a_roll: float, b_lat: float, film_modulus: float, film_
     their Maxwell model) integrated over the Hertz ellipse as the sliced kernel does: a point at distance x from
     the leading edge carries τ = G_f s x/h, so a strip of chord ℓ(y) = 2 a_roll √(1 − y²/b_lat²) carries
     G_f s ℓ²/(2h) per unit width, and ∫ ℓ²/2 dy = (8/3) a_roll² b_lat.  (The uniform-chord form
-    G_f ℓ π a b/(2h) with ℓ = 2 a_roll, used before, is larger by 3π/8 ≈ 1.18: it gives every strip the
+    G_f ℓ π a b/(2h) with ℓ = 2 a_roll is larger by 3π/8 ≈ 1.18: it gives every strip the
     longest chord.)  ``film_modulus`` = inf: a rigid film (infinite stiffness)."""
     if not (film_modulus > 0):
         raise InputError("film_modulus", f"must be positive, got {film_modulus!r}", "e.g. 0.3e9 Pa, or inf")

@@ -1,9 +1,9 @@
-"""exp and log on eight lanes at once, for the strip kernel's film law (issue 14).
+"""exp and log on eight lanes at once, for the strip kernel's film law.
 
 The strip kernel (:func:`bearingsim.contact.slices.traction_at`) evaluates the film law's transcendental functions
 strip by strip: ≈ 36 exponentials and 12 logarithms per contact with 8 strips, a quarter of a hub step's time in
-glibc's scalar ``exp`` and ``log`` (``perf``, docs/dynamics.md, tenth pass).  numba calls the scalar functions only
-(its LLVM has no vector math library configured: docs/dynamics.md, fifth pass), so :func:`vexp` and :func:`vlog`
+glibc's scalar ``exp`` and ``log`` (``perf``).  numba calls the scalar functions only
+(its LLVM has no vector math library configured), so :func:`vexp` and :func:`vlog`
 are numba intrinsics that call glibc's vector math library ``libmvec`` directly (the x86-64 vector function ABI,
 ``_ZGVeN8v_exp``: eight doubles in one AVX-512 register; ``_ZGVdN4v_exp``: four in an AVX2 register, called twice).
 Measured alone: 4.1 ns per eight exponentials against 24 ns for eight scalar calls.
@@ -19,12 +19,12 @@ a machine of another.
 Both intrinsics take (src, i0, dst, j0) with src and dst contiguous float64 arrays: dst[j0:j0 + 8] ←
 f(src[i0:i0 + 8]); the caller guarantees the eight elements on both sides (no bounds check).
 
-:func:`vsqrt` and :func:`vrecip` (√x and 1/x on eight lanes, issue 14, eleventh pass) are LLVM's vector square
+:func:`vsqrt` and :func:`vrecip` (√x and 1/x on eight lanes) are LLVM's vector square
 root and division, whatever :data:`MODE` is: IEEE-754 rounds both exactly, so every lane is bit for bit the scalar
 ``math.sqrt(x)`` / ``1.0 / x``.  They exist because the strip kernel's square roots and divisions share one
 execution unit that takes 4–6 cycles for each scalar one (``perf``: 8 % of a hub step waited on them); a packed
 instruction does eight in about the time of three.  numba's LLVM does not pack them by itself (its SLP vectoriser
-is off: docs/dynamics.md, eleventh pass).
+is off).
 """
 
 from __future__ import annotations
