@@ -11,8 +11,8 @@ the tilt where the moment passes 0.3 kN·m falling minus where it passes it risi
   curves, start-up cycles discarded by a periodicity criterion, mean and 95 % interval over the
   remaining cycles, the loop area ∮ M dγ, and the phase lag and compliance of the fundamental.
 * :func:`loop_widths` — the raw two-point reading on the samples, kept as a diagnostic: it reads
-  whatever vibration rides on the loop at the two instants (issue 13: the hub's undamped 1.2 kHz
-  tilt mode made it scatter by ±0.5·10⁻³ ° against a loop of ≈ 0.15·10⁻³ °).
+  whatever vibration rides on the loop at the two instants (the hub's lightly damped 1.2 kHz tilt
+  mode makes it scatter by ±0.5·10⁻³ ° against a loop of ≈ 0.15·10⁻³ ° without the EHL damping).
 """
 
 from __future__ import annotations

@@ -193,7 +193,7 @@ def _cbrt_1p(d):
     """(1 + d)^(1/3) [-] for d > −1: the binomial series 1 + d/3 − d²/9 + 5d³/81 − 10d⁴/243 (Abramowitz & Stegun
     3.6.8) where |d| ≤ 1e-3 (the next term, 22d⁵/729, is below 3.1e-17: the series is the cube root to rounding),
     else the cube root itself.  For the Hertz load's Hunt–Crossley factor 1 + 1.5 α δ̇ (small but for impacts), so
-    that Q^(1/3) = K^(1/3) δ^(1/2) (1 + 1.5 α δ̇)^(1/3) needs no pow per contact (pow was 2.7 % of a hub step)."""
+    that Q^(1/3) = K^(1/3) δ^(1/2) (1 + 1.5 α δ̇)^(1/3) needs no pow per contact (a pow costs 2.7 % of a hub step)."""
     if abs(d) <= 1e-3:
         return 1.0 + d * (1.0 / 3.0 + d * (-1.0 / 9.0 + d * (5.0 / 81.0 - d * (10.0 / 243.0))))
     return np.cbrt(1.0 + d)
@@ -209,7 +209,7 @@ def race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, gx, gy, gz, vgx, vgy, vg
     size a = a_c Q^(1/3) from K^(1/3) δ^(1/2) without a pow, :func:`_cbrt_1p`).  The engine calls this form:
     numba increments and decrements an atomic reference count for every array argument of a function it does not
     inline and for every array view, and the array form's 17 arguments and 12 views per contact cost ≈ 12 % of the
-    hub right-hand side (issue 14; compiled without counting, ``_nrt=False``, as it allocates nothing); here only
+    hub right-hand side (compiled without counting, ``_nrt=False``, as it allocates nothing); here only
     ``lub``, ``gp`` and ``tbuf`` (the traction's work array: tbuf[0:10] its out, the Coulomb stand-in's vectors at
     10:31 and its slice table at 44:) are arrays."""
     d0 = bx - gx
@@ -299,7 +299,7 @@ def race_contact_at(bx, by, bz, vx, vy, vz, wx, wy, wz, gx, gy, gz, vgx, vgy, vg
     mbz = 0.0
     if mode == 0:
         return q, delta, u0, u1, u2, srr, 0.0, fbx, fby, fbz, mbx, mby, mbz, frx, fry, frz, mrx, mry, mrz
-    q13 = kc13 * sqrt_delta * _cbrt_1p(damp)  # Q^(1/3) without a pow (issue 14)
+    q13 = kc13 * sqrt_delta * _cbrt_1p(damp)  # Q^(1/3) without a pow
     # both traction models take the normal from the race towards the ball; tbuf[0:10] ← their out
     if mode == 1:
         vec = tbuf[10:44]

@@ -143,7 +143,7 @@ def _one_ball(k, y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt, wr
     buffer with the Coulomb slice table at 44:); ck ← its contributions (layout of :func:`balls_on_raceways`): the
     reactions on the inner ring (force, moment about c) and on the outer ring, and with diagnostics its inner and
     outer raceway power losses and elastic energy.  The views of wk and ck are made here, where they are not
-    reference-counted (``_nrt=False``; made in the parallel loop they were 16 counted views per ball).
+    reference-counted (``_nrt=False``; made in the parallel loop they would be 16 counted views per ball).
     ``memo``: the outer contacts of the last evaluation (:func:`outer_memo_hit`; not used with diagnostics)."""
     fb, mb, bp, g, gr, vg, tang, tmp = (wk[0:3], wk[3:6], wk[6:9], wk[9:12], wk[12:15], wk[15:18], wk[18:21],
                                         wk[21:24])
@@ -325,16 +325,13 @@ def _balls_parallel(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtilt,
     the ball numbering; numba's static schedule hands each of 2 threads a contiguous half of the iterations, so one
     thread takes quarters 0 and 2, the other 1 and 3).  The balls are numbered row by row and along each row, so a
     thread holds opposite halves of the rows (under a moment load one row's load zone is opposite the other's: the
-    loaded balls split about evenly), and its balls are neighbours in memory.  The even/odd dealing used before put
-    every pair of neighbours on different threads; hub (b), 2 threads, right-hand side at three states of a run (4 /
-    6 / 9.2 ms, each call on a state other than the last one's): 38–42 / 35–41 / 43–48 µs even/odd, 30–32 / 30–31 /
-    39–40 contiguous halves (a row per thread: unbalanced near the moment's zero crossing), **29–31 / 27–28 / 32–34
-    quarters**, against 44–46 / 44 / 53 on one thread (issue 14, docs/dynamics.md twenty-second pass).  Most likely
-    the cache lines that neighbours share in ``dy`` (9 floats per ball) went back and forth between the cores:
-    padding the memo, contribution and work rows to whole lines changed nothing, the contiguous dealing did.  (The
-    twelfth pass had preferred even/odd from loops of calls on fixed states, which overstate the threads: the same
-    loops give 31 µs at 4 ms even/odd with a repeated state, 40 with two alternating ones.)  Which thread computes a
-    ball does not change its numbers.  ``active`` (no entries: every ball): the balls with active[k] = 0 are
+    loaded balls split about evenly), and its balls are neighbours in memory, so the cache lines that neighbours
+    share in ``dy`` (9 floats per ball) stay on one core.  Hub (b), 2 threads, right-hand side at three states of a
+    run (4 / 6 / 9.2 ms, each call on a state other than the last one's): 29–31 / 27–28 / 32–34 µs in quarters
+    against 38–42 / 35–41 / 43–48 dealt even/odd, 30–32 / 30–31 / 39–40 in contiguous halves (a row per thread:
+    unbalanced near the moment's zero crossing) and 44–46 / 44 / 53 on one thread; loops of calls on one repeated
+    state overstate the even/odd dealing (31 µs at 4 ms against 40 with two alternating states).  Which thread
+    computes a ball does not change its numbers.  ``active`` (no entries: every ball): the balls with active[k] = 0 are
     skipped, their contributions zero (:func:`rhs_masked`)."""
     nb = ball_row.shape[0]
     for i in prange(nb):
@@ -365,14 +362,14 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
     the spin ω_R relative to the orbiting frame (Jones sign: positive along +x) and pitch angle
     β = atan2(−s ω_rad, ω_x) (Jones 1960); acc ← raceway power losses and elastic energies (2/5) K δ^2.5.
 
-    Threads (issue 14): the balls are independent given the rings' state, so they run in a numba
+    Threads: the balls are independent given the rings' state, so they run in a numba
     ``prange`` when ``threads`` is true (:func:`_one_ball`, each with its own work row; the count is
     ``numba.set_num_threads``) and write their reactions on the rings into a per-ball array, which is
     then summed serially in ball order: the result does not depend on the number of threads nor on
     ``threads``, bit for bit.
 
     work: float[:func:`ball_work_size`] (the per-ball contributions, the balls' work rows and one contribution row),
-    so that nothing is allocated and no view is reference-counted here (``_nrt=False``; issue 14).
+    so that nothing is allocated and no view is reference-counted here (``_nrt=False``).
     """
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
@@ -391,8 +388,8 @@ def balls_on_raceways(y, dy, rows, rowx, ball_row, gp, lubs, rm, ax, c, cd, wtil
                         contrib, active)
     else:
         # one thread: the body of _one_ball written out in the loop (one set of work arrays, no parallel region,
-        # no call per ball: the call cost 13 % of a hub right-hand side, measured in one process, 40 paired
-        # rounds; written out: 1 %).  The same statements, so bitwise the same result as the threaded path
+        # no call per ball: a call per ball costs 13 % of a hub right-hand side, the body written out 1 %, in one
+        # process over 40 paired repetitions).  The same statements, so bitwise the same result as the threaded path
         # (tests/unit/test_dyn_threads.py compares the two texts and the results).
         wk = work[o1:o1 + nbw]
         slice_table(nsl, wk[BALL_WORK + 44:])
@@ -978,7 +975,7 @@ def rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag,
     threads: the balls in parallel (:func:`balls_on_raceways`; same result bit for bit).
 
     One work array is allocated here; the equations are :func:`_rhs`, compiled without numba's reference counting
-    (its ~60 small arrays and views were counted atomically: issue 14).
+    (counted, its ~60 small arrays and views would each take an atomic increment and decrement).
     """
     nsl = int(gp[ly.G_NSL]) if int(gp[ly.G_TRAC]) == 1 else 0
     nw = RHS_WORK + cm.shape[1] + ball_work_size(ball_row.shape[0], nsl, threads)
@@ -993,11 +990,10 @@ def _rhs(t, y, dy, rows, rowx, ball_row, gp, cp, cm, lubs, loadspec, diag, gdiag
     equations is a view of it); ``phase`` (:data:`PHASE_ALL` …) and ``active`` say which part is computed.
 
     Compiled twice, ``threads`` a literal False or True: numba compiles a called function once per literal
-    argument, so its callers pass ``phase`` as a run-time value (``int(…)``) — the phase constants had made four
-    copies of the serial body (and of :func:`balls_on_raceways`), and :func:`evaluate`'s run-time ``threads`` a
-    fifth, ≈ 18 s of compilation each from an empty cache (issue 14: the CI's time).  ``threads`` stays a literal:
-    the serial right-hand side without the threaded branch measured 1–2 % faster (hub (b), 45.2–45.5 against
-    45.7–46.4 µs, alternated processes)."""
+    argument, so its callers pass ``phase`` as a run-time value (``int(…)``): as literals the phase constants
+    would compile four copies of the serial body (and of :func:`balls_on_raceways`), ≈ 18 s of compilation each
+    from an empty cache.  ``threads`` stays a literal: the serial right-hand side without the threaded branch is
+    1–2 % faster (hub (b), 45.2–45.5 against 45.7–46.4 µs, alternated processes)."""
     nb = ball_row.shape[0]
     want = diag.shape[0] > 0
     omega = speed_at(t, gp)

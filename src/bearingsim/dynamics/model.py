@@ -403,9 +403,9 @@ def quasi_static_rates(model: Model, bearing, loads, static, speed: float, load_
     The quasi-static solution q_s(t) of the loads F(t) (Jones–Harris statics, ``static`` = q_s(t0)) moves
     with the loads; a start at q_s(t0) at rest is not on that trajectory: with q = q_s + e the ring's
     equation M ë + K e = −M q̈_s starts with e = 0, ė = −q̇_s and rings with amplitude |q̇_s|/ω_n in every
-    mode ω_n (the kick of issue 13).  Starting with q̇ = q̇_s(t0) removes it to first order (what remains is
-    forced by q̈_s, amplitude |q̈_s|/ω_n², smaller by ω_load/ω_n).  To first order q̇_s = K⁻¹ dF/dt with K the
-    static stiffness; here it is the one-sided three-point difference of converged solves,
+    mode ω_n (a kick that leaves the lightly damped tilt mode ringing).  Starting with q̇ = q̇_s(t0) removes it to
+    first order (what remains is forced by q̈_s, amplitude |q̈_s|/ω_n², smaller by ω_load/ω_n).  To first order
+    q̇_s = K⁻¹ dF/dt with K the static stiffness; here it is the one-sided three-point difference of converged solves,
     q̇_s ≈ (−3 q_s(t0) + 4 q_s(t0 + h) − q_s(t0 + 2h)) / 2h with h = ``loads.rate_step()`` (O(h²) error; only
     t ≥ t0, so a load table that starts rising at t0 gives its right-hand rate; the solves start from
     q_s(t0), tolerance far below the change of q over h), which also gives the balls' centre velocities in the
@@ -491,9 +491,9 @@ def error_vectors(model: Model) -> np.ndarray:
     The velocity [m/s] and the angular velocity [rad/s] of every ball and cage are vectors (the cage's rates
     (θ̇, β̇y, β̇z), its angular velocity to first order in the tilt): their three components share one error
     scale, tol × (scale + |v|), the same in any frame.  Per component, a ball's
-    velocity or spin component that passes through zero as the ball orbits was held to tol × scale, several
+    velocity or spin component that passes through zero as the ball orbits would be held to tol × scale, several
     times tighter than its neighbours for no physical reason, and in the slow cells of the hub study such a
-    component held the step (docs/dynamics.md, fourth and sixth passes).  Every other component (positions,
+    component would hold the step.  Every other component (positions,
     the ring's rates, the cage's modal coordinates) is its own vector (i, i + 1).
     """
     n = model.n_state

@@ -71,7 +71,7 @@ def build(case):
         raise InputError("loads", f"no quasi-static equilibrium for the loads at t = 0 ({res.status})",
                          "the initial loads must be carried by the bearing (e.g. an axial load on an angular "
                          "contact row)")
-    rates = None  # the clean start (issue 13): velocities of the quasi-static solution at t = 0
+    rates = None  # the clean start: velocities of the quasi-static solution at t = 0
     if getattr(case, "start", "rest") == "consistent":
         rates = md.quasi_static_rates(model, case.bearing, case.loads, res, w0, xl, case.control)
     y0 = md.initial_state(model, res, w0, rates)

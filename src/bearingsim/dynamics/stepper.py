@@ -81,14 +81,14 @@ class Stepper:
     jac_orbit: bool = True
     ring_coupling: bool = True  #: ROS34PW2: the inner ring's block and its coupling with the balls in the Jacobian
     #: ROS34PW2: the most balls a step refines with micro steps of their own (:mod:`.integrate.multirate`; 0: none).
-    #: Hub (b), 20 ms: −37 % CPU, 10 km/h −36 %; the 7011 never refines (docs/dynamics.md, eighteenth pass)
+    #: Hub (b), 20 ms: 37 % less CPU than without, at 10 km/h 36 % less; the 7011 never refines
     multirate: int = 8
     max_steps_per_interval: int = 10_000_000
     #: threads for the ball contacts of the right-hand side (None or 1: serial; up to NUMBA_NUM_THREADS; "auto":
     #: :func:`idle_cores`, the CLI's default).  The result is the same bit for bit
     #: (:func:`.forces.balls_on_raceways`).  The library's default stays serial (a caller running several cases
-    #: in processes, as the hub study does, must not oversubscribe the cores); with the OpenMP layer 2 threads ran
-    #: the hub case at 110 wall s per simulated s against 171 on one on this idle 2-core machine (issue 14).
+    #: in processes, as the hub study does, must not oversubscribe the cores); with the OpenMP layer 2 threads run
+    #: the hub case at 110 wall s per simulated s against 171 on one on an idle 2-core machine.
     threads: int | str | None = None
     #: dense output (ROS34PW2; ignored by the other methods): the steps run past the output times and
     #: :meth:`state_at` interpolates; then :attr:`t` and :attr:`y` are the integrator's own time and state
@@ -174,7 +174,7 @@ class Stepper:
         if t is None:
             t, y = self.t, self.y
         # (on the run's threads: the same numbers bit for bit; the two evaluations of a lubricated sample cost
-        # ≈ 110 µs of the hub's, 1.3 wall s per simulated s at 10 kHz output — issue 14)
+        # ≈ 110 µs of the hub's, 1.3 wall s per simulated s at 10 kHz output)
         threaded = self.threads > 1
         dy, diag, gd = fo.evaluate(self.model, t, y, self.loadspec, threads=threaded)
         out = sample_from(self.model, t, y, diag, gd)
@@ -215,7 +215,7 @@ def idle_cores(window: float = 0.1) -> int:
     where /proc/stat is missing, the one-minute load average), rounded to the nearest core, at least 1 and at
     most NUMBA_NUM_THREADS (1 in the test suite, tests/conftest.py).  The OpenMP layer's threads spin between
     right-hand sides: on idle cores that is what makes them pay, on busy ones it costs several times the work
-    (forces.py, issue 14), so a loaded machine gets fewer threads.  A present measurement rather than the load
+    (:mod:`.forces`), so a loaded machine gets fewer threads.  A present measurement rather than the load
     average, which would still count a run that has just ended for a minute.  The trajectory is the same for
     any count."""
     import os

@@ -13,8 +13,8 @@ with gcc); without it numba falls back to workqueue.  The result does not depend
 Started at import (``numba.get_num_threads()`` starts it; no parallel region runs): a cached kernel that calls a
 parallel one (``forces.rhs`` → ``balls_on_raceways`` → ``_balls_parallel``) needs the layer's scheduling symbols
 when it is loaded, and numba registers them only when the layer starts; a process that loaded such a kernel from
-the disk cache before any parallel region had run died with "LLVM ERROR: Symbol not found: allocate_sched" or a
-segmentation fault (a hub-study worker did, issue 14; tests/unit/test_dyn_threads.py).
+the disk cache before any parallel region has run dies with "LLVM ERROR: Symbol not found: allocate_sched" or a
+segmentation fault (tests/unit/test_dyn_threads.py).
 """
 
 from __future__ import annotations

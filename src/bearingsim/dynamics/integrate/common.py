@@ -139,8 +139,8 @@ def error_scale(i, y, ynew, atol, rtol, vec):
     holds rows (start, stop), the Euclidean norm of y[start:stop], the vector the component belongs to.
 
     With vectors, a velocity's three components share one scale, the same in every frame; per component, one
-    that passes through zero in the ball's orbit was held several times tighter than its neighbours
-    (docs/dynamics.md, sixth pass).  ``vec`` with no rows: per component.
+    that passes through zero in the ball's orbit would be held several times tighter than its neighbours.
+    ``vec`` with no rows: per component.
     """
     if vec.shape[0] == 0:
         return atol[i] + rtol[i] * max(abs(y[i]), abs(ynew[i]))

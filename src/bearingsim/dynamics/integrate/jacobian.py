@@ -10,10 +10,10 @@ from the balls' columns (:func:`ring_rows`).  Layout: :mod:`.linalg`.
 Each difference is divided by the step actually taken, (y + e) − y in floating point, not by e (Press et al.,
 *Numerical Recipes*, 3rd ed. 2007, §5.7): a derivative that is a state itself (a ball's ṙ = v, the ring's
 q̇ = q̇) then comes out exactly 1, so the kinematic rows of J are exact and :func:`.linalg.block_w_inverse`
-can eliminate them (issue 14); before, they were 1 ± 1e-9.
+can eliminate them (divided by e they would be 1 ± 1e-9).
 
 The ring's columns cost 10 right-hand sides by differences (:func:`ring_jac`, ≈ 5.8 with the outer-contact memo).
-:func:`ring_columns` derives them from the balls' own sweeps instead (issue 14): a ball's inner contact depends
+:func:`ring_columns` derives them from the balls' own sweeps instead: a ball's inner contact depends
 on the ring's state only through the two bodies' relative position and motion, so moving the ring is moving the
 ball the other way, and tilting it is turning the pair about the ring's centre (the contact's forces turn with
 it).  The right-hand side records each ball's inner-ring reaction (``memo``, layout ``MEMO_INNER`` of
@@ -66,7 +66,7 @@ def block_jac(fun, args, t, y, f0, atol, blk, nbk, jac, yt, f1, epsb, rec, rbase
     right-hand side's memo, filled by every call; :func:`no_record` for none) also drec[b, j] ← ∂(ball b's
     inner-ring reaction)/∂y_j of its own state from the same sweeps, rbase[b] being the reaction at y
     (:func:`ring_columns`).  (The record's arrays are arguments, not defaults: with numba's omitted default arrays
-    the sweeps ran 1.6× slower, 632 against 395 µs on a hub state.)"""
+    the sweeps run 1.6× slower, 632 against 395 µs on a hub state.)"""
     n = y.shape[0]
     nb = blk.shape[0]
     for j in range(nbk):
@@ -148,7 +148,7 @@ def record_at(rec, blk, t, y):
 @njit(cache=True)
 def ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr):
     """The ring's columns J_br (per ball nbk × 10) and J_rr (10 × 10) from the balls' own derivatives, with no
-    right-hand side of their own (module docstring; issue 14).  ``rbase`` (n_balls + 1 rows): each ball's
+    right-hand side of their own (module docstring).  ``rbase`` (n_balls + 1 rows): each ball's
     inner-ring reaction R = (force, moment about the ring centre) at y, then the record's ring row at y (I_p Ω / I_t
     and the contact moment, layout ``MR_*``); ``drec``: R's derivatives by the ball's nine states (:func:`block_jac`
     with a record); ``rmass``, ``bmass`` as :func:`ring_rows`.  Units (SI): R in [N] and [N·m], its derivatives per
@@ -236,7 +236,7 @@ def ring_columns(y, blk, rbase, drec, rmass, bmass, jrr, jbr):
                     for i in range(3):
                         dg[i, j] = -d[i]
                         dg[3 + i, j] -= d[3 + i]
-                    if j < 3:  # the lever r − c itself moves with the ball's position: + e_j × F_R
+                    if j < 3:  # the lever arm r − c itself moves with the ball's position: + e_j × F_R
                         for i in range(3):
                             w[i] = 1.0 if i == j else 0.0
                         cross(w, fr, tmp)

@@ -13,8 +13,8 @@ solved through the ring's Schur complement S = W_rr − Σ_b W_rb W_bb⁻¹ W_br
 ball inverses, Q_b = W_bb⁻¹ W_br and S⁻¹ once per step size, :func:`coupled_apply_w` solves
 W x = v with them in O(n_balls) work.
 
-The Jacobian turned with the balls' orbit (:func:`orbit_reference`, :func:`orbit_turn`, :func:`turned_solve`;
-issue 14): the ball states are Cartesian in the inertial frame (x the bearing axis), so a ball's Jacobian block
+The Jacobian turned with the balls' orbit (:func:`orbit_reference`, :func:`orbit_turn`, :func:`turned_solve`):
+the ball states are Cartesian in the inertial frame (x the bearing axis), so a ball's Jacobian block
 turns with it as it orbits.  With the outer ring fixed and axisymmetric, turning a ball and everything it touches
 about the axis by Δψ turns its forces by Δψ; so where the load does not change along the orbit (an axial load, the
 7011 case) J_b(ψ + Δψ) = T J_b(ψ) Tᵀ exactly, T = diag(R, R, R) and R the rotation by Δψ about x (y, z turned),
@@ -141,8 +141,8 @@ def block_w_inverse(jb, c, wm, out):
     H its 6 × 6 velocity columns below) is inverted through its velocity part: with k_r = r_r − c k_v from the
     first rows, W k = r reduces to M k_vω = r_vω − c G r_r, M = I + c H − c² G P (P k_vω = k_v), and
     W⁻¹ = [[I + c² N_v G, −c N_v], [−c N G, N]] with N = M⁻¹ and N_v its first three rows (block elimination,
-    Golub & Van Loan, *Matrix Computations*, 4th ed. 2013, §3.2.11): a 6 × 6 inversion instead of a 9 × 9 one
-    (issue 14).  Any other block: Gauss–Jordan on the whole block (:func:`invert_small`)."""
+    Golub & Van Loan, *Matrix Computations*, 4th ed. 2013, §3.2.11): a 6 × 6 inversion instead of a 9 × 9 one.
+    Any other block: Gauss–Jordan on the whole block (:func:`invert_small`)."""
     n = jb.shape[0]
     if not kinematic_rows(jb):
         for i in range(n):
@@ -215,9 +215,9 @@ def coupled_w(jac, jrr, jbr, jrb, hs, g, winv, wm, q, sinv, srr, sb):
     inverses winv, Q_b = W_bb⁻¹ W_br, and the inverse of the ring's Schur complement
     S = W_rr − Σ_b W_rb Q_b (the balls' terms subtracted in ball order).  sb: (n_balls, NR, NR) work.
     J_br's rows 0–2 and J_rb's rows 0–4 must be zero (the kinematic rows ṙ = v, q̇ = q̇: so
-    :func:`.jacobian.ring_jac` and :func:`.jacobian.ring_rows` make them); their products are skipped (−17 % of
-    the time, measured 36.8 → 30.7 µs on hub-sized blocks).  The ball blocks are inverted through their velocity
-    part (:func:`block_w_inverse`) and the loops run to the constant N_BALL = 9 (30.7 → 21 µs, issue 14)."""
+    :func:`.jacobian.ring_jac` and :func:`.jacobian.ring_rows` make them); their products are skipped (30.7 against
+    36.8 µs on hub-sized blocks).  The ball blocks are inverted through their velocity part (:func:`block_w_inverse`)
+    and the loops run to the constant N_BALL = 9 (21 against 30.7 µs)."""
     if jac.shape[1] != NB:
         raise ValueError("coupled_w: the ball blocks must have N_BALL = 9 states")
     nb = jac.shape[0]

@@ -1,9 +1,9 @@
-"""Multirate refinement of ROS34PW2 steps: the balls that hold the error stepped again on their own (issue 14).
+"""Multirate refinement of ROS34PW2 steps: the balls that hold the error stepped again on their own.
 
 Why.  On the hub (b) the step is set by a few balls: near the moment's zero crossing the balls of the row being
 unloaded rattle between their raceways (inner loads jumping between 0 and ≈ 140 N from one 20 µs sample to the
 next) and, resolved at the case's tolerance, hold the whole system at 1.15 µs steps — four of 32 balls carry 99 %
-of the error there (docs/dynamics.md, eighteenth pass; ``python benchmarks/bench_dynamics.py --steps``).  With
+of the error there (``python benchmarks/bench_dynamics.py --steps``).  With
 those balls' errors left out, the same 0.8 ms takes 71 steps instead of 695.  Stepping every state at the rate of
 the fastest is what multirate methods avoid.
 
@@ -15,8 +15,8 @@ from an interpolant of the large step):
 1. A ROS34PW2 step of size H of the whole system (:func:`.ros34pw2.integrate`), with its error estimate e.
 2. Per ball b the sum of its nine scaled squared errors s_b = Σ (e_i / sc_i)²; the balls with s_b > 9 θ
    (the RMS of their own errors above √θ, θ = :data:`HOT`), largest first, up to ``mr`` of them, are *active*.
-   The step's error for the controller is that of the others, √((Σ s − Σ_active s_b) / n); above 1 it is rejected
-   as before.
+   The step's error for the controller is that of the others, √((Σ s − Σ_active s_b) / n); above 1 the step is
+   rejected.
 3. The active balls are integrated again over [t, t + H] (:func:`refine`) by ROS34PW2 steps of their own on their
    nine states each, with the rings and cages on the quadratic through y(t), f(t, y) and the large step's y(t + H)
    (:func:`latent`); their right-hand side is the engine's with the other balls skipped
@@ -28,20 +28,19 @@ from an interpolant of the large step):
    up: the large step is rejected and the next :data:`COOL` steps are not refined.
 4. The active balls' states at t + H are replaced by the refined ones.
 
-Two groups (issue 14, twenty-first pass).  The active balls are dealt to :data:`~.common.GROUPS` = 2 groups in turn
+Two groups.  The active balls are dealt to :data:`~.common.GROUPS` = 2 groups in turn
 by rank (:func:`split_groups`), each refined on micro steps of its own (its own error control, next micro step and
 dense-output nodes; :func:`refine_groups`), so that on a threaded engine the two run on two threads in one parallel
 region per refinement (:func:`refine_groups_threaded`) — with the first part of f at the step's end beside them
 (the raceway contacts of the balls not refined, which the refinement does not change:
 :func:`bearingsim.dynamics.forces.rhs_split`).  The groups are the same whatever the thread count, so one and two
-threads give the same trajectory bit for bit.  Before, the refinement's masked right-hand sides ran on the threads
-ball by ball (≈ 3 balls, ≈ 8 µs of work per call: the parallel region's entry ate the gain) and were ≈ 1/3 of a
-step's time on either thread count.
+threads give the same trajectory bit for bit.  The masked right-hand sides are not threaded ball by ball: with
+≈ 3 balls, ≈ 8 µs of work per call, the parallel region's entry costs what the threads gain.
 
 What it leaves out: the rings and cages feel the active balls' forces of the large step, not of the refined
-trajectories (the coupling error of the method).  Measured (docs/dynamics.md): the ring displacement's deviation
-from a tol-1e-8 run over the first 5 ms 1.32e-5 / 9.9e-6 / 5.4e-6 of the ranges against 8.7e-6 / 6.6e-6 /
-3.65e-6 without (bound of issue 14: 1e-4).
+trajectories (the coupling error of the method).  On the hub (b), the ring displacement's deviation from a
+tol-1e-8 run over the first 5 ms is 1.32e-5 / 9.9e-6 / 5.4e-6 of the ranges with the refinement against 8.7e-6 /
+6.6e-6 / 3.65e-6 without, within the accuracy bound 1e-4.
 
 Dense output: the refined balls do not follow the large step's Hermite interpolant between its ends, so the last
 step of a dense call keeps the micro steps' nodes (states and f) and :func:`.common.dense_state` interpolates the

@@ -83,7 +83,7 @@ R34_REJECT_EXPONENT = 1.0 / 3.0
 #: formed again (RADAU5's quot1 = 1, quot2 = 1.2: Hairer & Wanner, *Solving ODEs II*, 2nd ed. 1996, §IV.8 and the
 #: code's documentation).  Hub (b) 0.1 s, five tolerances: W factorisations −36 %, rejections −27 %, steps +1.5 %,
 #: CPU −2.8 %; at 10 km/h (17 tolerances) right-hand sides −12 %, CPU −13 %, and no run in the heavy tail of
-#: 54,000+ steps (6 of 17 without); 1.3 / 1.5 were worse (issue 14, docs/dynamics.md sixteenth pass)
+#: 54,000+ steps (6 of 17 without); 1.3 and 1.5 do worse
 R34_HOLD = 1.2
 
 
@@ -97,7 +97,7 @@ def stages(fun, args, t, y, hs, f0, winv, blk, nbk, k1, k2, k3, k4, yt, ft, tv, 
     The stage equation W k_i = h f(Y_i) + hJ s_i, s_i = Σ_j c_ij k_j, is solved without the product J s_i:
     hJ = (I − W)/γ for the same J that W = I − γhJ is made of, so k_i = W⁻¹(h f(Y_i) + s_i/γ) − s_i/γ (the form
     of Hairer & Wanner, *Solving ODEs II*, §IV.7 — its implementation with u_i = Σ_j γ_ij k_j — written for the
-    untransformed k_i; issue 14: three products with the coupled J per step saved; W must be made of the Jacobian
+    untransformed k_i; three products with the coupled J per step saved; W must be made of the Jacobian
     the step uses, as :func:`integrate` makes it after every refresh)."""
     n = y.shape[0]
     ig = 1.0 / R34_G
@@ -154,7 +154,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     step adds each component's squared scaled error to stats[i] and 1 to stats[n + i] of its largest component
     (the results do not change).  ``threaded``: W's ball blocks formed on ``numba.get_num_threads()`` threads
     (:func:`.linalg.coupled_w_threaded`, the same result bit for bit; 33 µs per step size serially on the hub
-    case, issue 14).  ``vec``: the vectors the relative tolerances are measured on (:func:`.common.error_scale`).
+    case).  ``vec``: the vectors the relative tolerances are measured on (:func:`.common.error_scale`).
 
     Dense output (``dns`` float[3, n], ``dst`` float[4]; :func:`.common.dense_arrays`): the steps are not clipped at
     t_end; the call returns at the first step that reaches or passes it, with t ≥ t_end, and leaves the last step's
@@ -176,7 +176,7 @@ def integrate(fun, args, t, t_end, y, h, atol, rtol, h_min, max_steps, info, blk
     (``fung``: :func:`.multirate.refine_groups`, or :func:`.multirate.refine_groups_threaded` from the threaded
     engine's kernel), the rest once the step is accepted — the same f bit for bit.
 
-    ``funm``, ``mr``: the multirate refinement (:mod:`.multirate`; issue 14): with mr > 0 and the balls' layout
+    ``funm``, ``mr``: the multirate refinement (:mod:`.multirate`): with mr > 0 and the balls' layout
     (nbk = 9) each step refines up to mr balls whose own errors are too large with micro steps of their own, ``funm``
     being the right-hand side of those balls alone (:func:`bearingsim.dynamics.forces.rhs_masked`, signature
     (t, y, dy, args, active)); the step's error for the controller is then that of the other states.  info[7:10] ←
