@@ -15,9 +15,9 @@ ISO/TS 16281:2008 (Lundberg–Palmgren theory; Harris & Kotzalas 2007 vol. 2 ch.
   case.  0.407 = J_r/J_1, 0.389 = J_r/J_2 and 1.044 = J_2/J_1 are the Lundberg–Palmgren integrals of the
   rating condition (radial load, Stribeck distribution with ε = 0.5; :func:`lp_integrals` gives
   0.40681, 0.38954, 1.04432): the ISO 281 rating condition — radial load C with that distribution — gives
-  10^6 revolutions.  (Before this release the free contact angle of a deep-groove bearing with clearance,
-  cos α₀ = 1 − P_d/(2A), was used here: 2.8 % longer lives than ISO/TS 16281 for a 6305 with 10 µm
-  clearance, tests/validation/test_iso16281.py.)
+  10^6 revolutions.  (The free contact angle of a deep-groove bearing with clearance, cos α₀ = 1 − P_d/(2A),
+  would give 2.8 % longer lives than ISO/TS 16281 for a 6305 with 10 µm clearance,
+  tests/validation/test_iso16281.py.)
 * raceway lives L_i = (Q_ci/Q_ei)^3, L_o = (Q_co/Q_eo)^3; row and system lives combine with the
   Weibull exponent e = 10/9:  L = (Σ L_k^(−10/9))^(−9/10)  [10^6 revolutions].
 

@@ -1,7 +1,7 @@
 """Plausibility limits of quasi-static results: warnings and map flags.
 
 A result past one of these limits is still the model's answer, but it lies where the model (or the
-bearing) no longer holds; it carries a warning (``StaticResult.warnings``, the ``warnings`` list of the
+bearing) does not hold; it carries a warning (``StaticResult.warnings``, the ``warnings`` list of the
 JSON, the readable output) and, in maps, a bit in the integer variable ``warning_flags``.
 
 Limits and their sources:

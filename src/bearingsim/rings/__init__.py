@@ -1,4 +1,4 @@
-"""Elastic rings: the rings' (and seats') own deformation in the load distribution (issue 16).
+"""Elastic rings: the rings' (and seats') own deformation in the load distribution.
 
 * :mod:`.section` — ring cross-sections estimated from the boundary dimensions, and their r–z meshes;
 * :mod:`.axisymmetric` — axisymmetric finite elements with circumferential Fourier harmonics (scikit-fem);

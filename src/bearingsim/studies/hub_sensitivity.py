@@ -1,4 +1,4 @@
-"""Dynamic sensitivities of the [S1] hub hysteresis (issue 13 item 4): W_H of ONE cell of the study grid
+"""Dynamic sensitivities of the [S1] hub hysteresis: W_H of ONE cell of the study grid
 (:mod:`.hub_dynamic`) when one input of the traction law or of the geometry is changed.
 
 Each variant is the case of the cell (:func:`.hub_dynamic.cell_case`, physical traction) with one change:

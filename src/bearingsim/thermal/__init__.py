@@ -1,4 +1,4 @@
-"""Thermal network and operating point of a bearing (issue 46): :mod:`.network` (nodes, conductances, linear
+"""Thermal network and operating point of a bearing: :mod:`.network` (nodes, conductances, linear
 steady solve), :mod:`.correlations` (convection, contact conductance), :mod:`.operating_point` (the fixed point
 temperatures → clearance → load distribution → friction → temperatures)."""
 
