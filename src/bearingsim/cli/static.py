@@ -210,7 +210,7 @@ def _friction(res, lub, t):
         return None
     try:
         from ..friction import friction_summary
-    except ImportError:  # pragma: no cover - the friction module is part of the package since issue 15
+    except ImportError:  # pragma: no cover - the friction module is part of the package
         return None
     return friction_summary(res, lub, t)
 

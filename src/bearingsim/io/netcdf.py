@@ -8,7 +8,7 @@ Files
 A file is created under a hidden temporary name in the folder of its final name,
 ``.NAME.HOST-PID-RANDOM.part``, with mode 0666 filtered by the user's umask (as any file the user creates;
 ``mkstemp`` would give 0600, which the rename would carry over), and reaches its final name by one atomic
-``os.replace``.  Leftovers of processes of this host that no longer run (killed with SIGKILL) are removed
+``os.replace``.  Leftovers of processes of this host that have ended (killed with SIGKILL) are removed
 when the next file of the same name is created.  Two ways to publish:
 
 * ``publish="close"`` (maps): every value is written into the temporary file, renamed by
@@ -145,7 +145,7 @@ def create_part(final: Path) -> Path:
 
 
 def remove_stale_parts(final: Path) -> None:
-    """Remove temporary files of ``final`` left by processes of this host that no longer run (a process
+    """Remove temporary files of ``final`` left by processes of this host that have ended (a process
     killed with SIGKILL cannot remove its own)."""
     final = Path(final)
     host = _host()
