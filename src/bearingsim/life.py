@@ -169,7 +169,7 @@ def reference_rating_life(result) -> float | None:
 #: double row, e) — two independent open transcriptions of ISO 281:2007 table 3 that agree value for value with the
 #: values below (docs/life.md).  The standard's text for the 5° single-row cell ("use the X, Y and e values
 #: applicable to single row radial contact groove ball bearings") is followed: a single-row 5° bearing takes the
-#: deep-groove e as well (before 2026-11 it took the 5° double-row e column, 0.23 … 0.52).
+#: deep-groove e as well (not the 5° double-row e column, 0.23 … 0.52).
 #: Relative axial load f₀F_a/C₀r of the rows below [-] (deep groove).  The table goes back to the axial load per
 #: ball F_a/(i Z D_w²) = 25, 50, 100, 150, 200, 300, 500, 750, 1000 lbf/in² (0.172 … 6.89 N/mm², ISO/TR 1281-1);
 #: since C₀r = f₀ i Z D_w² cos α (ISO 76), f₀F_a/C₀r = F_a/(i Z D_w² cos α) and the 5°, 10° and 15° columns are
@@ -327,7 +327,7 @@ def life_hours(l10: float, speed: float) -> float | None:
 
 def hours_text(hours) -> str:
     """A life in hours for people: thousands grouped above 100 h ("2,818 h"), three significant digits below
-    ("0.244 h", "12.3 h": a short life was printed "0 h"), "—" for none."""
+    ("0.244 h", "12.3 h": a short life is not printed "0 h"), "—" for none."""
     if hours is None or not math.isfinite(float(hours)):
         return "—"
     h = float(hours)

@@ -355,7 +355,7 @@ def _parse_unit(unit_text: str, text: str, field: str, example: str):
 
     if not tokens:
         raise bad("no unit")
-    if tokens[0][:2] == ("op", "/"):  # "1/min" was read as the number 1 and the unit "/min"
+    if tokens[0][:2] == ("op", "/"):  # "1/min" is read as the number 1 and the unit "/min"
         tokens.insert(0, ("int", "1", False))
     try:
         unit = expr()

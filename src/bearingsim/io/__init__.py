@@ -12,8 +12,8 @@ written as CF/UDUNITS strings when writing.
 :mod:`.netcdf`              the netCDF writer of maps and dynamic runs (temporary file, atomic rename)
 ==========================  ==========================================================================
 
-The names that ``bearingsim.io`` had before it became a package (``load_bearing``, ``bearing_from_dict``,
-``read_toml`` ...) are importable from here.  The case, arrangement and clearance readers are forwarded on
+The file readers of the front door (``load_bearing``, ``bearing_from_dict``, ``read_toml`` ...) are importable
+from here.  The case, arrangement and clearance readers are forwarded on
 first use (they import the dynamics and statics packages).
 """
 

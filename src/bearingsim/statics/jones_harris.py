@@ -605,7 +605,8 @@ def _check_tilt(tilt, misalignment) -> tuple[str, np.ndarray]:
 
 
 #: the largest tilt :func:`solve` holds [rad] (5.7°): ball bearings run misaligned by arc minutes, and the contact
-#: geometry of rigid rings is meant for such tilts (a 90° tilt was solved to "converged" with M = 3.6e6 N·m)
+#: geometry of rigid rings is meant for such tilts (without the limit a 90° tilt solves to "converged" with
+#: M = 3.6e6 N·m)
 MAX_MISALIGNMENT = 0.1
 
 

@@ -156,7 +156,7 @@ class HubStaticResult:
 
 def check_hub(bearing, field: str = "bearing") -> None:
     """An :class:`~bearingsim.errors.InputError` unless ``bearing`` has the two rows of a hub unit (the study reads
-    both rows' loads and lift-off; a single-row bearing was an IndexError)."""
+    both rows' loads and lift-off; a single-row bearing would fail with an IndexError)."""
     n = len(bearing.rows)
     if n != 2:
         from ..errors import InputError
