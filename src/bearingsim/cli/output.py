@@ -110,8 +110,8 @@ def output_file(path, option: str = "--out", *, renamed: bool = False, suffixes:
 
     ``suffixes``: the file types the command writes (e.g. :data:`NETCDF_SUFFIXES`); another suffix is an
     :class:`InputError` before anything is computed or created (a device or a pipe, e.g. ``/dev/null``, is taken
-    whatever its name) (a map under a .csv name was written as netCDF, a
-    figure under .txt failed after the map was computed).
+    whatever its name), so that a map is not written as netCDF under a .csv name and a figure under .txt does not
+    fail after the map is computed.
 
     ``renamed``: the writer creates a temporary file next to ``path`` and renames it onto ``path`` (the netCDF
     writers of ``map`` and ``simulate``); then ``path`` must not be a device or a pipe — the rename would put a

@@ -269,7 +269,7 @@ def _speed_figure(b, loads, speed, control, tilt, misalignment, out: Path, stem:
 
 def _check_map_bearing(map_file: Path, bearing) -> None:
     """An :class:`InputError` when the map file was made for another bearing (its ``bearing`` attribute, written by
-    :func:`bearingsim.sweep.map_grid`): the report had drawn another bearing's stiffness under this one's name.
+    :func:`bearingsim.sweep.map_grid`): the report would draw another bearing's stiffness under this one's name.
     Checked before anything is computed; a file that cannot be read is :func:`_map_figure`'s to report."""
     import xarray as xr
 
