@@ -224,3 +224,33 @@ def test_cli_unreachable_scheduler_is_one_line_exit_2(tmp_path):
     assert len(lines) == 1 and lines[0].startswith("error: --scheduler:"), err
     assert time.monotonic() - t0 < 20
     assert list(tmp_path.iterdir()) == []
+
+
+def test_cli_shaft_preload_sweep_on_a_real_cluster_equals_the_local_sweep(cluster, tmp_path):
+    """``bearingsim shaft FILE --speeds … --preloads … --scheduler ADDR``: each preload's chain of speeds runs on a
+    worker of a real cluster and streams into the file; the file equals the in-process sweep to round-off (each chain
+    is the same sequence of warm-started solves wherever it runs; dask workers run numpy's BLAS on one thread, which
+    sums the condensation's products in another order: 5e-13 seen)."""
+    import xarray as xr
+
+    spindle = str(Path(__file__).resolve().parents[2] / "examples" / "spindle-milling.toml")
+    args = ["shaft", spindle, "--speeds", "0:12000:3", "--preloads", "rear=100 N:600 N:2", "--json"]
+    local = subprocess.Popen(["bearingsim", *args, "--out", str(tmp_path / "local.nc")], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, start_new_session=True)
+    cluster.start_worker("A")
+    cluster.start_worker("B")
+    with _client(cluster.address) as client:
+        _wait_workers(client, ["A", "B"])
+        p = subprocess.Popen(["bearingsim", *args, "--scheduler", cluster.address, "--out",
+                              str(tmp_path / "cluster.nc")], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             start_new_session=True)
+        rc, out, err = _finish(p, timeout=3 * MAP_TIMEOUT)
+        assert rc == 0, err
+    rcl, _, errl = _finish(local, timeout=3 * MAP_TIMEOUT)
+    assert rcl == 0, errl
+    assert json.loads(out)["converged"] == [[True] * 3] * 2
+    with xr.open_dataset(tmp_path / "local.nc") as a, xr.open_dataset(tmp_path / "cluster.nc") as b:
+        assert set(a.data_vars) == set(b.data_vars) and b.sizes["preload"] == 2
+        for v in a.data_vars:
+            np.testing.assert_allclose(a[v].values, b[v].values, rtol=1e-10, atol=0, err_msg=v)
+    assert not list(tmp_path.glob(".*.part")), "a temporary sweep file was left behind"

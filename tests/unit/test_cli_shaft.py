@@ -65,19 +65,59 @@ def test_modes_give_frequencies():
 
 
 def test_speed_sweep_writes_netcdf(tmp_path):
+    import pint
     import xarray as xr
+
+    from bearingsim.io.netcdf import component_units
 
     nc, png = tmp_path / "k.nc", tmp_path / "k.png"
     run("shaft", SPINDLE, "--speeds", "0:12000:3", "--out", str(nc), "--plot", str(png))
+    ureg = pint.UnitRegistry()
     with xr.open_dataset(nc) as ds:
-        assert ds.sizes["speed"] == 3
-        assert ds["speed"].attrs["units"] == "rad s-1"
-        assert ds["radial_stiffness"].attrs["units"] == "N m-1"
+        assert ds.sizes["speed"] == 3 and ds.sizes["support"] == 2
+        assert list(ds["support"].values) == ["front TBT set", "rear"]
         assert bool(ds["converged"].all())
         assert ds["speed"].values[-1] == pytest.approx(12000 * np.pi / 30)
+        # the library's unit convention: every unit parses with pint, mixed variables per component
+        assert ureg.parse_units(ds["speed"].attrs["units"]) == ureg.rad / ureg.s
+        assert ureg.parse_units(ds["radial_stiffness"].attrs["units"]) == ureg.N / ureg.m
+        assert ureg.parse_units(ds["tilt_stiffness"].attrs["units"]) == ureg.N * ureg.m / ureg.rad
+        km = component_units(ds["stiffness_matrix"].attrs, (5, 5))
+        assert ureg.parse_units(km[3][4]) == ureg.N * ureg.m / ureg.rad and ureg.parse_units(km[1][1]) == ureg.N / ureg.m
+        assert component_units(ds["reaction"].attrs) == ["N", "N", "N", "N m", "N m"]
         k = ds["radial_stiffness"].values
         assert np.all(k > 0) and k[0] != k[-1]  # speed softens the bearings
+        # the direct radial stiffness is 1 / compliance of the condensed matrix at the node
+        c = np.linalg.inv(ds["stiffness_matrix"].values[0])
+        assert k[0] == pytest.approx(1.0 / c[1, 1], rel=1e-9)
+        assert np.all(ds["max_contact_pressure"].values > 1e8)
     assert png.stat().st_size > 0
+
+
+def test_preload_sweep_stiffens_the_spindle():
+    """The rear bearing's spring preload swept with the speeds: a table (preload, speed); more preload, stiffer tip
+    at every speed (the bearings' contact stiffness rises with their load)."""
+    d = json.loads(run("shaft", SPINDLE, "--speeds", "0:12000:2", "--preloads", "rear=100 N:600 N:3",
+                       "--json").stdout)
+    assert d["preload_support"] == "rear" and d["preload_units"] == "N"
+    assert d["preload"] == pytest.approx([100.0, 350.0, 600.0])
+    k = np.array(d["radial_stiffness_N_per_m"])
+    assert k.shape == (3, 2) and np.all(np.array(d["converged"]))
+    assert np.all(np.diff(k, axis=0) > 0), k
+
+
+def test_sweep_over_workers_equals_the_serial_sweep():
+    """Consistency: a sweep split into chains over two processes (each chain starts cold) gives the serial,
+    warm-started sweep's equilibria to the solver's tolerance."""
+    from bearingsim.io.shaft_system import load_shaft_system
+    from bearingsim.shafts.sweep import shaft_sweep
+
+    sf = load_shaft_system(SPINDLE)
+    sp = np.linspace(0.0, 1200.0, 8)
+    a = shaft_sweep(sf.system, sp, sf.stiffness_at)
+    b = shaft_sweep(sf.system, sp, sf.stiffness_at, workers=2)
+    for v in ("radial_stiffness", "axial_stiffness", "tilt_stiffness", "reaction", "reference_rating_life_hours"):
+        np.testing.assert_allclose(b[v].values, a[v].values, rtol=1e-7, err_msg=v)
 
 
 def test_report(tmp_path):
@@ -127,3 +167,9 @@ def test_options_that_need_a_sweep(tmp_path):
     assert r.returncode == 2 and r.stderr.startswith("error: --out:")
     r = run("shaft", SPINDLE, "--stiffness-at", "2 m", check=False)
     assert r.returncode == 2 and r.stderr.startswith("error: --stiffness-at:")
+    for opt in (("--workers", "2"), ("--preloads", "rear=100:200:2"), ("--scheduler", "tcp://127.0.0.1:1")):
+        r = run("shaft", SPINDLE, *opt, check=False)
+        assert r.returncode == 2 and r.stderr.startswith(f"error: {opt[0]}:"), r.stderr
+    r = run("shaft", SPINDLE, "--speeds", "0:1000:2", "--preloads", "tail=100 N:200 N:2", check=False)
+    assert r.returncode == 2 and r.stderr.startswith("error: --preloads:") and "rear" in r.stderr, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1

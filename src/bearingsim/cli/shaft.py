@@ -33,6 +33,12 @@ def shaft(
                                          '"0:20000:21": stiffness at the tool tip, reactions and lives per speed'),
     out: Optional[Path] = typer.Option(None, "--out", help="With --speeds: netCDF file to write (.nc)"),
     plot: Optional[Path] = typer.Option(None, "--plot", help="With --speeds: figure of the stiffness against speed"),
+    preloads: Optional[str] = typer.Option(
+        None, "--preloads", help='With --speeds: preload sweep of one bearing support, NAME=START:STOP:COUNT (N for '
+        'a spring preload, mm for a position preload), e.g. "rear=100 N:600 N:6"'),
+    workers: Optional[int] = typer.Option(None, "--workers", help="With --speeds: local processes (default 1)"),
+    scheduler: Optional[str] = typer.Option(None, "--scheduler", help="With --speeds: Dask scheduler address "
+                                            "tcp://host:port"),
     n_modes: Optional[int] = typer.Option(None, "--modes", help="Number of natural frequencies and mode shapes"),
     gyroscopic: bool = typer.Option(False, "--gyroscopic", help="With --modes: gyroscopic terms at the speed "
                                     "(forward and backward whirl)"),
@@ -44,9 +50,15 @@ def shaft(
     from ..units import parse_quantity
     from .output import output_folder
 
-    if speeds is None and (out is not None or plot is not None):
-        raise InputError("--out" if out is not None else "--plot", "writes the speed sweep",
-                         'add --speeds START:STOP:COUNT, e.g. --speeds "0:20000:21"')
+    for name, given in (("--out", out), ("--plot", plot), ("--preloads", preloads), ("--workers", workers),
+                        ("--scheduler", scheduler)):
+        if speeds is None and given is not None:
+            raise InputError(name, "applies to the speed sweep", 'add --speeds START:STOP:COUNT, e.g. --speeds '
+                             '"0:20000:21"')
+    if workers is not None and not 1 <= workers <= 1024:
+        raise InputError("--workers", f"must be in 1..1024, got {workers}", "e.g. --workers 2")
+    if workers is not None and scheduler is not None:
+        raise InputError("--workers", "the Dask cluster's workers run the sweep", "give --scheduler or --workers")
     if speeds is not None and (n_modes is not None or report is not None):
         raise InputError("--speeds", "a sweep is a run of its own", "run --modes or --report without --speeds")
     if n_modes is not None and not 1 <= n_modes <= 100:
@@ -58,7 +70,7 @@ def shaft(
         sf = with_probe(sf, parse_quantity(stiffness_at, "length", "--stiffness-at"), "--stiffness-at")
     omega = sf.system.speed if speed is None else parse_quantity(speed, "speed", "--speed")
     if speeds is not None:
-        return _sweep(sf, speeds, out, plot, as_json)
+        return _sweep(sf, speeds, out, plot, as_json, preloads, workers or 1, scheduler)
     folder = None
     if report is not None:
         folder = output_folder(report, "--report")
@@ -90,8 +102,30 @@ def shaft(
         raise typer.Exit(1)
 
 
-def _sweep(sf, speeds: str, out, plot, as_json: bool):
-    """``--speeds``: the stiffness at the tool tip, reactions and lives over the speeds (netCDF with ``--out``)."""
+def _preload_grid(sf, spec: str):
+    """``NAME=START:STOP:COUNT`` → (support name, preload values [N or m])."""
+    from ..errors import InputError
+    from ..shafts.model import BearingSupport
+    from ..shafts.sweep import preload_kind
+    from ..sweep import parse_grid
+
+    name, sep, grid = spec.partition("=")
+    name = name.strip()
+    bearings = [s.name for s in sf.system.supports if isinstance(s, BearingSupport)]
+    if not sep or name not in bearings:
+        raise InputError("--preloads", f"{spec!r} does not name a bearing support of the file" if sep else
+                         f"{spec!r} is not NAME=START:STOP:COUNT", f'e.g. --preloads "{bearings[0]}=100 N:600 N:6" '
+                         f"(supports: {', '.join(bearings)})")
+    values = parse_grid(grid.strip(), preload_kind(sf.system, name), "--preloads")
+    if values.size > 101:
+        raise InputError("--preloads", f"{values.size} preloads is more than 101", "use fewer preloads")
+    return name, values
+
+
+def _sweep(sf, speeds: str, out, plot, as_json: bool, preloads: str | None = None, workers: int = 1,
+           scheduler: str | None = None):
+    """``--speeds``: the stiffness at the tool tip, reactions and lives over the speeds (netCDF with ``--out``),
+    and over the preloads of one support with ``--preloads``."""
     from ..errors import InputError
     from ..shafts.sweep import shaft_sweep
     from ..sweep import parse_grid
@@ -100,6 +134,7 @@ def _sweep(sf, speeds: str, out, plot, as_json: bool):
     grid = parse_grid(speeds, "speed", "--speeds")
     if grid.size > 2001:
         raise InputError("--speeds", f"{grid.size} speeds is more than 2001", "use fewer speeds")
+    support, pl = (None, None) if preloads is None else _preload_grid(sf, preloads)
     if sf.stiffness_at is None:
         raise InputError("--stiffness-at", "the file has no tool tip and no stiffness_at: the sweep needs a position",
                          'give --stiffness-at "0 mm" (or a tool_tip load in the file)')
@@ -110,36 +145,49 @@ def _sweep(sf, speeds: str, out, plot, as_json: bool):
     if plot is not None:
         plot = output_file(plot, "--plot", suffixes=FIGURE_SUFFIXES)
     announce_compilation()
-    ds = shaft_sweep(sf.system, grid, sf.stiffness_at)
-    ds.attrs["source_file"] = str(sf.path)
+    res = shaft_sweep(sf.system, grid, sf.stiffness_at, support, pl, out=out, workers=workers, scheduler=scheduler,
+                      attrs={"source_file": str(sf.path)})
     if out is not None:
-        with atomic_output(out, "--out") as tmp:
-            ds.to_netcdf(tmp)
+        import xarray as xr
+
+        ds = xr.load_dataset(res)
+    else:
+        ds = res
     if plot is not None:
         from ..report.shaft import plot_sweep
 
         with atomic_output(plot, "--plot", default_suffix=".png") as tmp:
             plot_sweep(ds, tmp)
-    conv = ds["converged"].values
+    conv = ds["converged"].values.astype(bool)
+    keys = (("radial_stiffness", "radial_stiffness_N_per_m"), ("axial_stiffness", "axial_stiffness_N_per_m"),
+            ("tilt_stiffness", "tilt_stiffness_N_m_per_rad"))
     if as_json:
-        typer.echo(json.dumps({
-            "name": sf.system.name, "position_m": sf.stiffness_at, "speed_rad_s": [float(v) for v in grid],
-            "converged": [bool(v) for v in conv],
-            "radial_stiffness_N_per_m": [_num(v) for v in ds["radial_stiffness"].values],
-            "axial_stiffness_N_per_m": [_num(v) for v in ds["axial_stiffness"].values],
-            "tilt_stiffness_N_m_per_rad": [_num(v) for v in ds["tilt_stiffness"].values],
-            "out": str(out) if out is not None else None, "plot": str(plot) if plot is not None else None}))
+        d = {"name": sf.system.name, "position_m": sf.stiffness_at, "speed_rad_s": [float(v) for v in grid]}
+        if pl is not None:
+            d |= {"preload_support": support, "preload_units": ds["preload"].attrs["units"],
+                  "preload": [float(v) for v in pl]}
+        d["converged"] = conv.tolist()
+        d |= {k: _nums(ds[v].values) for v, k in keys}
+        d |= {"out": str(out) if out is not None else None, "plot": str(plot) if plot is not None else None}
+        typer.echo(json.dumps(d))
     else:
         from rich.table import Table
 
         con = make_console()
-        t = Table(title=f"{sf.system.name}: stiffness at x = {sf.stiffness_at * 1e3:.4g} mm against speed")
-        for c in ("speed rpm", "radial N/µm", "axial N/µm", "tilt N·m/mrad", "converged"):
+        t = Table(title=f"{sf.system.name}: stiffness at x = {sf.stiffness_at * 1e3:.4g} mm against speed"
+                  + ("" if pl is None else f" and the preload of {support}"))
+        cols = ("speed rpm", "radial N/µm", "axial N/µm", "tilt N·m/mrad", "converged")
+        punit = None if pl is None else ("N" if ds["preload"].attrs["units"] == "N" else "µm")
+        for c in ((f"preload {punit}",) if pl is not None else ()) + cols:
             t.add_column(c, justify="right")
-        for j, w in enumerate(grid):
-            t.add_row(f"{w * 30 / math.pi:.0f}", _fmt(ds["radial_stiffness"].values[j], 1e-6),
-                      _fmt(ds["axial_stiffness"].values[j], 1e-6), _fmt(ds["tilt_stiffness"].values[j], 1e-3),
-                      "yes" if conv[j] else "[red]no[/]")
+        rows = [((), slice(None))] if pl is None else [((f"{p * (1.0 if punit == 'N' else 1e6):.4g}",), i)
+                                                        for i, p in enumerate(pl)]
+        for lead, i in rows:
+            vals = [ds[v].values if pl is None else ds[v].values[i] for v, _ in keys]
+            ok = conv if pl is None else conv[i]
+            for j, w in enumerate(grid):
+                t.add_row(*lead, f"{w * 30 / math.pi:.0f}", _fmt(vals[0][j], 1e-6), _fmt(vals[1][j], 1e-6),
+                          _fmt(vals[2][j], 1e-3), "yes" if ok[j] else "[red]no[/]")
         con.print(t)
         for p in (out, plot):
             if p is not None:
@@ -152,6 +200,14 @@ def _sweep(sf, speeds: str, out, plot, as_json: bool):
 def _num(v):
     v = float(v)
     return v if math.isfinite(v) else None
+
+
+def _nums(a):
+    """Finite values as floats, NaN as None, nested as the array."""
+    import numpy as np
+
+    a = np.asarray(a)
+    return [_num(v) for v in a] if a.ndim == 1 else [_nums(r) for r in a]
 
 
 def _fmt(v, f: float, spec: str = ".4g") -> str:

@@ -162,14 +162,24 @@ def _lives_figure(rows: list, out: Path):
 
 def plot_sweep(ds, path) -> None:
     """Radial, axial and tilt stiffness at the sweep's node against speed (a :func:`bearingsim.shafts.sweep.
-    shaft_sweep` dataset) → figure file ``path`` [N/µm, N·m/mrad against rpm]."""
+    shaft_sweep` dataset; a line per preload when it has a preload axis) → figure file ``path`` [N/µm, N·m/mrad
+    against rpm]."""
     plt = _plt()
     rpm = ds["speed"].values * 30.0 / math.pi
+    if "preload" in ds.dims:
+        force = ds["preload"].attrs.get("units") == "N"
+        lines = [(ds.isel(preload=i), f"{p:.4g} N" if force else f"{p * 1e6:.4g} µm")
+                 for i, p in enumerate(ds["preload"].values)]
+    else:
+        lines = [(ds, None)]
     fig, axs = plt.subplots(1, 3, figsize=(11, 3.4))
     for ax, (key, f, lab) in zip(axs, (("radial_stiffness", 1e-6, "radial [N/µm]"),
                                        ("axial_stiffness", 1e-6, "axial [N/µm]"),
                                        ("tilt_stiffness", 1e-3, "tilt [N·m/mrad]")), strict=True):
-        ax.plot(rpm, ds[key].values * f, "o-", ms=3)
+        for sub, label in lines:
+            ax.plot(rpm, sub[key].values * f, "o-", ms=3, label=label)
+        if len(lines) > 1:
+            ax.legend(fontsize=7, title=f"preload {ds.attrs.get('preload_support', '')}", title_fontsize=7)
         ax.set_xlabel("speed [rpm]")
         ax.set_ylabel(lab)
         ax.grid(alpha=0.3)
