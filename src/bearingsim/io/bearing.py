@@ -167,7 +167,10 @@ def load_bearing(spec: str | Path):
     return bearing_from_dict(data)
 
 
-def _material(value, field: str) -> Material:
+def material_from_file(value, field: str) -> Material:
+    """A material of a file: a name of the materials table, or a table with ``youngs_modulus`` [Pa or a
+    quantity], ``poisson_ratio`` [-], ``density`` [kg/m³ or a quantity] (and ``name``, ``source``); errors name
+    ``field``."""
     if isinstance(value, str):
         return get_material(value, field)
     if isinstance(value, dict):
@@ -384,8 +387,8 @@ def _bearing_from_dict(data: dict) -> BallBearing:
     return BallBearing(
         name=str(data.get("name", "bearing")), kind=kind, ball_diameter=d, ball_count=z, pitch_diameter=dm,
         inner_conformity=fi, outer_conformity=fo, contact_angle=alpha,
-        ball_material=_material(data["ball_material"], "ball_material"),
-        ring_material=_material(data["ring_material"], "ring_material"),
+        ball_material=material_from_file(data["ball_material"], "ball_material"),
+        ring_material=material_from_file(data["ring_material"], "ring_material"),
         diametral_clearance=pd, bore=opt("bore", "length"), outside_diameter=opt("outside_diameter", "length"),
         width=opt("width", "length"), dynamic_load_rating=opt("dynamic_load_rating", "force"),
         limiting_speed=opt("limiting_speed", "speed"), static_load_rating=opt("static_load_rating", "force"),
@@ -394,4 +397,4 @@ def _bearing_from_dict(data: dict) -> BallBearing:
 
 
 __all__ = ["catalog_names", "catalog_entries", "catalog_summary", "resolve_bearing_data", "load_bearing",
-           "bearing_from_dict", "rings_from_dict", "check_sleeves"]
+           "bearing_from_dict", "rings_from_dict", "check_sleeves", "material_from_file"]

@@ -70,7 +70,7 @@ from ..shafts import (
     SpringSupport,
 )
 from ..units import file_input, parse_quantity
-from .bearing import _material, bearing_from_dict, catalog_names, load_bearing
+from .bearing import bearing_from_dict, catalog_names, load_bearing, material_from_file
 from .files import read_toml
 
 _KEYS = {"type", "name", "description", "speed", "material", "elements", "shear", "start", "stiffness_at",
@@ -332,7 +332,7 @@ def _section(t, i: int, default_material):
     length = parse_quantity(_require(t, "length", field, '"80 mm"'), "length", f"{field}.length")
     od = parse_quantity(_require(t, "outer_diameter", field, '"55 mm"'), "length", f"{field}.outer_diameter")
     idia = _q(t, "inner_diameter", "length", field, 0.0)
-    mat = _material(t["material"], f"{field}.material") if "material" in t else default_material
+    mat = material_from_file(t["material"], f"{field}.material") if "material" in t else default_material
     try:
         return Section(length, od, idia, mat)
     except InputError as exc:  # the model's checks (positive sizes, bore below the outside) in the file's names
@@ -363,7 +363,7 @@ def _from_dict(data: dict, folder: Path | None) -> ShaftFile:
         raise InputError("type", f"expected type = \"shaft_system\", got {data.get('type')!r}",
                          'a shaft-system file starts with type = "shaft_system"')
     _check_keys(data, _KEYS, "")
-    default_material = _material(data.get("material", "bearing_steel"), "material")
+    default_material = material_from_file(data.get("material", "bearing_steel"), "material")
     sections = tuple(_section(t, i, default_material) for i, t in enumerate(_list(data, "sections", True)))
     supports = tuple(_support(t, i, folder) for i, t in enumerate(_list(data, "supports", True)))
     loads_raw = _list(data, "loads", False)
