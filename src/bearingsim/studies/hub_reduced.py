@@ -17,7 +17,7 @@ contact angle α_j [rad], tilt γ_qs(M) [rad] and the compliance C = dγ/dM alon
    the tilt axis; the contact point, f D from the groove centre (f the inner conformity, D the ball
    diameter), moves along the major axis at γ̇ f D cos ψ, and a ball that follows the outer groove
    and rolls between the two sees half of it: the ball's quasi-static position moves along the major
-   axis at v_j = γ̇ ℓ_j, ℓ_j = f D cos ψ_j / 2 [m/rad] (the brief's form of [S1] Fig. 11).
+   axis at v_j = γ̇ ℓ_j, ℓ_j = f D cos ψ_j / 2 [m/rad] (half the arm: our reading of [S1] Fig. 11).
 2. *Restoring force.*  A ball offset by e [m] from the line joining the groove centres has its two
    load lines (through the groove centres, at (f_i − ½)D and (f_o − ½)D from its centre) turned by
    e/((f − ½)D), which pushes it back with k_t e, k_t = Q/((f_i − ½)D) + Q/((f_o − ½)D) [N/m].
@@ -48,7 +48,7 @@ per ball and moment.  The solids' tangential compliance (Kalker) in series, the 
 mixed lubrication are not included (each lowers κ or shifts it; ``creep_slope`` overrides it).
 The seed's Fig. 4 curve corresponds to κ ≈ 10–16 (μ 0.08 reached at s ≈ 0.01).
 
-Upper bounds of the mechanism (computed, per cell, both with the brief's arm f D, twice the
+Upper bounds of the mechanism (computed, per cell, both with the full arm f D, twice the
 model's ℓ, so they bound the model for any creep law with |T| ≤ μ_max Q):
 
 * force: every ball fully sliding moves its moment by at most μ_max Q_j f D |cos ψ_j|, so each branch
@@ -67,7 +67,7 @@ Numbers for the hub (``examples/hub-moment-50hz.toml``, μ_max = 0.08; W_H in 10
     100           0.013 / 0.085 / 0.063  (τ = 7.1 ms)     0.002 / 0.018 / 0.074  (τ = 1.3 ms)
     ============  =====================================  ==================================
 
-Force bound 1.73, energy bound 1.72·10⁻³ ° in every cell (the issue's estimate: 1.4–2.9 and 1.5–3.2; the
+Force bound 1.73, energy bound 1.72·10⁻³ ° in every cell (an independent estimate: 1.4–2.9 and 1.5–3.2; the
 largest first-order loop ≈ 0.1, here 0.12).  The dynamic run at 100 km/h, 50 Hz gives 0.145 (interval
 0.134–0.155) with the loop estimator, 2.3 × this model's 0.063: the dynamic run also has Hunt–Crossley
 contact damping and cage friction, and its traction saturates at s ≈ 10⁻⁴–10⁻³ (not linear creep).  The

@@ -2,7 +2,7 @@
 
 Why.  On the hub (b) the step is set by a few balls: near the moment's zero crossing the balls of the row being
 unloaded rattle between their raceways (inner loads jumping between 0 and ≈ 140 N from one 20 µs sample to the
-next) and, resolved at the case's tolerance, hold the whole system at 1.15 µs steps — four of 32 balls carry 99 %
+next) and, resolved at the case's tolerance, hold the whole system at 1.15 µs steps — four of 32 balls carry 96 %
 of the error there (``python benchmarks/bench_dynamics.py --steps``).  With
 those balls' errors left out, the same 0.8 ms takes 71 steps instead of 695.  Stepping every state at the rate of
 the fastest is what multirate methods avoid.
