@@ -5,7 +5,7 @@ engine's vector groups (dynamics/model.py ``error_vectors``, integrate/common.py
 velocity and angular velocity of every ball and cage, nothing else; (3) with them the error norm of a state is
 the same in any frame: rotating every ball's velocity, angular velocity and their errors by one rotation leaves
 it unchanged, which the per-component scale does not (the reason the groups exist: a component passing
-through zero in the orbit was held several times tighter, docs/dynamics.md, sixth pass).
+through zero in the orbit was held several times tighter, docs/development/history.md, sixth pass).
 """
 
 import math

@@ -1,7 +1,7 @@
 """The Jacobian's refresh interval chosen from the run's record (issue 14, seventeenth pass):
 :func:`bearingsim.dynamics.integrate.jacobian.refresh_interval` and :func:`record_attempt`, and the engine's use of
 them.  Consistency and mechanism tests (the rule is an engine choice, not a physical model: its effect on the work
-is measured by benchmarks/bench_dynamics.py, docs/dynamics.md)."""
+is measured by benchmarks/bench_dynamics.py, docs/development/history.md)."""
 
 from __future__ import annotations
 
@@ -91,7 +91,7 @@ def test_engine_shortens_the_interval_where_the_steps_fall_with_age():
     Jacobian used as made (``jac_orbit=False``; turned with the balls' orbit, the default, its step no longer falls
     with age: tests/unit/test_dyn_orbit_turn.py): the record shows the step falling with the Jacobian's age (a
     stability limit that the aging J sets) and the interval chosen stays well below the cap of 20 (measured 8, 16
-    when lengthened to explore) (docs/dynamics.md, seventeenth pass)."""
+    when lengthened to explore) (docs/development/history.md, seventeenth pass)."""
     case = load_bench_case("a")
     m, ls, y, _ = R.build(case)
     st_ = R.Stepper(m, ls, y.copy(), tol=case.tolerance, method=case.method, threads=1, dense=True, jac_orbit=False)

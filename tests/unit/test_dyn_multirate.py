@@ -22,7 +22,7 @@ from bearingsim.dynamics.case import load_case
 from bearingsim.dynamics.integrate import multirate as mrm
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-T0 = 9.1e-3  # the hub's moment zero crossing: the unloaded row's balls rattle (docs/dynamics.md, eighteenth pass)
+T0 = 9.1e-3  # the hub's moment zero crossing: the unloaded row's balls rattle (docs/development/history.md, eighteenth pass)
 
 
 @pytest.fixture(scope="module")
@@ -152,7 +152,7 @@ def test_refinement_at_the_zero_crossing_takes_far_fewer_steps_within_the_tolera
     held by a few rattling balls; with the refinement ≈ 100 (refining ≈ 6 balls a step).  The result against a run
     at tol 1e-8: the balls' angular velocities as close as the plain run's, the ring within 5e-5 of its travel over
     the load cycle (measured 1.9e-5 — the method's coupling error: the ring feels the refined balls' forces of the
-    large step; the plain run 2.6e-7; issue 14's bound on the ring 1e-4) — docs/dynamics.md, eighteenth pass."""
+    large step; the plain run 2.6e-7; issue 14's bound on the ring 1e-4) — docs/development/history.md, eighteenth pass."""
     c, m, ls, s = hub
     t_end = T0 + 0.8e-3
     fine = _run(m, ls, s, 1e-8, 0, t_end)

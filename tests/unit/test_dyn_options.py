@@ -85,7 +85,7 @@ def test_slice_count_converges_for_the_hub_contacts():
     """The sliced-ellipse quadrature (seed 001 eq. 1) converges as the slices are refined: the ball
     accelerations (traction forces and moments) of the hub unit, ball spin 1 % below Jones' value,
     approach the 128-slice values, and the power loss at the default 8 slices is within 1 % of them.
-    Measured (docs/dynamics.md): accelerations 19 % (2 slices), 18 % (4), 8.7 % (8), 3.1 % (16),
+    Measured (docs/development/history.md): accelerations 19 % (2 slices), 18 % (4), 8.7 % (8), 3.1 % (16),
     1.7 % (32); power loss −2.9 %, −1.6 %, −0.27 %, −0.02 %, −0.01 %.  Fewer than 8 slices is not
     an accurate way to save time: where spin makes the sliding change sign inside the ellipse the
     integrand is steep and the quadrature error falls only about as 1/n."""

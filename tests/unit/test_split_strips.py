@@ -1,5 +1,5 @@
 """Equal strips cut at the zeros of the rolling slip (``slice_rule = "split"``, the kernel's n_slices = SPLIT_BASE + n;
-issue 14, fourteenth pass of docs/dynamics.md).
+issue 14, fourteenth pass in docs/development/history.md).
 
 Equal strips evaluate μ(s)·ŝ at each strip's centroid; where a zero of the rolling-direction slip lies inside a strip,
 its two sides pull in opposite directions but the strip takes one direction, and as the zero crosses the centroid the

@@ -25,7 +25,7 @@ residual of ≈ 0.02·10⁻³ ° that does not shrink with the tolerance — not
 interval contains or not as the rounding moves the trajectory.  The test therefore asks for what holds: the
 mean within 0.05·10⁻³ ° and the whole interval within ±0.06·10⁻³ °, less than half the lower end of the
 interval the traction gives in the same setup (0.125 below).  The residual's source is an open item
-(docs/dynamics.md, sixth pass); not the start's ringing: with a 10 or 30 ms ramp-in of the load variation 20
+(docs/development/history.md, sixth pass); not the start's ringing: with a 10 or 30 ms ramp-in of the load variation 20
 cycles give 0.013 [−0.004, 0.030] and 0.026 [−0.001, 0.053]·10⁻³ °, the same per-cycle scatter (±0.05); nor
 the held-ball constraint's work (with held balls the energy test's row conserves energy as with free ones).
 
