@@ -121,6 +121,19 @@ def _rows_and_ratings(bearing):
     return out
 
 
+def row_reference_life(bearing, c_row: float, qi, qo) -> float:
+    """ISO/TS 16281 reference rating life [10^6 revolutions] of one row of rating ``c_row`` [N] whose balls carry
+    ``qi`` and ``qo`` [N] on the inner and outer raceway (inner ring rotating: Q_ei the cubic mean, Q_eo the
+    10/3 mean over the row's Z balls; the two raceway lives combined with the Weibull exponent; ∞ without load)."""
+    qi = np.maximum(np.asarray(qi, dtype=float), 0.0)
+    qo = np.maximum(np.asarray(qo, dtype=float), 0.0)
+    z = len(qi)
+    qci, qco = raceway_ratings(bearing, c_row)
+    qei = (float((qi * qi).dot(qi)) / z) ** (1.0 / 3.0)
+    qeo = (float((qo ** (10.0 / 3.0)).sum()) / z) ** 0.3
+    return float(_combine([(qci / qei) ** 3 if qei > 0 else None, (qco / qeo) ** 3 if qeo > 0 else None]))
+
+
 def row_reference_lives(result) -> list[float] | None:
     """ISO/TS 16281 reference rating life of each row [10^6 revolutions] (its two raceways combined with the
     Weibull exponent; ∞ for a row without load), or ``None`` (no rating, or not converged)."""
@@ -139,11 +152,7 @@ def row_reference_lives(result) -> list[float] | None:
         else:
             sel = b["row"] == k
             qi, qo = qi_all[sel], qo_all[sel]
-        z = len(qi)
-        qci, qco = raceway_ratings(brg, c)
-        qei = (float((qi * qi).dot(qi)) / z) ** (1.0 / 3.0)
-        qeo = (float((qo ** (10.0 / 3.0)).sum()) / z) ** 0.3
-        out.append(float(_combine([(qci / qei) ** 3 if qei > 0 else None, (qco / qeo) ** 3 if qeo > 0 else None])))
+        out.append(row_reference_life(brg, c, qi, qo))
     return out
 
 

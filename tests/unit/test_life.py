@@ -290,3 +290,68 @@ def test_pressure_safety_scales_inversely_with_load_at_zero_clearance(fr, k, psi
     s1, s2 = r1.rating["static_safety_factor_pressure"], r2.rating["static_safety_factor_pressure"]
     np.testing.assert_allclose(s1 / s2, k, rtol=1e-6)
     np.testing.assert_allclose(r1.rating["equivalent_static_load_N"], fr, rtol=1e-12)
+
+
+# ---- ISO/TS 16281 load distribution of the standard (bearingsim.iso16281) --------------------------------------
+
+def test_standard_load_distribution_equals_jones_harris_without_moment():
+    """A deep-groove row at rest without a moment: both load distributions balance the same loads with the same
+    Hertz constant and the same approach (the tilt radius drops out, module docstring), so the ball loads, the
+    free tilt's axial shift and L10r agree to the solvers' tolerance."""
+    from bearingsim import iso16281
+
+    b = load_bearing("6205")
+    for loads in (jh.Loads(fr_y=2000.0, fa=500.0), jh.Loads(fr_z=1500.0), jh.Loads(fa=800.0)):
+        s = jh.solve(b, loads)
+        r = iso16281.load_distribution(b, loads)
+        assert r.converged and s.converged
+        np.testing.assert_allclose(r.balls["load_N"], s.balls["inner_load_N"], rtol=1e-7, atol=1e-6)
+        np.testing.assert_allclose(r.displacement[:3], s.displacement[:3], rtol=1e-7, atol=1e-12)
+        np.testing.assert_allclose(r.reference_rating_life, s.reference_rating_life, rtol=1e-7)
+        # the same axial shift of the balls: the tilt about D_pw/2 times D_pw/2 is the Jones–Harris tilt times R_i
+        ric = 0.5 * b.pitch_diameter + (b.inner_conformity - 0.5) * b.ball_diameter * math.cos(b.free_contact_angle)
+        np.testing.assert_allclose(r.displacement[3:] * 0.5 * b.pitch_diameter, s.displacement[3:] * ric,
+                                   rtol=1e-6, atol=1e-13)
+
+
+def test_standard_load_distribution_under_moment_balances_the_loads_about_the_pitch_radius():
+    """Under a moment the balls' forces, summed by hand with the arm D_pw/2, balance the applied loads; the
+    same loads summed with the Jones–Harris arm R_i leave a moment residual of (R_i/(D_pw/2) − 1) M."""
+    from bearingsim import iso16281
+
+    b = load_bearing("6205")
+    loads = jh.Loads(fr_y=1000.0, fa=300.0, m_z=4.0, m_y=-2.0)
+    r = iso16281.load_distribution(b, loads)
+    assert r.converged
+    q, a, psi = r.balls["load_N"], r.balls["contact_angle_rad"], r.balls["azimuth_rad"]
+    rp = 0.5 * b.pitch_diameter
+    np.testing.assert_allclose(np.sum(q * np.sin(a)), loads.fa, rtol=1e-9)
+    np.testing.assert_allclose(np.sum(q * np.cos(a) * np.cos(psi)), loads.fr_y, rtol=1e-9)
+    np.testing.assert_allclose(np.sum(q * np.cos(a) * np.sin(psi)), 0.0, atol=1e-7)
+    np.testing.assert_allclose(rp * np.sum(q * np.sin(a) * np.sin(psi)), loads.m_y, rtol=1e-9)
+    np.testing.assert_allclose(-rp * np.sum(q * np.sin(a) * np.cos(psi)), loads.m_z, rtol=1e-9)
+    # the approach of each ball from the displacement, written out (A, A − P_d/2, D_pw/2)
+    big_a = b.total_curvature_distance
+    dr = big_a - 0.5 * b.diametral_clearance + r.displacement[1] * np.cos(psi) + r.displacement[2] * np.sin(psi)
+    da = r.displacement[0] + rp * (r.displacement[3] * np.sin(psi) - r.displacement[4] * np.cos(psi))
+    k = b.contact_constants[2]
+    np.testing.assert_allclose(q, k * np.maximum(np.hypot(dr, da) - big_a, 0.0) ** 1.5, rtol=1e-12, atol=1e-9)
+
+
+def test_standard_load_distribution_unloaded_and_bad_input():
+    from bearingsim import iso16281
+    from bearingsim.errors import InputError
+
+    b = load_bearing("6205")
+    r = iso16281.load_distribution(b)
+    assert r.converged and not np.any(r.displacement) and not np.any(r.balls["load_N"])
+    assert r.reference_rating_life == math.inf
+    assert iso16281.reference_rating_life(dataclasses.replace(b, dynamic_load_rating=0.0), jh.Loads(fa=100.0)) is None
+    pair = ar.make_system(load_bearing("7011-25"), "DB")
+    for bad in (pair, "6205"):
+        with pytest.raises(InputError) as e:
+            iso16281.load_distribution(bad, jh.Loads(fa=100.0))
+        assert e.value.field == "bearing"
+    with pytest.raises(InputError) as e:
+        iso16281.load_distribution(b, {"fa": 100.0})
+    assert e.value.field == "loads"
