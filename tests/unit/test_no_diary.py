@@ -3,7 +3,7 @@
 Guards the rule of docs/development/history.md: the record of how the code became fast or correct (numbered
 passes, rounds and sessions, levers "measured and rejected" or "not kept", "was 1.8 ms", "before this
 release", issue numbers, commit hashes, "used to", "no longer") lives in that file and the CHANGELOG, not in
-the code.  Every ``.py`` file under ``src/bearingsim`` is read with :mod:`tokenize` (comments) and :mod:`ast`
+the code nor in docs/dynamics.md, which describes the engine as it is.  Every ``.py`` file under ``src/bearingsim`` is read with :mod:`tokenize` (comments) and :mod:`ast`
 (docstrings and other bare string statements); nothing is imported.  A measured fact that explains a design
 decision stays in the code, said in the present tense ("ROS34PW2 takes a third of DOPRI5's steps on the hub
 case"), without the story of how it was found.
@@ -119,6 +119,19 @@ def test_pattern_flags_diary(text: str) -> None:
 )
 def test_pattern_spares_present_tense(text: str) -> None:
     assert not _hits(text), f"the diary pattern flags the present-tense text {text!r}: {_hits(text)}"
+
+
+def test_no_diary_words_in_the_dynamics_page() -> None:
+    """docs/dynamics.md describes the engine as it is; its development record is docs/development/history.md."""
+    page = SRC.parents[1] / "docs" / "dynamics.md"
+    found = [
+        f"docs/dynamics.md:{k}: {hit!r}"
+        for k, line in enumerate(page.read_text(encoding="utf-8").splitlines(), 1)
+        for hit in _hits(line)
+    ]
+    assert not found, f"{len(found)} diary phrases in docs/dynamics.md (move them to docs/development/history.md):\n" + (
+        "\n".join(found)
+    )
 
 
 def test_no_diary_words_in_src() -> None:
