@@ -347,6 +347,9 @@ def test_standard_load_distribution_unloaded_and_bad_input():
     assert r.converged and not np.any(r.displacement) and not np.any(r.balls["load_N"])
     assert r.reference_rating_life == math.inf
     assert iso16281.reference_rating_life(dataclasses.replace(b, dynamic_load_rating=0.0), jh.Loads(fa=100.0)) is None
+    # an angular-contact row pulled off its raceways has no equilibrium: not converged, no life
+    off = iso16281.load_distribution(load_bearing("7011-25"), jh.Loads(fa=-500.0))
+    assert not off.converged and off.reference_rating_life is None
     pair = ar.make_system(load_bearing("7011-25"), "DB")
     for bad in (pair, "6205"):
         with pytest.raises(InputError) as e:
