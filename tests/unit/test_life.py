@@ -315,8 +315,8 @@ def test_standard_load_distribution_equals_jones_harris_without_moment():
 
 
 def test_standard_load_distribution_under_moment_balances_the_loads_about_the_pitch_radius():
-    """Under a moment the balls' forces, summed by hand with the arm D_pw/2, balance the applied loads; the
-    same loads summed with the Jones–Harris arm R_i leave a moment residual of (R_i/(D_pw/2) − 1) M."""
+    """Under forces and moments the balls' forces, summed by hand with the arm D_pw/2, balance the applied loads,
+    and each ball load is K_n δ^1.5 of the approach written out from the ring displacement."""
     from bearingsim import iso16281
 
     b = load_bearing("6205")
