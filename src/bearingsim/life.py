@@ -161,7 +161,7 @@ def reference_rating_life(result) -> float | None:
     :class:`~bearingsim.statics.jones_harris.StaticResult` (all raceways of all rows combined with the Weibull
     exponent); ``None`` when no dynamic load rating is known (``dynamic_load_rating`` in the bearing file) or
     the result did not converge.  The loads are the Jones–Harris ones; :mod:`bearingsim.iso16281` gives L10r on
-    the standard's own load distribution (the same for a deep-groove row at rest without a moment, 2.4 % shorter
+    the standard's own load distribution (the same for a deep-groove row at rest without a moment, 2.3 % shorter
     for a 6305-like bearing under a pure moment: docs/life.md)."""
     rows = row_reference_lives(result)
     if rows is None:
