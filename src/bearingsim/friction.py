@@ -88,6 +88,17 @@ PALMGREN_F1 = {"deep_groove": (0.0004, 0.0006, 0.55), "angular_contact": (0.001,
 METHODS = tuple(PALMGREN_F0["deep_groove"])
 MODELS = ("both", "palmgren", "physical")
 
+#: words for tables people read: each source of :func:`friction_summary` (its ``SOURCE_N_m`` / ``SOURCE_W`` keys)
+SOURCE_LABELS = {"palmgren_load": "Palmgren load term M_l", "palmgren_viscous": "Palmgren viscous term M_v",
+                 "palmgren_torque": "Palmgren total", "rolling": "rolling resistance of the EHL film",
+                 "spin": "spin at the contacts", "sliding": "sliding (micro-slip) at the contacts",
+                 "drag": "ball drag in the oil-air mixture", "cage_land": "cage land", "cage_pocket": "cage pockets",
+                 "jet_momentum": "oil-jet momentum", "physical_torque": "physics-based total"}
+#: words for :data:`MODELS` and the ``headline_model`` of :func:`friction_summary`
+MODEL_LABELS = {"both": "Palmgren and physics-based", "palmgren": "Palmgren", "physical": "physics-based"}
+#: words for the lubrication methods of :data:`METHODS` (Palmgren's f0 columns)
+METHOD_LABELS = {"oil_bath": "oil bath", "oil_mist": "oil mist", "oil_jet": "oil jet", "grease": "grease"}
+
 _R_AIR = 287.05  # specific gas constant of dry air [J/(kg K)]
 _P_ATM = 101325.0  # [Pa]
 
@@ -441,13 +452,16 @@ def friction_summary(result, lubricant=None, temperature: float | None = None, *
         momentum loss (:func:`jet_momentum_power`)
     cage : a :class:`CageLand`, ``"estimate"`` or None: the cage land and pocket losses (module docstring, item 3)
 
-    Returns a dict with ``friction_torque_N_m`` and ``power_loss_W`` (Palmgren's total for "both" and
-    "palmgren", the physical total for "physical"), ``headline_model``, Palmgren's
-    ``palmgren_load_N_m``, ``palmgren_viscous_N_m``, ``palmgren_torque_N_m``, ``palmgren_power_W``,
-    the physical ``rolling_N_m``, ``spin_N_m``, ``sliding_N_m``, ``drag_N_m``, ``cage_land_N_m``,
-    ``cage_pocket_N_m``, ``jet_momentum_N_m`` (None when not computed), ``physical_torque_N_m``,
-    ``physical_power_W`` and the same per source in W (``rolling_W`` …), the factors used
-    (``palmgren_rows``) and ``notes``.  Parts not computed are None.
+    Returns
+    -------
+    dict
+        ``friction_torque_N_m`` and ``power_loss_W`` (Palmgren's total for "both" and
+        "palmgren", the physical total for "physical"), ``headline_model``, Palmgren's
+        ``palmgren_load_N_m``, ``palmgren_viscous_N_m``, ``palmgren_torque_N_m``, ``palmgren_power_W``,
+        the physical ``rolling_N_m``, ``spin_N_m``, ``sliding_N_m``, ``drag_N_m``, ``cage_land_N_m``,
+        ``cage_pocket_N_m``, ``jet_momentum_N_m`` (None when not computed), ``physical_torque_N_m``,
+        ``physical_power_W`` and the same per source in W (``rolling_W`` …), the factors used
+        (``palmgren_rows``) and ``notes``.  Parts not computed are None.
     """
     if model not in MODELS:
         raise InputError("model", f"unknown friction model {model!r}", f"use one of {', '.join(MODELS)}")
@@ -545,4 +559,5 @@ def friction_summary(result, lubricant=None, temperature: float | None = None, *
 __all__ = ["friction_summary", "palmgren_torque", "contact_losses", "drag_loss", "ball_drag_power",
            "CageLand", "cage_land_torque", "cage_pocket_power", "jet_momentum_power", "cage_and_jet_losses",
            "POCKET_FRICTION", "CAGE_GUIDANCES",
-           "sphere_drag_coefficient", "parker_oil_fraction", "PALMGREN_F0", "PALMGREN_F1", "METHODS", "MODELS"]
+           "sphere_drag_coefficient", "parker_oil_fraction", "PALMGREN_F0", "PALMGREN_F1", "METHODS", "MODELS",
+           "SOURCE_LABELS", "MODEL_LABELS", "METHOD_LABELS"]

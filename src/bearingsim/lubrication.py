@@ -25,6 +25,53 @@ from .contact import slices as S
 from .errors import InputError
 from .lubricants import get_lubricant
 
+#: Operating (oil) temperature [K] that a computation with a lubricant takes when none is given: 60 °C, the
+#: temperature at which ``bearingsim lubricants`` quotes the viscosities, a steady oil temperature of many
+#: oil-bath and grease-lubricated bearings.  It sets the viscosity behind κ, a_ISO and the friction, so every
+#: output that uses it says so (:func:`assumed_phrases`).
+ASSUMED_TEMPERATURE = 333.15
+#: Lubricant that a computation which needs one takes when none is given (a mineral oil of ISO VG 68)
+ASSUMED_LUBRICANT = "iso-vg-68"
+
+#: key of an assumed input in :func:`operating_conditions`' ``assumed`` → (what it is, the option that gives it)
+_ASSUMED_WORDS = {"lubricant": ("lubricant {}", "--lubricant"),
+                  "temperature_K": ("operating temperature {:.0f} °C", "--temperature"),
+                  "oil_inlet_temperature_K": ("oil inlet temperature {:.0f} °C", "--temperature")}
+
+
+def operating_conditions(lubricant=None, temperature: float | None = None, *, need_lubricant: bool = False,
+                         lubricant_field: str = "lubricant", temperature_field: str = "temperature"):
+    """The one rule for a lubricant and an operating temperature the caller does not give: a computation that
+    uses a lubricant (one is given, a temperature is given, or ``need_lubricant``) takes
+    :data:`ASSUMED_LUBRICANT` and :data:`ASSUMED_TEMPERATURE` for whichever of the two is missing, and returns
+    what it assumed so that the output can say so.  Neither given and not needed: no lubricant.
+
+    lubricant : library name, TOML path, Lubricant or None; temperature [K] or None.
+    Returns (Lubricant or None, temperature [K] or None, assumed) with ``assumed`` a dict of the inputs filled
+    in (``lubricant``: its name, ``temperature_K``), empty when everything was given.
+    """
+    assumed: dict = {}
+    if lubricant is None and temperature is None and not need_lubricant:
+        return None, None, assumed
+    if lubricant is None:
+        lubricant = assumed["lubricant"] = ASSUMED_LUBRICANT
+    if temperature is None:
+        temperature = assumed["temperature_K"] = ASSUMED_TEMPERATURE
+    lub = get_lubricant(lubricant, lubricant_field)
+    return lub, lub.check_temperature(temperature, temperature_field), assumed
+
+
+def assumed_phrases(assumed: dict, options: dict | None = None) -> list[str]:
+    """One phrase per assumed input of :func:`operating_conditions` (or the same keys): "operating temperature
+    60 °C assumed — give --temperature".  ``options`` renames the option per key (the Python API's argument
+    names, e.g. ``{"temperature_K": "temperature="}``)."""
+    out = []
+    for key, value in assumed.items():
+        what, option = _ASSUMED_WORDS[key]
+        shown = value - 273.15 if key.endswith("_K") else value
+        out.append(f"{what.format(shown)} assumed — give {(options or {}).get(key, option)}")
+    return out
+
 
 def _contact_geometry(d, alpha, inner):
     """Contact-centre offset from the ball centre [m] and unit normal (race → ball) [-], in the
@@ -245,5 +292,6 @@ def physical_fluid_curve(lubricant, temperature: float, load: float, rx: float, 
     return 0.0, mu_max, float(s[i]), mu_inf
 
 
-__all__ = ["physical_fluid_curve", "lubrication_report", "traction_vs_slide_roll", "plot_traction_curves",
+__all__ = ["ASSUMED_LUBRICANT", "ASSUMED_TEMPERATURE", "assumed_phrases", "operating_conditions",
+           "physical_fluid_curve", "lubrication_report", "traction_vs_slide_roll", "plot_traction_curves",
            "contact_at_jones_kinematics"]

@@ -27,6 +27,16 @@ def make_console(stderr: bool = False):
     return con
 
 
+def status_text(converged: bool, status: str, iterations: int, residual: float, unit: str = "N") -> str:
+    """The solver line of every command: "converged (residual 6.1e-12 N, 8 iterations)", or "NOT CONVERGED:
+    reason (residual …, … iterations)" (rich markup) — the reason only when it says more than the verdict."""
+    tail = f"residual {residual:.2g} {unit}, {iterations} iterations"
+    if converged:
+        extra = "" if str(status).strip().lower() in ("", "converged") else f"{status}; "
+        return f"converged ({extra}{tail})"
+    return f"[red]NOT CONVERGED[/]: {status} ({tail})"
+
+
 def quiet_stdout() -> None:
     """Point stdout at the null device (its reader has gone), so that nothing written later, nor Python's flush at
     exit, fails again (the recipe of the Python docs' note on SIGPIPE)."""

@@ -41,8 +41,10 @@ def lubrication(
     my: MyOpt = None,
     speed: SpeedOpt = None,
     control: ControlOpt = "outer",
-    lubricant: str = typer.Option("iso-vg-68", "--lubricant", help="Library name (bearingsim lubricants) or TOML"),
-    temperature: str = typer.Option("60 degC", "--temperature", help='Oil inlet temperature, e.g. "60 degC"'),
+    lubricant: str = typer.Option(None, "--lubricant", help="Library name (bearingsim lubricants) or TOML "
+                                  "(not given: iso-vg-68, said so in the output)"),
+    temperature: str = typer.Option(None, "--temperature", help='Oil inlet temperature, e.g. "60 degC" (not given: '
+                                    '60 degC, said so in the output)'),
     roughness: str = typer.Option("0.1 um", "--roughness", help='Composite rms roughness, e.g. "0.05 um"'),
     slices: int = typer.Option(10, "--slices", help="Slices of each contact ellipse"),
     model: str = typer.Option("mixed", "--model", help="Traction model: mixed, fluid or boundary"),
@@ -69,7 +71,9 @@ def lubrication(
     omega = options.parse_speed(speed)
     if omega == 0.0:
         raise InputError("--speed", "a lubrication report needs a non-zero speed", 'e.g. --speed "3000 rpm"')
-    t = parse_quantity(temperature, "temperature", "--temperature")
+    from .static import _operating_lubricant
+
+    lubricant, t, assumed = _operating_lubricant(lubricant, temperature, need_lubricant=True)
     sigma = parse_quantity(roughness, "length", "--roughness")
     if sigma < 0:
         raise InputError("--roughness", "must be >= 0", 'e.g. "0.05 um"')
@@ -90,6 +94,7 @@ def lubrication(
                                        oil_volume_fraction=oil_fraction)
     # the static solution's limits (contact pressure, contact angle, speed, lift-off), as `static` reports them
     rep["warnings"] = list(getattr(res, "warnings", ()))
+    rep["assumed"] = assumed
     if as_json:
         typer.echo(json.dumps(rep))
     else:
@@ -127,7 +132,10 @@ def _print_friction(con, f: dict) -> None:
     """Friction torque and heat per source (trade units: mN·m, W)."""
     from rich.table import Table
 
-    t = Table(title=f"friction torque and heat (rotating ring, {f['lubrication_method']} for Palmgren's f0)")
+    from ..friction import METHOD_LABELS, MODEL_LABELS
+
+    t = Table(title=f"friction torque and heat (rotating ring, {METHOD_LABELS[f['lubrication_method']]} for "
+                    "Palmgren's f0)")
     for c in ("model", "source", "M mN·m", "P W"):
         t.add_column(c, justify="right")
 
@@ -144,11 +152,11 @@ def _print_friction(con, f: dict) -> None:
     row("Palmgren", "viscous M_v", "palmgren_viscous")
     row("Palmgren", "total", "palmgren_torque")
     for src in ("rolling", "spin", "sliding", "drag"):
-        row("physical", src, src)
-    row("physical", "total", "physical_torque")
+        row("physics-based", src, src)
+    row("physics-based", "total", "physical_torque")
     con.print(t)
     con.print(f"friction torque {f['friction_torque_N_m'] * 1e3:.2f} mN·m, heat {f['power_loss_W']:.1f} W "
-              f"({f['headline_model']})")
+              f"({MODEL_LABELS[f['headline_model']]})")
     for n in f["notes"]:
         con.print(f"[yellow]note:[/] {n}")
 
@@ -184,6 +192,10 @@ def _print_report(rep: dict, name: str) -> None:
         _print_friction(con, rep["friction"])
     for w in rep.get("warnings", ()):
         con.print(f"[yellow]warning:[/] {w}")
+    from ..lubrication import assumed_phrases
+
+    for line in assumed_phrases(rep.get("assumed") or {}):
+        con.print(f"[yellow]note:[/] {line}")
 
 
 def lubricants(as_json: JsonOpt = False):

@@ -14,7 +14,7 @@ import typer
 
 from ..errors import InputError
 from . import options
-from .console import announce_compilation, make_console
+from .console import announce_compilation, make_console, status_text
 from .options import (
     BearingArg,
     ControlOpt,
@@ -73,7 +73,7 @@ def static(
     b = load_bearing(bearing)
     loads = options.parse_loads(fa, fr, fz, moment, my)
     omega = options.parse_speed(speed)
-    lub, t = _operating_lubricant(lubricant, temperature)
+    lub, t, assumed = _operating_lubricant(lubricant, temperature, inlet=thermal)
     ec = _contamination(contamination)
     reliability_factor(reliability, "--reliability")
     rings = _ring_model(rings, b)
@@ -83,12 +83,9 @@ def static(
         if rings == "fe" or tilt != "free" or len(b.rows) != 1:
             raise InputError("--thermal", "the thermal operating point takes one row with rigid rings and a free tilt",
                              "drop --rings fe / --tilt fixed, or give a single-row bearing")
-        from ..lubricants import get_lubricant
         from ..thermal import ThermalSetup, thermal_operating_point
 
-        lub = lub if lub is not None else get_lubricant("iso-vg-68")
-        op = thermal_operating_point(b, loads, omega, lub, ThermalSetup() if t is None else
-                                     ThermalSetup(oil_inlet_temperature=t), control=control)
+        op = thermal_operating_point(b, loads, omega, lub, ThermalSetup(oil_inlet_temperature=t), control=control)
         res, t = op.result, op.temperatures["oil"]
         res.converged = bool(res.converged and op.converged)
     elif rings == "fe":
@@ -114,12 +111,13 @@ def static(
             d["power_loss_W"] = friction.get("power_loss_W")
         if op is not None:
             d["thermal"] = op.to_dict()
+        d["assumed"] = assumed
         typer.echo(json.dumps(d))
     else:
         if rings == "fe":
             make_console().print(f"rings: elastic (finite elements, docs/rings.md): {res.ring_iterations} offset "
                                  f"iterations, last change {res.ring_residual * 1e9:.2g} nm")
-        print_static(res, friction)
+        print_static(res, friction, assumed)
         if op is not None:
             temps = ", ".join(f"{k.replace('_', ' ')} {v - 273.15:.1f} degC" for k, v in op.temperatures.items())
             make_console().print(f"thermal operating point: {op.status} ({op.iterations} iterations, residual "
@@ -163,25 +161,24 @@ def _ring_model(value, bearing=None) -> str:
     return v
 
 
-def _operating_lubricant(lubricant, temperature):
-    """(Lubricant or None, temperature [K] or None) from the options; a lubricant needs a temperature."""
-    from ..errors import InputError
+def _operating_lubricant(lubricant, temperature, inlet=False, need_lubricant=False):
+    """(Lubricant or None, temperature [K] or None, assumed) from the options by the rule of
+    :func:`bearingsim.lubrication.operating_conditions`: either option alone makes the command use a lubricant,
+    and the one not given is assumed (and said so in the output).  With ``inlet`` (``--thermal``) a lubricant is
+    always used and ``--temperature`` is the oil inlet temperature, whose default is the thermal model's
+    (:class:`bearingsim.thermal.ThermalSetup`)."""
+    from ..lubrication import operating_conditions
     from ..units import parse_quantity
 
-    if lubricant is None:
-        if temperature is not None:
-            raise InputError("--temperature", "a temperature without --lubricant is not used",
-                             'give the lubricant too, e.g. --lubricant iso-vg-68 --temperature "70 degC"')
-        return None, None
-    if temperature is None:
-        raise InputError("--temperature", "the modified rating life and friction need the operating temperature",
-                         'e.g. --temperature "70 degC"')
-    from ..lubricants import get_lubricant
+    t = parse_quantity(temperature, "temperature", "--temperature") if temperature is not None else None
+    if inlet and t is None:
+        from ..thermal import ThermalSetup
 
-    lub = get_lubricant(lubricant, "--lubricant")
-    t = parse_quantity(temperature, "temperature", "--temperature")
-    lub.check_temperature(t, "--temperature")
-    return lub, t
+        lub, t, assumed = operating_conditions(lubricant, ThermalSetup().oil_inlet_temperature, need_lubricant=True,
+                                               lubricant_field="--lubricant", temperature_field="--temperature")
+        return lub, t, {**assumed, "oil_inlet_temperature_K": t}
+    return operating_conditions(lubricant, t, need_lubricant=inlet or need_lubricant, lubricant_field="--lubricant",
+                                temperature_field="--temperature")
 
 
 def _contamination(value: str):
@@ -256,8 +253,9 @@ def print_rating(con, res, friction=None) -> None:
                   + f", L_nmr = {hours_text(r['modified_reference_rating_life_hours'])}"
                   + (f" (a_ISO = {f['a_ISO_reference']:.3g})" if "a_ISO_reference" in f else ""))
     s0, s0p = r.get("static_safety_factor"), r.get("static_safety_factor_pressure")
-    con.print("static safety: s0 = C0/P0 = " + ("—" if s0 is None else f"{s0:.3g}") + flag("static_load_rating_N")
-              + " (ISO 76); from the maximum contact pressure, (4200 MPa / p_max)³ = "
+    c0_est = "; C0 estimated" if "static_load_rating_N" in est else ""
+    con.print("static safety: s0 = C0/P0 = " + ("—" if s0 is None else f"{s0:.3g}") + f" (ISO 76{c0_est})"
+              + "; from the maximum contact pressure, (4200 MPa / p_max)³ = "
               + ("—" if s0p is None else f"{s0p:.3g}"))
     for row in r.get("row_ratings") or ():
         lr, s0r = row["reference_rating_life_million_revolutions"], row["static_safety_factor_pressure"]
@@ -268,21 +266,28 @@ def print_rating(con, res, friction=None) -> None:
     if friction is not None:
         tq, pw = friction.get("friction_torque_N_m"), friction.get("power_loss_W")
         if tq is not None:
+            from ..friction import MODEL_LABELS
+
             con.print(f"friction torque {tq * 1e3:.4g} N·mm, power loss {pw:.4g} W "
-                      f"({friction.get('headline_model', 'palmgren')})")
+                      f"({MODEL_LABELS[friction.get('headline_model', 'palmgren')]})")
     for n in r.get("life_notes", ()):
         con.print(f"[dim]note:[/] {n}")
 
 
-def print_static(res, friction=None) -> None:
-    """Readable tables of a :class:`StaticResult` (engineering units for display only)."""
+def print_static(res, friction=None, assumed=None) -> None:
+    """Readable tables of a :class:`StaticResult` (engineering units for display only); ``assumed``: the inputs
+    :func:`bearingsim.lubrication.operating_conditions` filled in, one line each."""
     from rich.table import Table
 
     con = make_console()
     d = res.displacement
     con.print(f"[bold]{getattr(res.bearing, 'name', '')}[/]  speed {res.speed * 30 / math.pi:.0f} rpm, "
-              f"control {res.control}: {'converged' if res.converged else '[red]NOT CONVERGED[/]'} "
-              f"({res.status}; {res.iterations} iterations, residual {res.residual:.2e} N)")
+              f"control {res.control}: {status_text(res.converged, res.status, res.iterations, res.residual)}")
+    if assumed:
+        from ..lubrication import assumed_phrases
+
+        for line in assumed_phrases(assumed):
+            con.print(f"[yellow]note:[/] {line}")
     con.print(f"displacement: δx = {d[0] * 1e6:.4f} µm, δy = {d[1] * 1e6:.4f} µm, δz = {d[2] * 1e6:.4f} µm, "
               f"γy = {d[3] * 1e3:.5f} mrad, γz = {d[4] * 1e3:.5f} mrad")
     if getattr(res, "tilt_mode", "free") == "fixed" and res.reaction_moment is not None:
