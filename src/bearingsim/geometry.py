@@ -70,6 +70,7 @@ never recovered from the kernel vectors.
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -146,6 +147,34 @@ def row_vectors(bearing) -> np.ndarray:
     return np.array([r.vector(lp) for r in bearing.rows])
 
 
+#: the rings that can turn (the other one stands)
+ROTATING_RINGS = ("inner", "outer")
+
+
+def rotating_ring_of(bearing) -> str:
+    """``"inner"`` or ``"outer"``: the turning ring of a bearing of the rows protocol (every row's)."""
+    rings = {r.bearing.rotating_ring for r in bearing.rows}
+    if len(rings) != 1:
+        raise InputError("rotating_ring", "the rows of one bearing turn different rings",
+                         "give every row the same rotating_ring")
+    return rings.pop()
+
+
+def with_rotating_ring(bearing, ring: str):
+    """A copy of ``bearing`` (a :class:`BallBearing` or a bearing of rows) whose ``ring`` (``"inner"`` or
+    ``"outer"``) turns; the bearing itself when it already does."""
+    if ring not in ROTATING_RINGS:
+        raise InputError("rotating_ring", f"must be inner or outer, got {ring!r}",
+                         '"inner" (the shaft turns) or "outer" (the housing turns)')
+    if isinstance(bearing, BallBearing):
+        return bearing if bearing.rotating_ring == ring else dataclasses.replace(bearing, rotating_ring=ring)
+    if rotating_ring_of(bearing) == ring:
+        return bearing
+    rows = tuple(dataclasses.replace(r, bearing=dataclasses.replace(r.bearing, rotating_ring=ring))
+                 for r in bearing.rows)
+    return dataclasses.replace(bearing, rows=rows)
+
+
 @dataclass(frozen=True)
 class BallBearing:
     """A single-row ball bearing.
@@ -168,6 +197,9 @@ class BallBearing:
     static_load_rating : float  [N]  basic static load rating C₀ (ISO 76:2006; 0 when unknown)
     geometry_factor_f0 : float  [-]  factor f₀ of ISO 76:2006 table 1, used by ISO 281 for f₀F_a/C₀ (0 when unknown)
     fatigue_load_limit : float  [N]  fatigue load limit P_u (ISO 281:2007 §9.3; 0 when unknown)
+    rotating_ring : str  ``"inner"`` (the inner ring turns at the speed of a solve, the outer ring stands) or
+        ``"outer"`` (the outer ring turns, e.g. a wheel hub on a standing spindle); the ball speeds, centrifugal
+        force and gyroscopic moment follow from it (:func:`bearingsim.statics._kernels.ball_eval`)
     notes : dict  source of every number (the ``[sources]`` table of a file, field → text; a text starting with
         ``ESTIMATE`` or ``ASSUMED`` marks that field as estimated: :attr:`sources`, :attr:`estimated`)
     """
@@ -191,10 +223,14 @@ class BallBearing:
     static_load_rating: float = 0.0
     geometry_factor_f0: float = 0.0
     fatigue_load_limit: float = 0.0
+    rotating_ring: str = "inner"
     notes: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):
         self._check_types()
+        if self.rotating_ring not in ROTATING_RINGS:
+            raise InputError("rotating_ring", f"must be inner or outer, got {self.rotating_ring!r}",
+                             'rotating_ring = "inner" (the shaft turns) or "outer" (the housing turns)')
         d = self.ball_diameter
         if self.kind not in ("angular_contact", "deep_groove"):
             raise InputError("type", f"unknown bearing type {self.kind!r}",
@@ -430,6 +466,7 @@ class BallBearing:
         co = self.contact(1.0, False)
         p = np.zeros(rl.NPAR)
         p[rl.P_Z] = self.ball_count
+        p[rl.P_OROT] = 1.0 if self.rotating_ring == "outer" else 0.0
         p[rl.P_D] = d
         p[rl.P_DM] = self.pitch_diameter
         p[rl.P_RI] = ri

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..beam import circular_section, cowper_circular
 from ..errors import InputError
+from ..geometry import ROTATING_RINGS, with_rotating_ring
 from ..materials import Material, get_material
 
 #: names of the five nodal DOF, in order
@@ -129,7 +130,8 @@ class BearingSupport:
     bearing : BallBearing or BearingSystem  anything :func:`bearingsim.load_bearing` returns
     orientation : +1 or −1  +1: the bearing as defined (its contact angle as in its file); −1: mirrored in x
         (x → −x, γy → −γy, γz → −γz: a single angular contact row taking thrust the other way)
-    rotating_ring : ``"inner"`` (default: the shaft turns) or ``"outer"`` (the housing turns)
+    rotating_ring : ``"inner"`` (default: the shaft turns) or ``"outer"`` (the housing turns at the system's
+        speed and the shaft stands; the bearing is solved with its outer ring turning)
     control : raceway control of the Jones–Harris model, ``"outer"`` (default), ``"inner"`` or ``"auto"``
     housing_stiffness : None (rigid housing, default) or 5 / 5×5 stiffness of the outer ring's seat to ground
     preload_offset : float  [m]  axial displacement imposed on the outer ring (position preload: spacer or nut)
@@ -157,9 +159,11 @@ class BearingSupport:
         if self.orientation not in (1, -1) or isinstance(self.orientation, bool):
             raise InputError(f"{self.name}.orientation", f"must be +1 or -1, got {self.orientation!r}",
                              "+1: the contact angle as in the bearing file, -1: mirrored")
-        if self.rotating_ring not in ("inner", "outer"):
+        if self.rotating_ring not in ROTATING_RINGS:
             raise InputError(f"{self.name}.rotating_ring", f"must be inner or outer, got {self.rotating_ring!r}",
                              'use "inner" (shaft turns) or "outer" (housing turns)')
+        # the bearing turns the same ring: its ball speeds, centrifugal and gyroscopic terms follow
+        object.__setattr__(self, "bearing", with_rotating_ring(self.bearing, self.rotating_ring))
         if self.control not in ("outer", "inner", "auto"):
             raise InputError(f"{self.name}.control", f"unknown raceway control {self.control!r}",
                              "use outer, inner or auto")

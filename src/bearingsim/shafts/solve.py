@@ -474,9 +474,6 @@ def solve_shaft(system: ShaftSystem, speed: float | None = None, initial: np.nda
                 br = result_at(s.bearing, q_k, speed, s.control)
                 for wmsg in br.warnings:
                     warnings.append(f"{s.name}: {wmsg}")
-            if s.rotating_ring == "outer" and speed != 0.0:
-                warnings.append(f"{s.name}: the outer ring rotates; the bearing model turns the inner ring at the "
-                                "same relative speed (ball centrifugal and gyroscopic terms of inner-ring rotation)")
         a = lm.node_dofs(lm.support_node[k])
         b = lm.outer_dofs(k)
         supports.append(SupportResult(s.name, s.position, fs_k.copy(), (w[a] - w[b])[3:].copy(), q_k.copy(),

@@ -76,6 +76,7 @@ from .layout import (  # noqa: F401  (re-exported: the kernels read them as comp
     P_KI,
     P_KO,
     P_MASS,
+    P_OROT,
     P_PSI0,
     P_RI,
     P_RIC,
@@ -161,7 +162,7 @@ def rolling_angles(si, ci, so, co, di, do):
 
 
 @njit(cache=True, error_model="numpy")
-def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac):
+def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac, orot=0.0):
     """Residual, ring force and analytic derivatives for one ball.
 
     Parameters
@@ -171,6 +172,7 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
     ri, ro : (f − ½)D of inner and outer groove [m]; ki, ko [N/m^1.5]
     gam : D/d_m [-]; cg = J ω² d_m / D² [N]; cf = ½ m d_m ω² [N]
     lam_i, lam_o : gyroscopic-moment shares; inner_ctrl : 1 for inner control (sets β)
+    orot : 1 when the outer ring turns at ω and the inner ring stands (row parameter ``P_OROT``), else 0
     out : float[10]  ← R1, R2, Fx, Fr, Qi, Qo, di, do, G, Fc
         R = ball residual [N]; (Fx, Fr) = force of the inner ring on the ball [N]
     jac : float[5, 4] ← rows dR1, dR2, dFx, dFr, dG; columns d/d(x1, x2, a1, a2)
@@ -243,13 +245,29 @@ def ball_eval(x1, x2, a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_c
             s = math.nan
         s2 = s * s
         s3 = s2 * s
-        g = cg * t * po / s2
-        fc = cf * po * po / s2
-        g_t = cg * po / s2
-        g_po = cg * t * (pi - po) / s3
-        g_pi = -2.0 * cg * t * po / s3
-        f_po = 2.0 * cf * po * pi / s3
-        f_pi = -2.0 * cf * po * po / s3
+        # the cage's absolute orbit per unit ring speed: ω_m/ω = po/s with the inner ring turning, 1 − po/s =
+        # pi/s with the outer ring turning (kinematic inversion: the relative speeds are those of the inner ring
+        # at −ω, seen from the outer ring); the ball's spin relative to the cage then turns with +ω, so the
+        # gyroscopic moment J ω_R ω_m sin β changes sign (Harris & Kotzalas 2007 vol. 2 ch. 2, outer ring rotating)
+        if orot:
+            nn = pi
+            mm = po
+            sg = -1.0
+        else:
+            nn = po
+            mm = pi
+            sg = 1.0
+        g = sg * cg * t * nn / s2
+        fc = cf * nn * nn / s2
+        g_t = sg * cg * nn / s2
+        g_n = sg * cg * t * (mm - nn) / s3
+        g_m = -2.0 * sg * cg * t * nn / s3
+        f_n = 2.0 * cf * nn * mm / s3
+        f_m = -2.0 * cf * nn * nn / s3
+        if orot:
+            g_po, g_pi, f_po, f_pi = g_m, g_n, f_m, f_n
+        else:
+            g_po, g_pi, f_po, f_pi = g_n, g_m, f_n, f_m
         # partials with respect to (ksi, kci, kso, kco), including those through t
         po_t = kso / ao
         pi_t = ksi / ai
@@ -321,6 +339,7 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
     ro = par[P_RO]
     ki = par[P_KI]
     ko = par[P_KO]
+    orot = par[P_OROT]
     gam = par[P_D] / par[P_DM]
     l = math.sqrt(a1 * a1 + a2 * a2)
     dn = l - (ri + ro)
@@ -331,7 +350,7 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
             do = 0.5 * dn
         x[0] = (ro + do) * a1 / l
         x[1] = (ro + do) * a2 / l
-        ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+        ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac, orot)
         return True, 0
     # a start that keeps the outer contact loaded (centrifugal force pushes the ball out)
     lo = math.sqrt(x[0] * x[0] + x[1] * x[1])
@@ -346,7 +365,7 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
     scale = cf + 1.0
     it = 0
     conv = False
-    ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+    ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac, orot)
     r0 = math.hypot(out[0], out[1])
     xs0 = 0.0
     xs1 = 0.0
@@ -364,7 +383,7 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
             # search on round-off would only waste evaluations)
             x[0] += dx0
             x[1] += dx1
-            ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+            ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac, orot)
             conv = True
             break
         # limit the step to a fraction of the groove-centre distance
@@ -391,7 +410,7 @@ def ball_solve(a1, a2, par, cg, cf, lam_i, lam_o, inner_ctrl, x, out, jac, tol, 
             tht = th0 + lam * dth
             x[0] = lt * math.sin(tht)
             x[1] = lt * math.cos(tht)
-            ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+            ball_eval(x[0], x[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac, orot)
             r1 = math.hypot(out[0], out[1])
             if r1 <= (1.0 - 1e-4 * lam) * r0 or r1 <= tol * scale:
                 break
@@ -1009,7 +1028,8 @@ def ring_assemble_coupled(rows, qv, omega, lam_state, xb, loads, res, resc, kmat
             single = False
             det = 0.0
             if xl[0] * xl[0] + xl[1] * xl[1] > ro * ro:
-                ball_eval(xl[0], xl[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac)
+                ball_eval(xl[0], xl[1], a1, a2, ri, ro, ki, ko, gam, cg, cf, lam_i, lam_o, inner_ctrl, out, jac,
+                          par[P_OROT])
                 det = jac[0, 0] * jac[1, 1] - jac[0, 1] * jac[1, 0]
                 single = out[4] > 0.0 and out[5] > 0.0 and det != 0.0 and math.isfinite(det)
             e0 = 0.0

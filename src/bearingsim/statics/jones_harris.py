@@ -22,7 +22,7 @@ from numba import njit
 
 from ..contact import hertz
 from ..errors import InputError, InputTypeError
-from ..geometry import BallBearing
+from ..geometry import BallBearing, rotating_ring_of, with_rotating_ring
 from ..units import api_quantity
 from . import _kernels as kn
 from .axial import solve_thrust
@@ -300,6 +300,7 @@ class StaticResult:
             "iterations": int(self.iterations),
             "residual_N": float(self.residual),
             "speed_rad_s": float(self.speed),
+            "rotating_ring": rotating_ring_of(self.bearing),
             "control": self.control,
             "loads": {"fa_N": self.loads.fa, "fr_y_N": self.loads.fr_y, "fr_z_N": self.loads.fr_z,
                       "m_y_N_m": self.loads.m_y, "m_z_N_m": self.loads.m_z},
@@ -714,14 +715,16 @@ def _solve_fixed_tilt(bearing, loads: Loads, speed: float, control: str, initial
 
 
 def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str = "outer",
-          initial: np.ndarray | None = None, tilt: str = "free", misalignment=None) -> StaticResult:
+          initial: np.ndarray | None = None, tilt: str = "free", misalignment=None,
+          rotating_ring: str | None = None) -> StaticResult:
     """Quasi-static equilibrium of ``bearing`` under ``loads`` at inner-ring ``speed`` [rad/s].
 
     Parameters
     ----------
     bearing : BallBearing or BearingSystem (the rows protocol, :mod:`bearingsim.geometry`)
     loads : Loads  [N, N·m] (each load a float in SI, a string with its unit or a pint Quantity)
-    speed : float  [rad/s]  inner-ring speed (outer ring fixed); the sign gives the sense of rotation of
+    speed : float  [rad/s]  speed of the turning ring (the inner one unless ``rotating_ring`` or the bearing's
+        own ``rotating_ring`` says outer; the other ring stands); the sign gives the sense of rotation of
         the balls and cage (the equilibrium depends on |speed| only).  A bare number is rad/s (157.08 is
         1500 rpm); ``"1500 rpm"`` or a pint Quantity is converted (:func:`bearingsim.units.api_quantity`)
     control : ``"outer"``, ``"inner"`` or ``"auto"`` raceway control (auto: Jones' criterion per ball, evaluated at
@@ -734,6 +737,8 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
         input, docs/life.md) and the moment that holds it is returned as ``reaction_moment``
     misalignment : (γy, γz) [rad] of the inner ring relative to the outer for ``tilt="fixed"`` (floats in rad,
         or strings with a unit such as ``"2 arcmin"``)
+    rotating_ring : ``"inner"`` or ``"outer"``: the ring that turns at ``speed`` (None: the bearing's own,
+        :attr:`bearingsim.geometry.BallBearing.rotating_ring`)
 
     Returns a :class:`StaticResult`; ``converged`` is False (with ``status`` and ``residual``)
     when no equilibrium was found — never a silently wrong number.  A result is called converged
@@ -744,6 +749,8 @@ def solve(bearing, loads: Loads | None = None, speed: float = 0.0, control: str 
     from ..limits import check_speed, static_warnings
 
     _check_bearing(bearing)
+    if rotating_ring is not None:
+        bearing = with_rotating_ring(bearing, rotating_ring)
     if loads is None:
         loads = Loads()
     elif not isinstance(loads, Loads):
@@ -887,9 +894,11 @@ def _report(res: StaticResult) -> None:
 def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.ndarray, omega: float) -> dict:
     """Per-ball quantities from the kernel's output arrays (SI), including Jones' ball speeds.
 
-    ``omega`` is the signed inner-ring speed [rad/s]: the ball speeds are proportional to it (Jones'
-    relations are linear in ω), so a negative speed gives negative orbital speeds (the cage turns with
-    the shaft) and the spin reverses with it.  ``orbital_speed_rad_s`` ω_m, ``spin_speed_rad_s`` ω_R and
+    ``omega`` is the signed speed of the turning ring [rad/s] (the inner ring, or the outer one where the row's
+    ``P_OROT`` is 1): the ball speeds are proportional to it (Jones' relations are linear in ω), so a negative
+    speed gives negative orbital speeds (the cage turns with the turning ring) and the spin reverses with it.
+    With the outer ring turning, the orbit is ω − ω_m(inner ring at ω) and the spin relative to the cage that of
+    the inner ring at −ω (kinematic inversion).  ``orbital_speed_rad_s`` ω_m, ``spin_speed_rad_s`` ω_R and
     ``pitch_angle_rad`` β follow the sign convention stated in :func:`._kernels.kinematics`: relative
     to the cage, the ball turns at ω_R (cos β, −sin β) in the row's (axial ξ, radial r) frame."""
     cols = {k: [] for k in ("row", "azimuth_rad", "inner_contact_angle_rad", "outer_contact_angle_rad",
@@ -908,6 +917,8 @@ def ball_table(rows: np.ndarray, ballout: np.ndarray, xb: np.ndarray, lam: np.nd
             kin = kn.kinematics(ksi, kci, kso, kco, gam)
             ctrl = int(lam[r, j])
             wm, wr, beta = kin[3 * ctrl] * omega, kin[3 * ctrl + 1] * omega, kin[3 * ctrl + 2]
+            if par[kn.P_OROT]:  # the outer ring turns at ω: the same relative speeds as the inner ring at −ω
+                wm, wr = omega - wm, -wr
             cols["row"].append(r)
             cols["azimuth_rad"].append(par[kn.P_PSI0] + 2 * math.pi * j / z)
             cols["inner_contact_angle_rad"].append(math.atan2(si, ci))

@@ -41,6 +41,7 @@ P_CPO          18    outer p_max per Q^(1/3)                                    
 P_CAI          19    inner a E(κ) per Q^(1/3) (raceway-control criterion, Jones 1960)             [m/N^(1/3)]
 P_CAO          20    outer a E(κ) per Q^(1/3)                                                     [m/N^(1/3)]
 P_AXOFF        21    axial preload offset e of the inner groove centres (local, + = interference) [m]
+P_OROT         22    1: the outer ring turns at ω, the inner stands; 0: the inner ring turns       [-]
 =============  ====  ==========================================================================  ============
 
 Raceway control (argument ``control`` of the ring kernels): :data:`CONTROL_OUTER` (λ_o = 2, λ_i = 0),
@@ -79,7 +80,8 @@ P_CPO = 18  #: p_max = CPO Q^(1/3), outer [Pa/N^(1/3)]
 P_CAI = 19  #: a E(κ) = CAI Q^(1/3), inner [m/N^(1/3)] (raceway-control criterion)
 P_CAO = 20  #: a E(κ) = CAO Q^(1/3), outer [m/N^(1/3)]
 P_AXOFF = 21  #: axial preload offset e of the inner groove centres (local) [m]
-NPAR = 22  #: length of the row-parameter vector
+P_OROT = 22  #: 1 when the outer ring turns (inner ring standing), 0 when the inner ring turns [-]
+NPAR = 23  #: length of the row-parameter vector
 
 # ---- raceway control ----------------------------------------------------------------------------------------
 CONTROL_OUTER = 0  #: outer-raceway control: λ_o = 2, λ_i = 0
