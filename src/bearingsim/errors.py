@@ -30,7 +30,13 @@ class ExitCode(enum.IntEnum):
 
 
 class BearingSimError(Exception):
-    """Base class of every error raised on purpose by bearingsim."""
+    """Base class of every error raised on purpose by bearingsim.
+
+    Parameters
+    ----------
+    *args : str
+        The message, as for :class:`Exception`.
+    """
 
 
 class InputError(BearingSimError, ValueError):
@@ -57,7 +63,17 @@ class InputError(BearingSimError, ValueError):
 
 
 class ConvergenceError(BearingSimError, RuntimeError):
-    """A solver did not converge where a converged answer was required."""
+    """A solver did not converge where a converged answer was required.
+
+    Parameters
+    ----------
+    message : str
+        Which solver did not converge, and why.
+    residual : float
+        The residual it ended with (NaN when unknown); kept as ``self.residual``.
+    iterations : int
+        The iterations it took; kept as ``self.iterations``.
+    """
 
     def __init__(self, message: str, *, residual: float = float("nan"), iterations: int = 0):
         self.residual = residual

@@ -319,9 +319,35 @@ def hysteresis_estimate(t, load, response, frequency: float, level: float, n_har
                         min_cycles: int = 6, tolerance: float = 1e-3, first_cycle: int | None = None) -> LoopEstimate:
     """Loop width W_H, loop area, phase lag and compliance of ``response`` against a periodic ``load``.
 
-    t [s], load [N m] (or any load unit), response [rad] (or any): samples of one run; ``frequency`` [Hz]
-    of the load; ``level`` the load at which W_H is read ([S1] Fig. 8: 300 N m).
+    Parameters
+    ----------
+    t : array of float
+        Sample times of one run [s].
+    load : array of float
+        The periodic load at ``t`` [N m] (or any load unit).
+    response : array of float
+        The response at ``t`` [rad] (or any unit).
+    frequency : float
+        Load frequency [Hz].
+    level : float
+        The load at which W_H is read ([S1] Fig. 8: 300 N m), in the unit of ``load``.
+    n_harmonics : int
+        N, the highest harmonic of the load frequency fitted per cycle.
+    min_cycles : int
+        Usable cycles needed for a complete estimate.
+    tolerance : float
+        τ of the periodicity criterion (below).
+    first_cycle : int or None
+        The first cycle used; None: chosen by the periodicity criterion.
 
+    Returns
+    -------
+    LoopEstimate
+        W_H per cycle with its mean and 95 % interval, loop area, phase lag, compliance, the cycles used and a
+        ``status`` (below).
+
+    Notes
+    -----
     Method, per load cycle k (exact period 1/f, boundaries t[0] + k/f, :func:`fit_cycles`):
 
     1. least-squares fit of harmonics 0…N of f (N = ``n_harmonics``) to the response and to the load;

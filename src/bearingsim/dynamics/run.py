@@ -118,11 +118,14 @@ def simulate(case, out: str | Path | None = None, resume: bool = False, progress
         samples are interpolated in the steps, and the trajectory does not depend on the output interval (False:
         every output time is a step's end, as with the other integrators)
 
-    Returns :class:`Results`; its ``summary`` holds this call's segment — ``simulated_seconds`` [s], ``steps``,
-    ``rejected_steps``, ``wall_seconds`` [s] and ``wall_per_simulated_second`` (a resumed call: from the
-    checkpoint at ``resumed_at_seconds`` [s], else None) — and the whole run's ``run_simulated_seconds`` [s],
-    ``run_steps`` and ``run_rejected_steps``.  On a diverging step or when every ball has separated
-    the data so far are saved and :class:`SimulationError` is raised.
+    Returns
+    -------
+    Results
+        Its ``summary`` holds this call's segment — ``simulated_seconds`` [s], ``steps``,
+        ``rejected_steps``, ``wall_seconds`` [s] and ``wall_per_simulated_second`` (a resumed call: from the
+        checkpoint at ``resumed_at_seconds`` [s], else None) — and the whole run's ``run_simulated_seconds`` [s],
+        ``run_steps`` and ``run_rejected_steps``.  On a diverging step or when every ball has separated
+        the data so far are saved and :class:`SimulationError` is raised.
     """
     from .case import Case, load_case
 

@@ -35,7 +35,13 @@ _SLEEVE_KEYS = {"housing": "outer_diameter", "shaft": "inner_diameter"}
 
 
 def catalog_names() -> list[str]:
-    """Names of the built-in catalogue entries."""
+    """Names of the built-in catalogue entries.
+
+    Returns
+    -------
+    list of str
+        The designations :func:`load_bearing` accepts (``"6205"``, ``"skf-7011-cdga-hc"``, ``"hub-seed001"`` …).
+    """
     root = resources.files("bearingsim") / "catalog"
     return sorted(p.name[:-5] for p in root.iterdir() if p.name.endswith(".toml"))
 
@@ -158,8 +164,17 @@ def unknown_bearing_fix(name: str) -> str:
 def load_bearing(spec: str | Path):
     """Load a bearing from a catalogue name or a TOML path.
 
-    Returns a :class:`~bearingsim.geometry.BallBearing` (or, for arrangement files, the
-    :class:`~bearingsim.statics.arrangements.BearingSystem` read by :mod:`bearingsim.io.arrangement`).
+    Parameters
+    ----------
+    spec : str or Path
+        A catalogue designation (case-insensitive, :func:`catalog_names`) or the path of a bearing or bearing-set
+        TOML file (quantities as strings with units).
+
+    Returns
+    -------
+    BallBearing or BearingSystem
+        A :class:`~bearingsim.geometry.BallBearing` (or, for arrangement files, the
+        :class:`~bearingsim.statics.arrangements.BearingSystem` read by :mod:`bearingsim.io.arrangement`).
     """
     if hasattr(spec, "row_vectors"):  # the rows protocol (bearingsim.geometry)
         return spec  # already a bearing (or bearing system)

@@ -163,7 +163,18 @@ def _case_from_dict(data: dict, base: Path | None) -> Case:
 
 
 def load_case(path) -> Case:
-    """Read a case TOML file."""
+    """Read a case TOML file.
+
+    Parameters
+    ----------
+    path : str or Path
+        A dynamic case file (``examples/*.toml``): bearing, loads and speed histories, lubricant, integrator.
+
+    Returns
+    -------
+    Case
+        The case for :func:`bearingsim.simulate`; relative paths in the file resolve from its folder.
+    """
     p = Path(path)
     return case_from_dict(read_toml(p, "case"), base=p.parent)
 

@@ -97,7 +97,21 @@ def library() -> dict[str, Lubricant]:
 
 
 def get_lubricant(spec: str | Path | Lubricant, fname: str = "lubricant") -> Lubricant:
-    """A lubricant from the library by name, or from a TOML file path."""
+    """A lubricant from the library by name, or from a TOML file path.
+
+    Parameters
+    ----------
+    spec : str, Path or Lubricant
+        A library name (``bearingsim lubricants`` lists them, e.g. ``"iso-vg-68"``), the path of a lubricant TOML
+        file, or a Lubricant (returned as it is).
+    fname : str
+        The field named in the error message when ``spec`` is not a lubricant.
+
+    Returns
+    -------
+    Lubricant
+        Viscosity–temperature (ASTM D341), pressure–viscosity (Roelands) and density data, SI.
+    """
     if isinstance(spec, Lubricant):
         return spec
     if not isinstance(spec, (str, Path)):

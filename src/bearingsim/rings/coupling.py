@@ -378,14 +378,34 @@ def solve(bearing, loads: "jh.Loads | None" = None, speed: float = 0.0, control:
           initial_offsets=None):
     """Quasi-static equilibrium of ``bearing`` with elastic rings (module docstring).
 
-    rings : ``"rigid"`` (the rigid-ring :func:`bearingsim.statics.jones_harris.solve`, unchanged), ``"fe"``
-        (coefficients from :func:`ring_model` with its defaults, cached on disk) or an :class:`ElasticRings`
-    tol : largest change of a groove-centre offset accepted as the fixed point [m]
-    initial_offsets : float[n_balls, 2] start of the offsets [m] (e.g. a neighbouring point's; default zero)
+    Parameters
+    ----------
+    bearing : BallBearing or BearingSystem
+        The bearing (single rows, sets and double-row units with a shared outer ring).
+    loads : Loads or None
+        Loads on the inner ring at the load point [N, N·m]; None: no load.
+    speed : float
+        Inner-ring speed [rad/s].
+    control : str
+        Raceway control, ``"outer"``, ``"inner"`` or ``"auto"`` (as :func:`bearingsim.solve`).
+    rings : str or ElasticRings
+        ``"rigid"`` (the rigid-ring :func:`bearingsim.statics.jones_harris.solve`, unchanged), ``"fe"``
+        (coefficients from :func:`ring_model` with its defaults, cached on disk) or an :class:`ElasticRings`.
+    initial : float[5] or None
+        Start of the ring displacement (δx, δy, δz, γy, γz) [m, rad]; None: the Jones–Harris initial guess.
+    tol : float
+        Largest change of a groove-centre offset accepted as the fixed point [m].
+    maxit : int
+        Cap on the fixed-point iterations between the ring offsets and the Jones–Harris solve.
+    initial_offsets : float[n_balls, 2] or None
+        Start of the offsets [m] (e.g. a neighbouring point's; default zero).
 
-    Returns a :class:`bearingsim.statics.jones_harris.StaticResult` with, in addition, ``ring_model``
-    ("rigid" or "fe"), ``ring_offsets`` float[n_balls, 2] (ΔA₁, ΔA₂) [m], ``ring_iterations`` and
-    ``ring_residual`` (the last offset change [m]); ``stiffness`` includes the rings' compliance.
+    Returns
+    -------
+    StaticResult
+        A :class:`bearingsim.statics.jones_harris.StaticResult` with, in addition, ``ring_model``
+        ("rigid" or "fe"), ``ring_offsets`` float[n_balls, 2] (ΔA₁, ΔA₂) [m], ``ring_iterations`` and
+        ``ring_residual`` (the last offset change [m]); ``stiffness`` includes the rings' compliance.
     """
     if isinstance(rings, str):
         if rings not in RING_MODELS:

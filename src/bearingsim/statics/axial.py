@@ -87,11 +87,24 @@ def axial_stiffness_closed_form(alpha: float, free_angle: float, z: int, kn: flo
 
 
 def solve_thrust(bearing, fa: float, method: str = "bracketed") -> ThrustSolution:
-    """Contact angle, deflection and axial stiffness of ``bearing`` under thrust ``fa`` [N] (a float in N, a string
-    with its unit or a pint Quantity: :func:`bearingsim.units.api_quantity`).
+    """Contact angle, deflection and axial stiffness of ``bearing`` under thrust ``fa`` (the [S0] model without
+    inertia, [S0] §2.1). K_n is evaluated at α₀ (see :attr:`BallBearing.contact_constants`).
 
-    ``method`` is ``"bracketed"`` (Brent, always converges) or ``"fixed_point"`` ([S0] eq. 4).
-    K_n is evaluated at α₀ (see :attr:`BallBearing.contact_constants`).
+    Parameters
+    ----------
+    bearing : BallBearing
+        A single angular contact row.
+    fa : float, str or pint.Quantity
+        Centric thrust load [N] (a float in N, a string with its unit or a pint Quantity:
+        :func:`bearingsim.units.api_quantity`).
+    method : str
+        ``"bracketed"`` (Brent, always converges) or ``"fixed_point"`` ([S0] eq. 4).
+
+    Returns
+    -------
+    ThrustSolution
+        Loaded contact angle [rad], axial deflection [m], ball load [N] and the closed-form axial stiffness
+        Ca = dFa/dδa [N/m].
     """
     import numbers
 

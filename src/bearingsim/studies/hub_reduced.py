@@ -309,28 +309,51 @@ def reduced_wh(case_or_bearing, speed_kmh: float, frequency_hz: float, level: fl
                orbit: bool = True) -> dict:
     """W_H of the reduced traction-lag model (module docstring) and the mechanism's force and energy bounds.
 
-    case_or_bearing : a dynamic case (:class:`bearingsim.dynamics.case.Case`: bearing, in-phase sine loads,
-        lubricant, temperature) or a bearing (the hub tie of :mod:`.hub_static`, M̂ = 600 N m; then give
+    Parameters
+    ----------
+    case_or_bearing : Case or bearing
+        A dynamic case (:class:`bearingsim.dynamics.case.Case`: bearing, in-phase sine loads, lubricant,
+        temperature) or a bearing (the hub tie of :mod:`.hub_static`, M̂ = 600 N m; then give
         ``lubricant``/``temperature`` or ``creep_slope``).
-    speed_kmh : vehicle speed [km/h] (shaft speed over the tyre radius of :mod:`.hub_static`);
-    frequency_hz : load frequency [Hz]; level : moment at which W_H is read [N m];
-    creep_slope : κ = dμ/ds at small slip [-] (None: the film-elastic slope per ball and moment; "kernel": the
+    speed_kmh : float
+        Vehicle speed [km/h] (shaft speed over the tyre radius of :mod:`.hub_static`).
+    frequency_hz : float
+        Load frequency [Hz].
+    level : float
+        Moment at which W_H is read [N m].
+    creep_slope : float, "kernel" or None
+        κ = dμ/ds at small slip [-] (None: the film-elastic slope per ball and moment; "kernel": the
         spin-softened slope of the dynamic model's traction kernel per ball, :func:`kernel_creep_slope` at the
-        mean moment, needs a case);
-    mu_max : traction cap [-]; cycles : load cycles on the time grid (the balls orbit over them; the last one is
-    solved for its periodic lag and read); steps_per_cycle : time steps per cycle (exponential update of the
-    linear lag, exact for τ and v constant over a step); max_cycles : cap on the cycles integrated for the
-    start-up; orbit : the balls orbit at the cage speed (False: frozen at their azimuths, to isolate the lag).
+        mean moment, needs a case).
+    mu_max : float
+        Traction cap [-].
+    cycles : int
+        Load cycles on the time grid (the balls orbit over them; the last one is solved for its periodic lag and
+        read).
+    steps_per_cycle : int
+        Time steps per cycle (exponential update of the linear lag, exact for τ and v constant over a step).
+    lubricant, temperature : name or Lubricant, float
+        With a bearing: the lubricant and its temperature [K] of the film-elastic slope.
+    n_table : int
+        Points of the quasi-static table along the load path (:func:`static_table`) the ball loads are
+        interpolated in.
+    max_cycles : int
+        Cap on the cycles integrated for the start-up.
+    orbit : bool
+        The balls orbit at the cage speed (False: frozen at their azimuths, to isolate the lag).
 
-    Returns a dict (SI): ``wh`` [rad], ``phase_lag`` [rad], ``loop_area`` [J], ``tau`` [s] (median over the
-    loaded balls and the cycle), ``tau_rows`` [s] per bearing row, ``omega_tau`` (2π f τ), ``creep_slope``
-    (median κ used), ``bound_force`` and ``bound_energy`` [rad], ``sliding_work`` [J per cycle at μ_max],
-    ``saturated_fraction`` (share of ball-steps at the μ_max cap), ``dissipated`` [J] (sliding work of the model
-    over the cycle read, ∮ −Σ T (v + ė) dt), ``tilt_work`` [J] (∮ −Σ T v dt, the part that passes through the
-    tilt and must equal ``loop_area`` to first order; the rest, ∮ Σ k_t e ė dt = −∮ Σ ½ e² dk_t, is exchanged with
-    the varying normal loads, which the model does not feed back to the ring), ``compliance`` [rad/(N m)] at
-    ``level``, ``cycles`` (integrated), ``settled`` (exp(−t/τ_max) left of the start-up at the last cycle),
-    ``wall_seconds``.
+    Returns
+    -------
+    dict
+        SI: ``wh`` [rad], ``phase_lag`` [rad], ``loop_area`` [J], ``tau`` [s] (median over the
+        loaded balls and the cycle), ``tau_rows`` [s] per bearing row, ``omega_tau`` (2π f τ), ``creep_slope``
+        (median κ used), ``bound_force`` and ``bound_energy`` [rad], ``sliding_work`` [J per cycle at μ_max],
+        ``saturated_fraction`` (share of ball-steps at the μ_max cap), ``dissipated`` [J] (sliding work of the model
+        over the cycle read, ∮ −Σ T (v + ė) dt), ``tilt_work`` [J] (∮ −Σ T v dt, the part that passes through the
+        tilt and must equal ``loop_area`` to first order; the rest, ∮ Σ k_t e ė dt = −∮ Σ ½ e² dk_t, is exchanged with
+        the varying normal loads, which the model does not feed back to the ring), ``compliance`` [rad/(N m)] at
+        ``level``, ``cycles`` (integrated), ``settled`` (exp(−t/τ_max) left of the start-up at the last cycle),
+        ``wall_seconds``.
     """
     t_wall = time.perf_counter()
     for name, v in (("speed_kmh", speed_kmh), ("frequency_hz", frequency_hz)):
