@@ -123,6 +123,18 @@ def parse_grid(spec, dimension: str, field: str) -> np.ndarray:
 
 
 # ---- blocks ------------------------------------------------------------------------------------
+def block_shape(shape: tuple, chunk_points: int) -> tuple[int, ...]:
+    """The shape of the first (and largest) block of :func:`_blocks`: the last dimension up to ``chunk_points``,
+    then as many whole rows, planes, ... as fit."""
+    sizes = []
+    room = max(1, int(chunk_points))
+    for n in reversed(shape):
+        r = max(1, min(int(n), room))
+        sizes.append(r)
+        room = max(1, room // r)
+    return tuple(sizes[::-1])
+
+
 def _blocks(shape: tuple, chunk_points: int):
     """Rectangular blocks of the grid (tuples of slices, one per dimension) of at most ``chunk_points``
     points: the last dimension is split first, then as many whole rows of it as fit, then whole planes,
@@ -130,13 +142,7 @@ def _blocks(shape: tuple, chunk_points: int):
     executor), so every executor solves the same blocks and returns the same numbers."""
     if len(shape) == 0:
         return [()]
-    sizes = []
-    room = max(1, int(chunk_points))
-    for n in reversed(shape):
-        r = max(1, min(n, room))
-        sizes.append(r)
-        room = max(1, room // r)
-    sizes = sizes[::-1]
+    sizes = block_shape(shape, chunk_points)
     starts = [range(0, n, r) for n, r in zip(shape, sizes)]
     out = []
     for idx in np.ndindex(*[len(st) for st in starts]):
@@ -288,19 +294,22 @@ def _block_var(block_res: dict, key: str):
     return block_res[key]
 
 
-def _schema(dims: list, shape: tuple, axes: dict) -> tuple[dict, list]:
+def _schema(dims: list, shape: tuple, axes: dict, block: tuple | None = None) -> tuple[dict, list]:
     """Dimensions and variables of a map (:class:`bearingsim.io.netcdf.Variable`): the grid axes (a
-    dimension each when gridded, else a scalar coordinate), the ``dof`` labels and :data:`_VARS`."""
+    dimension each when gridded, else a scalar coordinate), the ``dof`` labels and :data:`_VARS`, chunked as the
+    solver's ``block`` (:func:`block_shape`; default: the whole grid) with at most
+    :data:`bearingsim.io.netcdf.MAX_CHUNK_BYTES` per chunk (:func:`bearingsim.io.netcdf.capped_chunks`)."""
     dimensions = dict(zip(dims, shape)) | {"dof": 5, "dof2": 5}
     # a speed axis is stored in rad/s (SI) and tells readers the unit people use (rpm)
     variables = [nc.Variable(name, (name,) if name in dims else (), u,
                              attrs={"units_display": display_unit(u)[0]} if u == "rad/s" else {})
                  for name, _, u in AXES]
     variables += [nc.Variable("dof", ("dof",), dtype=str), nc.Variable("dof2", ("dof2",), dtype=str)]
-    chunk = tuple(1 for _ in dims[:-2]) + tuple(shape[-2:])
+    block = tuple(shape) if block is None else tuple(block)
     for name, (_, extra, dt, u, long) in _VARS.items():
         variables.append(nc.Variable(name, tuple(dims) + extra, u, long, dt, _var_attrs(name),
-                                     (chunk + (5,) * len(extra)) if dims else None))
+                                     nc.capped_chunks(block, (5,) * len(extra), np.dtype(dt).itemsize, shape=shape)
+                                     if dims else None))
     return dimensions, variables
 
 
@@ -313,12 +322,16 @@ class _MapSink:
     """Where the blocks of a map go: a netCDF file (:class:`bearingsim.io.netcdf.NetCDFWriter`, streamed to a
     temporary file and renamed at the end) when ``path`` is given, else arrays in memory."""
 
-    def __init__(self, path, dims, shape, axes, attrs):
+    def __init__(self, path, dims, shape, axes, attrs, block=None, notify=None):
         self.dims, self.shape, self.axes, self.attrs = dims, shape, axes, attrs
-        self.dimensions, self.variables = _schema(dims, shape, axes)
+        self.dimensions, self.variables = _schema(dims, shape, axes, block)
         self.file = None
         self.data = None
         if path is not None:
+            need = nc.expected_size(self.dimensions, self.variables)
+            if notify is not None:
+                notify(f"{int(np.prod(shape)):,} points: the map file {path} will take {nc.size_text(need)}")
+            _check_free_space(Path(path), need)
             self.file = nc.NetCDFWriter(path, dims=self.dimensions, variables=self.variables,
                                         values=_coordinates(dims, axes), attrs=attrs, error=_write_error)
         else:
@@ -354,9 +367,73 @@ class _MapSink:
         return nc.to_xarray(self.variables, _coordinates(self.dims, self.axes) | self.data, self.attrs, coords)
 
 
+#: room kept free beside a map's values for the file's header and chunk index [bytes]
+_HEADROOM = 16 * 2**20
+
+
+def _check_free_space(path: Path, need: int) -> None:
+    """An :class:`InputError` on ``out`` when the folder of ``path`` has less free space than the map's ``need``
+    bytes (and :data:`_HEADROOM`), before anything is written (a folder that does not exist yet: no check here)."""
+    import shutil
+
+    limit = _file_size_limit()
+    if limit is not None and need > limit:
+        raise InputError("out", f"the map needs {nc.size_text(need)} and this process may write files of at most "
+                         f"{nc.size_text(limit)} (ulimit -f)", "raise the limit (ulimit -f) or use fewer points; "
+                         "nothing was written")
+    try:
+        free = shutil.disk_usage(path.parent).free
+    except OSError:
+        return
+    if need + _HEADROOM > free:
+        raise InputError("out", f"the map needs {nc.size_text(need)} and {str(path.parent)!r} has "
+                         f"{nc.size_text(free)} free", "free disk space, write to another folder or use fewer points; "
+                         "nothing was written")
+
+
+def _file_size_limit() -> int | None:
+    """The largest file this process may write (RLIMIT_FSIZE, ``ulimit -f``) [bytes], None when unlimited."""
+    try:
+        import resource
+
+        soft = resource.getrlimit(resource.RLIMIT_FSIZE)[0]
+    except (ImportError, OSError, ValueError):
+        return None
+    return None if soft == resource.RLIM_INFINITY else int(soft)
+
+
 def _write_error(final: Path, exc: BaseException) -> InputError:
-    return InputError("out", f"cannot write the map {str(final)!r} ({type(exc).__name__}: {exc})",
-                      "check that the folder exists, is writable and has free space; nothing was written")
+    """The one-line error of a failed write of the map ``final``, naming its cause: the errno of an OSError
+    (full disk, permissions), a full disk seen after a library error (HDF5 reports ENOSPC as "NetCDF: HDF
+    error"), else the netCDF library's own message."""
+    import errno
+    import shutil
+
+    what = f"cannot write the map {str(final)!r}"
+    code = getattr(exc, "errno", None)
+    limit = _file_size_limit()
+    if code == errno.EFBIG or (limit is not None and not isinstance(exc, OSError)):
+        return InputError("out", f"{what}: past the file-size limit of this process, {nc.size_text(limit or 0)} "
+                          f"(ulimit -f; {type(exc).__name__}: {exc})",
+                          "raise the limit (ulimit -f) or use fewer points; nothing was written")
+    if code in (errno.ENOSPC, errno.EDQUOT):
+        return InputError("out", f"{what}: the disk is full ({exc})",
+                          "free disk space or write to another folder; nothing was written")
+    if code in (errno.EACCES, errno.EPERM, errno.EROFS):
+        return InputError("out", f"{what}: permission denied ({exc})",
+                          "choose a folder you can write to; nothing was written")
+    if code in (errno.ENOENT, errno.ENOTDIR):
+        return InputError("out", f"{what}: the folder does not exist ({exc})",
+                          "create the folder or give another path; nothing was written")
+    try:
+        full = shutil.disk_usage(final.parent).free < _HEADROOM
+    except OSError:
+        full = False
+    if full:
+        return InputError("out", f"{what}: the disk is full ({type(exc).__name__}: {exc})",
+                          "free disk space or write to another folder; nothing was written")
+    return InputError("out", f"{what}: the netCDF library failed ({type(exc).__name__}: {exc})",
+                      "nothing was written; report it with the command line (BEARINGSIM_DEBUG=1 shows where)")
 
 
 # ---- executors -----------------------------------------------------------------------------------
@@ -572,7 +649,7 @@ class _QuietDistributed:
 def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.0, preload=None,
              control: str = "outer", out: str | Path | None = None, workers: int | None = None,
              scheduler=None, chunk_points: int = 2000, progress: bool = False, scheduler_timeout: float = 3.0,
-             worker_timeout: float = 60.0, rings=None):
+             worker_timeout: float = 60.0, rings=None, notify=None):
     """Quasi-static map of ``bearing`` over a grid → :class:`xarray.Dataset`.
 
     Parameters
@@ -598,6 +675,8 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
         point is solved by :func:`bearingsim.rings.coupling.solve`), an
         :class:`bearingsim.rings.coupling.ElasticRings`, or None: the bearing file's ``[rings]`` model (rigid
         without one).  The output's attribute ``rings`` names the model.
+    notify : ``notify(text)`` is called with one line of news before the map is solved (the size of the file
+        ``out``: the CLI prints it), or None
     """
     if isinstance(bearing, str | Path):
         from .io import load_bearing
@@ -654,7 +733,8 @@ def map_grid(bearing, *, fa=0.0, fr=0.0, fr_z=0.0, m_y=0.0, moment=0.0, speed=0.
         client, own_client = _connect(scheduler, scheduler_timeout)  # before any file is created
     quiet = _QuietDistributed().__enter__() if own_client else None
     try:
-        sink = _MapSink(Path(out) if out is not None else None, dims, shape, axes, attrs)
+        sink = _MapSink(Path(out) if out is not None else None, dims, shape, axes, attrs,
+                        block_shape(shape, chunk_points) if shape else None, notify)
     except BaseException:
         if own_client:
             _close(client, quiet)

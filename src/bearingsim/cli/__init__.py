@@ -20,7 +20,9 @@ Importing this package loads typer only: the numerical libraries are imported in
 
 from __future__ import annotations
 
+import signal
 import sys
+import threading
 
 import typer
 
@@ -62,17 +64,34 @@ report.register(app)
 shaft.register(app)
 
 
+#: exit status after SIGTERM: 128 + the signal's number, as a shell reports a process ended by it
+TERMINATED = 128 + signal.SIGTERM
+
+
+def _terminated(signum, frame) -> None:
+    """SIGTERM handler of the command: raise ``SystemExit(TERMINATED)`` in the main thread, so that the command
+    unwinds like any error (a map's process pool shuts down and joins its workers, its temporary file is
+    removed, a run keeps its last checkpoint); a second SIGTERM during that ends the process at once."""
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    raise SystemExit(TERMINATED)
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``bearingsim`` script: every error ends in one line on stderr and the exit status of
-    :class:`~bearingsim.errors.ExitCode` (:func:`bearingsim.cli.errors.report_error`)."""
+    :class:`~bearingsim.errors.ExitCode` (:func:`bearingsim.cli.errors.report_error`); SIGTERM ends the command
+    cleanly with status 143 and the line ``terminated``."""
     from ..errors import ExitCode
     from .console import finish_compilation_note
     from .errors import report_error
 
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGTERM, _terminated)
     try:
         rc = app(args=argv, prog_name="bearingsim", standalone_mode=False)
     except SystemExit as exc:
         finish_compilation_note()
+        if exc.code == TERMINATED:
+            typer.echo("terminated", err=True)
         if exc.code == 1 and type(sys.stdout).__name__ == "PacifyFlushWrapper":
             # click's own handling of a broken stdout (typer.echo): status 1 with stdout wrapped to write nothing
             from .console import quiet_stdout

@@ -99,7 +99,7 @@ def map_cmd(
         ds = map_grid(bearing, fa=opt(fa), fr=opt(fr), fr_z=opt(fz), m_y=opt(my), moment=opt(moment),
                       speed=opt(speed), preload=preload, control=control, out=out, workers=workers,
                       scheduler=scheduler, chunk_points=chunk, progress=not as_json,
-                      worker_timeout=worker_timeout, rings=rings)
+                      worker_timeout=worker_timeout, rings=rings, notify=None if as_json else make_console().print)
     if out is not None:
         apply_umask(out)
     dt = time.perf_counter() - t0

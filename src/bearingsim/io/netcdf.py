@@ -88,6 +88,73 @@ def component_units(attrs: dict, shape: tuple[int, ...] | None = None):
     return np.array(flat, dtype=object).reshape(shape).tolist()
 
 
+#: largest netCDF-4 chunk the writers ask for [bytes]: HDF5 refuses a chunk of 4 GiB or more ("NetCDF: Bad chunk
+#: sizes"), and a chunk larger than the library's chunk cache (a few MiB) is read back and written again by every
+#: partial write that touches it
+MAX_CHUNK_BYTES = 4 * 2**20
+
+
+#: largest share of a dimension the chunks may pad past its end (HDF5 allocates whole chunks)
+MAX_CHUNK_PADDING = 0.05
+
+
+def _divisors(n: int) -> list[int]:
+    small = [d for d in range(1, int(n ** 0.5) + 1) if n % d == 0]
+    return sorted(set(small + [n // d for d in small]))
+
+
+def capped_chunks(block: Sequence[int], extra: Sequence[int] = (), itemsize: int = 8,
+                  max_bytes: int = MAX_CHUNK_BYTES, shape: Sequence[int] | None = None) -> tuple[int, ...]:
+    """Chunk sizes of a variable of dimensions (grid dimensions, ``extra`` dimensions) written block by block.
+
+    Along each grid dimension the chunk is a divisor of the ``block`` the writer stores at once (so that a block
+    fills whole chunks and no chunk is read back): the largest one whose chunks pad the dimension's length in
+    ``shape`` by at most :data:`MAX_CHUNK_PADDING` (HDF5 allocates whole chunks: 2000-point chunks on a
+    3000-point axis would take a third more disk).  The ``extra`` dimensions (e.g. the 5 × 5 stiffness) are
+    whole.  When a chunk is still more than ``max_bytes``, the outermost grid dimension above 1 is cut to its
+    largest divisor that fits, then the next one inwards, and so on."""
+    sizes = [max(1, int(n)) for n in block]
+    if shape is not None:
+        for k, n in enumerate(shape):
+            n = max(1, int(n))
+            sizes[k] = max(c for c in _divisors(sizes[k]) if -(-n // c) * c - n <= MAX_CHUNK_PADDING * n)
+    per_point = int(itemsize) * int(np.prod([int(n) for n in extra], dtype=np.int64)) if extra else int(itemsize)
+    for k in range(len(sizes)):
+        rest = per_point * int(np.prod(sizes[k + 1:], dtype=np.int64))
+        if rest * sizes[k] <= max_bytes:
+            break
+        room = max(1, max_bytes // rest)
+        sizes[k] = max(d for d in _divisors(sizes[k]) if d <= room)
+    return tuple(sizes) + tuple(int(n) for n in extra)
+
+
+#: bytes of a netCDF-4 file besides its values: the HDF5 superblock, the header with the attributes, the chunk
+#: index (50–60 kB for a map)
+HEADER_BYTES = 64 * 1024
+
+
+def expected_size(dims: dict, variables: Sequence[Variable]) -> int:
+    """Bytes of a file of ``dims`` and ``variables`` as :class:`NetCDFWriter` writes them: the values
+    (uncompressed; chunked variables in whole chunks; variable-length strings 16 bytes each) and
+    :data:`HEADER_BYTES`."""
+    total = HEADER_BYTES
+    for v in variables:
+        lengths = [int(dims[d] or 0) for d in v.dims]
+        if v.chunks is not None:
+            lengths = [-(-n // c) * c for n, c in zip(lengths, v.chunks)]
+        n = int(np.prod(lengths, dtype=np.int64)) if v.dims else 1
+        total += n * (16 if v.dtype is str else np.dtype(v.dtype).itemsize)
+    return int(total)
+
+
+def size_text(nbytes: float) -> str:
+    """Bytes in the unit people read: ``"2.9 GB"``, ``"41 MB"``, ``"12 kB"`` (SI prefixes, as ``df -H``)."""
+    for unit, f in (("TB", 1e12), ("GB", 1e9), ("MB", 1e6), ("kB", 1e3)):
+        if nbytes >= f:
+            return f"{nbytes / f:.2g} {unit}" if nbytes < 10 * f else f"{nbytes / f:.0f} {unit}"
+    return f"{int(nbytes)} B"
+
+
 @dataclass(frozen=True)
 class Variable:
     """One variable of an output file.
@@ -320,5 +387,7 @@ def to_xarray(variables: Sequence[Variable], data: dict, attrs: dict | None = No
     return xr.Dataset(dvars, coords=cvars, attrs=attrs or {})
 
 
-__all__ = ["MIXED_UNITS", "DOF_UNITS", "DOF_RATE_UNITS", "LOAD_UNITS", "STIFFNESS_UNITS", "Variable",
-           "NetCDFWriter", "create_part", "remove_stale_parts", "units_attributes", "component_units", "to_xarray"]
+__all__ = ["COMPONENT_SEPARATOR", "DOF_RATE_UNITS", "DOF_UNITS", "HEADER_BYTES", "LOAD_UNITS", "MAX_CHUNK_BYTES",
+           "MAX_CHUNK_PADDING", "MIXED_UNITS", "STIFFNESS_UNITS", "NetCDFWriter", "Variable", "capped_chunks",
+           "component_units", "create_part", "expected_size", "remove_stale_parts", "size_text", "to_xarray",
+           "units_attributes"]
