@@ -79,7 +79,7 @@ class _Row:
     """Fixed quantities of the row: groove-centre offsets in the unloaded position, A, R = D_pw/2, K_n, azimuths."""
 
     def __init__(self, bearing: BallBearing):
-        p = bearing.row_parameters()
+        p = bearing.row_vectors()[0]
         self.dx0, self.dr0 = float(p[rl.P_DX0]), float(p[rl.P_DR0])
         self.big_a = bearing.total_curvature_distance
         self.radius = 0.5 * bearing.pitch_diameter
@@ -148,7 +148,7 @@ def load_distribution(bearing: BallBearing, loads: jh.Loads | None = None, tol: 
         start = jh.solve(bearing, loads)
         q = np.array(start.displacement, dtype=float)
         # the Jones–Harris tilt is about R_i; the same axial shift of the balls about D_pw/2
-        ric = float(bearing.row_parameters()[rl.P_RIC])
+        ric = float(bearing.row_vectors()[0, rl.P_RIC])
         q[3:] *= ric / row.radius
         r, jac = res(q)
         rnorm = float(np.max(np.abs(r)))
