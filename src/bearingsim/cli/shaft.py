@@ -15,7 +15,7 @@ from typing import Optional
 
 import typer
 
-from .console import announce_compilation, make_console
+from .console import announce_compilation, make_console, status_text
 from .options import JsonOpt, ShaftSpeedOpt
 
 ShaftArg = typer.Argument(..., help='Shaft-system file (TOML, type = "shaft_system"; docs/user-guide/shafts.md)')
@@ -226,8 +226,7 @@ def print_shaft(sf, res, modal=None) -> None:
 
     con = make_console()
     con.print(f"[bold]{sf.system.name}[/]  speed {res.speed * 30 / math.pi:.0f} rpm: "
-              f"{'converged' if res.converged else '[red]NOT CONVERGED[/]'} ({res.status}; {res.iterations} "
-              f"iterations, residual {res.residual:.2e} N); {len(res.nodes)} nodes, "
+              f"{status_text(res.converged, res.status, res.iterations, res.residual)}; {len(res.nodes)} nodes, "
               f"{res.nodes[0] * 1e3:.4g} … {res.nodes[-1] * 1e3:.4g} mm")
     u = res.displacement
     radial = np.hypot(u[:, 1], u[:, 2])
