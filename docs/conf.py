@@ -41,7 +41,7 @@ source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
 root_doc = "index"
 exclude_patterns = ["_build", "_generated", "Thumbs.db", ".DS_Store", "**/README.md"]
 templates_path = ["_templates"]
-html_static_path = ["_static"]
+html_static_path: list[str] = []  # the theme brings its own assets
 
 # Markdown pages: ```python blocks highlighted, heading anchors for the in-page links
 myst_enable_extensions = ["dollarmath", "colon_fence", "deflist"]
